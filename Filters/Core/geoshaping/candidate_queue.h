@@ -1,0 +1,131 @@
+#pragma once
+// Structures holding the (candidate, sponsor) pairs awaiting analysis.
+#include "geoshaping/adjacency.h"
+
+#include <queue>
+#include <vector>
+
+namespace geoshaping
+{
+
+enum class QueueKind
+{
+  fifo,          // first in, first out (Li & Brodlie)
+  priority,      // lowest malleability first, ties in heap order (std::priority_queue)
+  fifo_priority, // lowest malleability first, FIFO among equals (the paper's queue; default)
+  max_violation  // largest constraint violation first (Schill's Enhanced ChainMail)
+};
+
+const char* queue_name(QueueKind kind);
+// Parses "FIFO", "Priority", "FIFO Priority", "Max Violation"; returns false if unknown.
+bool parse_queue_name(const char* name, QueueKind& kind);
+
+struct Candidate
+{
+  index_t vertex;
+  index_t sponsor;
+};
+
+// Every queue has push(candidate, rank, violation) / pop(out) / clear(). `rank` is the
+// index of the candidate's malleability among the mesh's sorted distinct values, so
+// rank order is malleability order and equal ranks are exactly equal malleability.
+
+class FifoQueue
+{
+public:
+  static constexpr bool needs_violation = false;
+  void push(Candidate c, index_t, double) { items_.push_back(c); }
+  bool pop(Candidate& out)
+  {
+    if (head_ == items_.size())
+      return false;
+    out = items_[head_++];
+    return true;
+  }
+  void clear()
+  {
+    items_.clear();
+    head_ = 0;
+  }
+
+private:
+  std::vector<Candidate> items_;
+  std::size_t head_ = 0;
+};
+
+// A binary heap on rank alone, like the paper's STL priority queue: entries of equal
+// rank come out in whatever order the heap leaves them (the "vein" artefact).
+class HeapPriorityQueue
+{
+public:
+  static constexpr bool needs_violation = false;
+  void push(Candidate c, index_t rank, double) { heap_.push({ rank, c }); }
+  bool pop(Candidate& out);
+  void clear() { heap_ = {}; }
+
+private:
+  struct Item
+  {
+    index_t rank;
+    Candidate c;
+  };
+  struct Later
+  {
+    bool operator()(const Item& a, const Item& b) const { return a.rank > b.rank; }
+  };
+  std::priority_queue<Item, std::vector<Item>, Later> heap_;
+};
+
+// FIFO-preserving priority queue. One FIFO per distinct malleability value (bucket
+// indexed by rank), kept as singly linked lists threaded through one pooled array, and
+// a min-heap of the ranks whose bucket is non-empty. push: append to the bucket, O(1),
+// plus one heap push when the bucket was empty; pop: front of the lowest non-empty
+// bucket, O(1), plus one heap pop when it empties. With K distinct values among the
+// queued candidates the cost is O(1) amortised per operation and O(log K) <= O(log n)
+// in the worst case; order is exactly lowest malleability first, first in first out
+// among equal values. The pool is reused between frames, so a frame allocates nothing
+// once warm.
+class BucketFifoPriorityQueue
+{
+public:
+  static constexpr bool needs_violation = false;
+  void reset_ranks(index_t num_ranks);
+  void push(Candidate c, index_t rank, double);
+  bool pop(Candidate& out);
+  void clear();
+
+private:
+  struct Node
+  {
+    Candidate c;
+    index_t next;
+  };
+  std::vector<Node> pool_;
+  std::vector<index_t> head_, tail_; // per rank; -1 when empty
+  std::priority_queue<index_t, std::vector<index_t>, std::greater<index_t>> active_;
+};
+
+// Enhanced ChainMail order: the candidate whose rest position lies farthest outside its
+// valid region (at the time it is queued) comes out first; ties in heap order.
+class MaxViolationQueue
+{
+public:
+  static constexpr bool needs_violation = true;
+  void push(Candidate c, index_t, double violation) { heap_.push({ violation, c }); }
+  bool pop(Candidate& out);
+  void clear() { heap_ = {}; }
+
+private:
+  struct Item
+  {
+    double violation;
+    Candidate c;
+  };
+  struct Smaller
+  {
+    bool operator()(const Item& a, const Item& b) const { return a.violation < b.violation; }
+  };
+  std::priority_queue<Item, std::vector<Item>, Smaller> heap_;
+};
+
+} // namespace geoshaping

@@ -1,0 +1,123 @@
+#pragma once
+// Generalized ChainMail extended to inhomogeneous meshes (Faeth, Oren, Harding).
+#include "geoshaping/adjacency.h"
+#include "geoshaping/candidate_queue.h"
+#include "geoshaping/transfer_function.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace geoshaping
+{
+
+struct FrameResult
+{
+  bool ok = false;
+  std::string message;      // why the frame did nothing (when !ok)
+  std::size_t moved = 0;    // vertices displaced this frame, grasp included
+  std::size_t examined = 0; // candidates popped from the queue
+};
+
+// Builds adjacency and rest state once; each frame starts from the rest state, moves
+// the grasped vertex to x0[g] + d and propagates (DESIGN.md section 4):
+//
+//   pop (c, s); skip c if it moved already this frame or is pinned;
+//   box = valid region of c w.r.t. s from c's own (t, k, h);
+//   if x0[c] lies outside the box, move c to the nearest point of the box and queue
+//   its neighbours that have not moved, with c as sponsor.
+//
+// Decisions the design leaves open, fixed here:
+// - A candidate found inside its box is NOT marked: when another neighbour moves later
+//   it is queued and examined again against that sponsor. Each vertex still moves at
+//   most once; the pushes of a frame are bounded by the sum of the degrees of the
+//   moved vertices, so the frame stays proportional to the displaced region.
+// - A pinned vertex never moves and never sponsors: propagation stops at it as at the
+//   border of the mesh and flows around it. Grasping a pinned vertex is refused.
+// - The grasped vertex moves to x0[g] + d whatever its malleability.
+//
+// Arithmetic is double, on displacements u = x - x0 of rest positions stored relative
+// to a local origin, so UTM-sized coordinates lose nothing and a rigid region's
+// displacement is bit-identical to its sponsor's.
+//
+// A frame costs time proportional to the vertices moved now plus those moved last
+// frame (only those are reset), never to the mesh size.
+class ChainMailDeformer
+{
+public:
+  // Rest positions, `n` xyz triples in any frame; the centre of their bounding box
+  // becomes the local origin. Resets malleability to `default_malleability`, clears pins.
+  void set_mesh(const double* xyz, index_t n, Adjacency adjacency);
+  index_t size() const { return index_t(rest_.size()); }
+  const Adjacency& adjacency() const { return adj_; }
+
+  // Per-vertex malleability. Values are clamped to [0, 1]; NaN is treated as 0 (rigid:
+  // the vertex keeps its shape rather than producing a NaN). Returns the number of
+  // values that were clamped or NaN so callers can warn.
+  std::size_t set_malleability(const float* m);
+  std::size_t set_malleability(const double* m);
+  void set_uniform_malleability(double m);
+  float malleability(index_t v) const { return malleability_[std::size_t(v)]; }
+
+  // Optional mask: non-zero = pinned. Pass nullptr to clear.
+  void set_pinned(const std::uint8_t* mask);
+  bool pinned(index_t v) const { return !pinned_.empty() && pinned_[std::size_t(v)] != 0; }
+
+  void set_transfer_function(const TransferFunction& tf) { transfer_ = tf; }
+  const TransferFunction& transfer_function() const { return transfer_; }
+  void set_queue(QueueKind q) { queue_kind_ = q; }
+  QueueKind queue() const { return queue_kind_; }
+
+  // One frame. Invalid grasp, non-finite displacement or pinned grasp: ok == false,
+  // the shape returns to rest.
+  FrameResult deform(index_t grasp, const Eigen::Vector3d& displacement);
+  // Back to the rest state (sparse).
+  void reset();
+
+  // Vertices displaced by the last frame, in the order they moved (grasp first).
+  const std::vector<index_t>& moved() const { return moved_; }
+  // Vertices displaced by the frame before it (already reset to rest), so a caller
+  // mirroring positions can restore them too.
+  const std::vector<index_t>& previously_moved() const { return previously_moved_; }
+  // Sponsor of a vertex moved in the last frame (-1 for the grasp); undefined otherwise.
+  index_t sponsor(index_t v) const { return sponsor_[std::size_t(v)]; }
+  bool moved_this_frame(index_t v) const { return stamp_[std::size_t(v)] == frame_; }
+
+  const Eigen::Vector3d& origin() const { return origin_; }
+  const Eigen::Vector3d& rest_local(index_t v) const { return rest_[std::size_t(v)]; }
+  const Eigen::Vector3d& displacement(index_t v) const { return disp_[std::size_t(v)]; }
+  Eigen::Vector3d position(index_t v) const { return origin_ + rest_local(v) + displacement(v); }
+  ChainMailParams params(index_t v) const { return transfer_(malleability_[std::size_t(v)]); }
+
+  // Bytes held beyond the input mesh (rest copy, state, adjacency, queue pool).
+  std::size_t memory_bytes() const;
+
+private:
+  template <class Queue>
+  void propagate(Queue& queue, index_t grasp, FrameResult& result);
+  void rebuild_ranks();
+
+  Adjacency adj_;
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> rest_; // relative to origin_
+  std::vector<Eigen::Vector3d> disp_; // zero except for moved_
+  std::vector<float> malleability_;
+  std::vector<index_t> rank_; // index of the malleability among the sorted distinct values
+  index_t num_ranks_ = 1;
+  std::vector<std::uint8_t> pinned_;
+  std::vector<std::uint32_t> stamp_; // == frame_ when moved this frame
+  std::vector<index_t> sponsor_;
+  std::uint32_t frame_ = 0;
+  std::vector<index_t> moved_, previously_moved_;
+
+  TransferFunction transfer_;
+  QueueKind queue_kind_ = QueueKind::fifo_priority;
+  FifoQueue fifo_;
+  HeapPriorityQueue heap_;
+  BucketFifoPriorityQueue buckets_;
+  MaxViolationQueue violation_;
+};
+
+} // namespace geoshaping

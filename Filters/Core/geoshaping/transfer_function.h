@@ -1,0 +1,60 @@
+#pragma once
+// Malleability (0 rigid ... 1 soft) -> ChainMail parameters (stretch, compression, shear).
+#include <utility>
+#include <vector>
+
+namespace geoshaping
+{
+
+// The three Generalized ChainMail parameters of one vertex:
+// stretch t >= 1, compression k in [0, 1], shear h >= 0.
+struct ChainMailParams
+{
+  double stretch = 1.0;
+  double compression = 1.0;
+  double shear = 0.0;
+};
+
+// Shape of the curve between the value at m = 0 and the value at m = 1.
+enum class CurveShape
+{
+  linear,       // v0 + (v1 - v0) m
+  smooth,       // v0 + (v1 - v0) s(m), s = 3m^2 - 2m^3 (smoothstep)
+  step,         // v0 below the threshold, v1 at or above it
+  piecewise     // linear through user points (m_i, v_i), sorted by m, clamped at the ends
+};
+
+struct Curve
+{
+  double at_rigid = 0.0; // value at m = 0
+  double at_soft = 1.0;  // value at m = 1
+  CurveShape shape = CurveShape::linear;
+  double threshold = 0.5;                        // for step
+  std::vector<std::pair<double, double>> points; // for piecewise
+
+  double operator()(double m) const;
+};
+
+// Defaults (DESIGN.md section 4): stretch 1 -> 2, compression 1 -> 0.5, shear 0 -> 0.5.
+// Malleability 0 yields exactly (1, 1, 0) unless `exact_rigid_at_zero` is false:
+// whatever the curves, m == 0 means rigid, the paper's black "frozen" paint.
+class TransferFunction
+{
+public:
+  TransferFunction();
+
+  Curve stretch{ 1.0, 2.0 };
+  Curve compression{ 1.0, 0.5 };
+  Curve shear{ 0.0, 0.5 };
+  bool exact_rigid_at_zero = true;
+
+  // `m` is clamped to [0, 1]. Results are clamped to the valid parameter domain
+  // (stretch >= 1, compression in [0, 1], shear >= 0) so no curve can produce an
+  // inverted valid region.
+  ChainMailParams operator()(double m) const;
+
+  // A short reason when a curve is unusable (non-finite values, unsorted points), else "".
+  const char* validate() const;
+};
+
+} // namespace geoshaping

@@ -1,0 +1,27 @@
+#pragma once
+// Small analytic meshes shared by the core tests and benchmarks.
+#include "geoshaping/adjacency.h"
+
+#include <vector>
+
+namespace geoshaping::testing
+{
+
+struct Mesh
+{
+  std::vector<double> xyz; // n * 3
+  Adjacency adjacency;
+  index_t size() const { return index_t(xyz.size() / 3); }
+};
+
+// A chain of `n` vertices along x with the given spacing, joined by lines.
+Mesh chain(index_t n, double spacing);
+// An nx-by-ny grid of quads in the z = 0 plane, vertex (i, j) at (i h, j h, 0),
+// id = j * nx + i.
+Mesh quad_grid(index_t nx, index_t ny, double h);
+// The same grid split into triangles.
+Mesh triangle_grid(index_t nx, index_t ny, double h);
+
+inline index_t grid_id(index_t nx, index_t i, index_t j) { return j * nx + i; }
+
+} // namespace geoshaping::testing
