@@ -1,0 +1,206 @@
+/**
+ * @class   vtkChainMailDeformationFilter
+ * @brief   Drag one vertex of a surface or volume mesh and let the displacement
+ *          propagate by inhomogeneous Generalized ChainMail.
+ *
+ * Each update recomputes the shape from the input (rest) points: the grasped vertex
+ * moves by `Displacement`, and the motion spreads through cell edges, each vertex
+ * moving at most once into the valid region of the neighbour that sponsored it. The
+ * valid region of a vertex follows from its malleability (0 rigid ... 1 soft, the
+ * point array selected with SetInputArrayToProcess(0, ...), `Malleability` by default,
+ * otherwise `DefaultMalleability`) through linear (or smooth, step, piecewise) transfer
+ * curves for stretch, compression and shear. `CandidateQueue` selects the order in
+ * which candidates are examined: FIFO, Priority, FIFO Priority (default; deformation
+ * flows through stiff regions before soft ones, so rigid regions keep their shape) or
+ * Max Violation. See DESIGN.md section 4 and the core's chainmail_deformer.h.
+ *
+ * An optional second array (SetInputArrayToProcess(1, ...)) marks pinned vertices
+ * (non-zero = never moves; propagation stops at them).
+ *
+ * Changing only the grasp, the displacement, the queue or the transfer curves reuses
+ * the adjacency and rest state; the output points persist between updates and only the
+ * vertices that moved in this or the previous update are rewritten, so a small grasp
+ * costs the same on a mesh of millions of vertices as on a small one.
+ *
+ * Input: any vtkPointSet (vtkPolyData, vtkUnstructuredGrid, ...). Output: the same
+ * type, topology and attribute data passed, new points whose precision follows
+ * `OutputPointsPrecision`. Bad input (non-finite points, grasp out of range, non-finite
+ * displacement) gives an error and the input geometry unchanged. In parallel
+ * (more than one process) the filter refuses with a message, since the propagation
+ * needs the whole connected mesh.
+ */
+#ifndef vtkChainMailDeformationFilter_h
+#define vtkChainMailDeformationFilter_h
+
+#include "GeoShapingFiltersDeformationModule.h" // For export macro
+#include "vtkPointSetAlgorithm.h"
+
+#include <memory> // For std::unique_ptr
+
+class vtkPiecewiseFunction;
+
+class GEOSHAPINGFILTERSDEFORMATION_EXPORT vtkChainMailDeformationFilter : public vtkPointSetAlgorithm
+{
+public:
+  static vtkChainMailDeformationFilter* New();
+  vtkTypeMacro(vtkChainMailDeformationFilter, vtkPointSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum QueueTypes
+  {
+    FIFO = 0,
+    PRIORITY = 1,
+    FIFO_PRIORITY = 2,
+    MAX_VIOLATION = 3
+  };
+  enum CurveShapes
+  {
+    LINEAR = 0,
+    SMOOTH = 1,
+    STEP = 2
+  };
+  enum GraspModes
+  {
+    GRASP_POINT_ID = 0,
+    GRASP_NEAREST_TO_POSITION = 1
+  };
+
+  ///@{
+  /// The grasped vertex (GRASP_POINT_ID mode). -1 (default): no grasp, output = input.
+  vtkSetMacro(GraspPointId, vtkIdType);
+  vtkGetMacro(GraspPointId, vtkIdType);
+  ///@}
+
+  ///@{
+  /// In GRASP_NEAREST_TO_POSITION mode the grasped vertex is the one nearest to
+  /// GraspPosition (found with a vtkStaticPointLocator built once per mesh).
+  vtkSetClampMacro(GraspMode, int, GRASP_POINT_ID, GRASP_NEAREST_TO_POSITION);
+  vtkGetMacro(GraspMode, int);
+  vtkSetVector3Macro(GraspPosition, double);
+  vtkGetVector3Macro(GraspPosition, double);
+  ///@}
+
+  ///@{
+  /// Displacement of the grasped vertex from its rest position (world units).
+  vtkSetVector3Macro(Displacement, double);
+  vtkGetVector3Macro(Displacement, double);
+  ///@}
+
+  ///@{
+  /// Malleability used when the selected array is absent. Default 0.5.
+  vtkSetClampMacro(DefaultMalleability, double, 0.0, 1.0);
+  vtkGetMacro(DefaultMalleability, double);
+  ///@}
+
+  ///@{
+  /// Candidate structure: FIFO, PRIORITY, FIFO_PRIORITY (default), MAX_VIOLATION.
+  vtkSetClampMacro(CandidateQueue, int, FIFO, MAX_VIOLATION);
+  vtkGetMacro(CandidateQueue, int);
+  ///@}
+
+  ///@{
+  /// Transfer curves: value at malleability 0 and at malleability 1.
+  /// Defaults: stretch (1, 2), compression (1, 0.5), shear (0, 0.5).
+  vtkSetVector2Macro(StretchRange, double);
+  vtkGetVector2Macro(StretchRange, double);
+  vtkSetVector2Macro(CompressionRange, double);
+  vtkGetVector2Macro(CompressionRange, double);
+  vtkSetVector2Macro(ShearRange, double);
+  vtkGetVector2Macro(ShearRange, double);
+  ///@}
+
+  ///@{
+  /// Shape of the three curves between their ends: LINEAR (default), SMOOTH
+  /// (smoothstep) or STEP at StepThreshold.
+  vtkSetClampMacro(TransferCurveShape, int, LINEAR, STEP);
+  vtkGetMacro(TransferCurveShape, int);
+  vtkSetClampMacro(StepThreshold, double, 0.0, 1.0);
+  vtkGetMacro(StepThreshold, double);
+  ///@}
+
+  ///@{
+  /// Arbitrary piecewise-linear curves (malleability, value) pairs; when a curve has
+  /// points it replaces the range/shape of that parameter. In C++ a
+  /// vtkPiecewiseFunction can be given directly.
+  void AddStretchCurvePoint(double m, double value);
+  void AddCompressionCurvePoint(double m, double value);
+  void AddShearCurvePoint(double m, double value);
+  void RemoveAllStretchCurvePoints();
+  void RemoveAllCompressionCurvePoints();
+  void RemoveAllShearCurvePoints();
+  void SetStretchFunction(vtkPiecewiseFunction* f);
+  void SetCompressionFunction(vtkPiecewiseFunction* f);
+  void SetShearFunction(vtkPiecewiseFunction* f);
+  ///@}
+
+  ///@{
+  /// When on (default), malleability 0 gives exactly (1, 1, 0), rigid, whatever the curves.
+  vtkSetMacro(ExactRigidAtZero, bool);
+  vtkGetMacro(ExactRigidAtZero, bool);
+  vtkBooleanMacro(ExactRigidAtZero, bool);
+  ///@}
+
+  ///@{
+  /// vtkAlgorithm::SINGLE_PRECISION, DOUBLE_PRECISION or DEFAULT_PRECISION (same as
+  /// the input, the default).
+  vtkSetMacro(OutputPointsPrecision, int);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+  ///@{
+  /// When on, adds point arrays "ChainMailDisplacement" (vector) and
+  /// "ChainMailSponsor" (-1 where not moved). Off by default: it costs O(points).
+  vtkSetMacro(GenerateDiagnostics, bool);
+  vtkGetMacro(GenerateDiagnostics, bool);
+  vtkBooleanMacro(GenerateDiagnostics, bool);
+  ///@}
+
+  ///@{
+  /// Figures of the last update: displaced vertices, candidates examined, the
+  /// deformation time in milliseconds (core only), and the grasped vertex.
+  vtkGetMacro(NumberOfDisplacedPoints, vtkIdType);
+  vtkGetMacro(NumberOfExaminedCandidates, vtkIdType);
+  vtkGetMacro(LastDeformationMilliseconds, double);
+  vtkGetMacro(LastGraspPointId, vtkIdType);
+  ///@}
+
+  /// Number of times the adjacency and rest state were (re)built: stays 1 while only
+  /// the grasp, displacement, queue or curves change.
+  vtkGetMacro(NumberOfRebuilds, int);
+
+protected:
+  vtkChainMailDeformationFilter();
+  ~vtkChainMailDeformationFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  vtkIdType GraspPointId = -1;
+  int GraspMode = GRASP_POINT_ID;
+  double GraspPosition[3] = { 0.0, 0.0, 0.0 };
+  double Displacement[3] = { 0.0, 0.0, 0.0 };
+  double DefaultMalleability = 0.5;
+  int CandidateQueue = FIFO_PRIORITY;
+  double StretchRange[2] = { 1.0, 2.0 };
+  double CompressionRange[2] = { 1.0, 0.5 };
+  double ShearRange[2] = { 0.0, 0.5 };
+  int TransferCurveShape = LINEAR;
+  double StepThreshold = 0.5;
+  bool ExactRigidAtZero = true;
+  int OutputPointsPrecision = vtkAlgorithm::DEFAULT_PRECISION;
+  bool GenerateDiagnostics = false;
+
+  vtkIdType NumberOfDisplacedPoints = 0;
+  vtkIdType NumberOfExaminedCandidates = 0;
+  double LastDeformationMilliseconds = 0.0;
+  vtkIdType LastGraspPointId = -1;
+  int NumberOfRebuilds = 0;
+
+private:
+  vtkChainMailDeformationFilter(const vtkChainMailDeformationFilter&) = delete;
+  void operator=(const vtkChainMailDeformationFilter&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

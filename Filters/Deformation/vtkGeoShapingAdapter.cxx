@@ -1,0 +1,131 @@
+#include "vtkGeoShapingAdapter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellIterator.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+
+using geoshaping::CellKind;
+
+CellKind vtkGeoShapingAdapter::CellKindOf(int type)
+{
+  switch (type)
+  {
+    case VTK_VERTEX:
+      return CellKind::vertex;
+    case VTK_POLY_VERTEX:
+      return CellKind::poly_vertex;
+    case VTK_LINE:
+      return CellKind::line;
+    case VTK_POLY_LINE:
+      return CellKind::poly_line;
+    case VTK_TRIANGLE:
+      return CellKind::triangle;
+    case VTK_TRIANGLE_STRIP:
+      return CellKind::triangle_strip;
+    case VTK_QUAD:
+    case VTK_POLYGON:
+      return CellKind::polygon;
+    case VTK_PIXEL:
+      return CellKind::pixel;
+    case VTK_TETRA:
+      return CellKind::tetra;
+    case VTK_VOXEL:
+      return CellKind::voxel;
+    case VTK_HEXAHEDRON:
+      return CellKind::hexahedron;
+    case VTK_WEDGE:
+      return CellKind::wedge;
+    case VTK_PYRAMID:
+      return CellKind::pyramid;
+    default:
+      return CellKind::unsupported;
+  }
+}
+
+geoshaping::Adjacency vtkGeoShapingAdapter::BuildAdjacency(vtkDataSet* input, vtkIdType& skipped)
+{
+  skipped = 0;
+  geoshaping::AdjacencyBuilder builder(geoshaping::index_t(input->GetNumberOfPoints()));
+  std::vector<std::int64_t> ids;
+  auto add = [&](int type, vtkIdType npts, const vtkIdType* pts) {
+    ids.assign(pts, pts + npts);
+    if (!builder.add_cell(CellKindOf(type), ids.data(), npts))
+      ++skipped;
+  };
+  if (auto* pd = vtkPolyData::SafeDownCast(input))
+  {
+    // Walk the four cell arrays directly: no per-cell virtual dispatch on large surfaces.
+    const int types[4] = { VTK_POLY_VERTEX, VTK_POLY_LINE, VTK_POLYGON, VTK_TRIANGLE_STRIP };
+    vtkCellArray* arrays[4] = { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() };
+    for (int a = 0; a < 4; ++a)
+    {
+      if (!arrays[a])
+        continue;
+      vtkIdType npts;
+      const vtkIdType* pts;
+      for (vtkIdType c = 0; c < arrays[a]->GetNumberOfCells(); ++c)
+      {
+        arrays[a]->GetCellAtId(c, npts, pts);
+        add(types[a], npts, pts);
+      }
+    }
+    return builder.build();
+  }
+  vtkSmartPointer<vtkCellIterator> it = vtk::TakeSmartPointer(input->NewCellIterator());
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdList* cellIds = it->GetPointIds();
+    add(it->GetCellType(), cellIds->GetNumberOfIds(), cellIds->GetPointer(0));
+  }
+  return builder.build();
+}
+
+vtkIdType vtkGeoShapingAdapter::PointsAsDouble(
+  vtkPoints* points, std::vector<double>& xyz, vtkIdType& firstBad)
+{
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  xyz.resize(std::size_t(3 * n));
+  vtkIdType bad = 0;
+  firstBad = -1;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->GetPoint(i, xyz.data() + 3 * i);
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!std::isfinite(xyz[3 * i + c]))
+      {
+        ++bad;
+        firstBad = firstBad < 0 ? i : firstBad;
+      }
+    }
+  }
+  return bad;
+}
+
+vtkMTimeType vtkGeoShapingAdapter::GeometryTime(vtkPointSet* input)
+{
+  vtkMTimeType t = input->GetPoints() ? input->GetPoints()->GetMTime() : 0;
+  if (auto* pd = vtkPolyData::SafeDownCast(input))
+  {
+    for (vtkCellArray* a : { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() })
+      t = std::max(t, a ? a->GetMTime() : 0);
+    return t;
+  }
+  if (auto* ug = vtkUnstructuredGrid::SafeDownCast(input))
+  {
+    t = std::max(t, ug->GetCells() ? ug->GetCells()->GetMTime() : 0);
+    return t;
+  }
+  return std::max(t, input->GetMTime());
+}

@@ -1,0 +1,44 @@
+/**
+ * @class   vtkGeoShapingAdapter
+ * @brief   Converts VTK data into the plain data of the GeoShaping core.
+ *
+ * Shared by the GeoShaping filters so each stays a thin adapter: cell edges to a CSR
+ * adjacency, points to doubles, and the modification times that tell a filter whether
+ * its cached core state is still valid. Not wrapped.
+ */
+#ifndef vtkGeoShapingAdapter_h
+#define vtkGeoShapingAdapter_h
+
+#include "GeoShapingFiltersDeformationModule.h" // For export macro
+#include "vtkType.h"
+
+#include "geoshaping/adjacency.h" // For Adjacency
+
+#include <vector>
+
+class vtkDataArray;
+class vtkDataSet;
+class vtkPointSet;
+class vtkPoints;
+
+class GEOSHAPINGFILTERSDEFORMATION_EXPORT vtkGeoShapingAdapter
+{
+public:
+  /// The core cell kind for a VTK cell type (`unsupported` for higher-order and
+  /// polyhedral cells).
+  static geoshaping::CellKind CellKindOf(int vtkCellType);
+
+  /// Vertex adjacency from the edges of every cell. `skippedCells` counts cells whose
+  /// type is unsupported or whose point ids are invalid.
+  static geoshaping::Adjacency BuildAdjacency(vtkDataSet* input, vtkIdType& skippedCells);
+
+  /// Copies points into xyz (3 doubles each). Returns the number of non-finite
+  /// coordinates; `firstBad` is the id of the first point holding one (or -1).
+  static vtkIdType PointsAsDouble(vtkPoints* points, std::vector<double>& xyz, vtkIdType& firstBad);
+
+  /// Modification time of the geometry and connectivity (points and cells), ignoring
+  /// point and cell data so that repainting an array does not rebuild adjacency.
+  static vtkMTimeType GeometryTime(vtkPointSet* input);
+};
+
+#endif
