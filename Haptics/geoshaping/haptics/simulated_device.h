@@ -1,0 +1,55 @@
+#pragma once
+// A scripted stylus for tests and benchmarks: deterministic motion, recorded forces.
+#include "geoshaping/haptics/device.h"
+
+#include <functional>
+#include <vector>
+
+namespace geoshaping::haptics
+{
+
+class SimulatedDevice : public HapticDevice
+{
+public:
+  using Motion = std::function<DeviceSample(double t)>;
+
+  // The default motion: a 2 cm circle in the xy plane at 0.5 Hz, button 1 held from
+  // t = 0.5 s on.
+  SimulatedDevice();
+  // Motion as a function of time (the sample's t is overwritten with the clock's).
+  explicit SimulatedDevice(Motion motion);
+  // Motion through keyframes, interpolated like a trace (sample_trace_at).
+  explicit SimulatedDevice(std::vector<DeviceSample> keyframes);
+
+  std::string name() const override { return "simulated"; }
+  bool open() override;
+  void close() override;
+  bool read(DeviceSample& sample) override;
+  bool set_force(const Eigen::Vector3d& force) override;
+
+  // Time source: 0 = real time since open(); > 0 = `step` seconds per read() (replays
+  // identically whatever the load). Takes effect at the next open().
+  void set_time_step(double step) { step_ = step; }
+  void set_limits(const DeviceLimits& limits) { limits_ = limits; }
+  // Puts the device into its error state as a failing driver would; reads fail until
+  // clear_error().
+  void inject_error(const std::string& message) { set_error(message); }
+
+  // What the servo loop sent, read from any thread after it stopped (or racily while it
+  // runs: these are atomics, the vector is not torn, the components may mix two ticks).
+  Eigen::Vector3d last_force() const;
+  double max_force_sent() const { return max_force_sent_.load(); }
+  std::uint64_t forces_sent() const { return forces_sent_.load(); }
+  std::uint64_t nonzero_forces_after_error() const { return nonzero_after_error_.load(); }
+
+private:
+  Motion motion_;
+  double step_ = 0.0;
+  DeviceClock clock_;
+  std::atomic<double> last_force_[3] = { 0.0, 0.0, 0.0 };
+  std::atomic<double> max_force_sent_{ 0.0 };
+  std::atomic<std::uint64_t> forces_sent_{ 0 };
+  std::atomic<std::uint64_t> nonzero_after_error_{ 0 };
+};
+
+} // namespace geoshaping::haptics
