@@ -1,0 +1,396 @@
+// Tests of vtkChainMailDeformationFilter against the core and against hand values.
+#include "vtkChainMailDeformationFilter.h"
+
+#include "geoshaping/chainmail_deformer.h"
+#include "test_meshes.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTestErrorObserver.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+// nx * ny triangle grid with spacing h at z = 0, optional float points and a
+// "Malleability" array filled by `m(i, j)`.
+template <class F>
+vtkSmartPointer<vtkPolyData> TriangleGrid(int nx, int ny, double h, F m, int type = VTK_DOUBLE,
+  double x0 = 0.0, double y0 = 0.0)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  pts->SetDataType(type);
+  vtkNew<vtkFloatArray> mal;
+  mal->SetName("Malleability");
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+    {
+      pts->InsertNextPoint(x0 + i * h, y0 + j * h, 0.0);
+      mal->InsertNextValue(float(m(i, j)));
+    }
+  vtkNew<vtkCellArray> tris;
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i)
+    {
+      const vtkIdType a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+      const vtkIdType t0[3] = { a, b, c }, t1[3] = { a, c, d };
+      tris->InsertNextCell(3, t0);
+      tris->InsertNextCell(3, t1);
+    }
+  pd->SetPoints(pts);
+  pd->SetPolys(tris);
+  pd->GetPointData()->AddArray(mal);
+  return pd;
+}
+
+vtkSmartPointer<vtkPolyData> UniformGrid(int nx, int ny, double h, double m)
+{
+  return TriangleGrid(nx, ny, h, [m](int, int) { return m; });
+}
+
+// A slab of nx * ny * nz points, each hexahedral block split into 6 tetrahedra.
+vtkSmartPointer<vtkUnstructuredGrid> TetSlab(int nx, int ny, int nz, double h)
+{
+  auto ug = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> pts;
+  pts->SetDataType(VTK_DOUBLE);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        pts->InsertNextPoint(i * h, j * h, k * h);
+  ug->SetPoints(pts);
+  auto id = [&](int i, int j, int k) { return vtkIdType((k * ny + j) * nx + i); };
+  for (int k = 0; k + 1 < nz; ++k)
+    for (int j = 0; j + 1 < ny; ++j)
+      for (int i = 0; i + 1 < nx; ++i)
+      {
+        const vtkIdType v[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+          id(i, j + 1, k + 1) };
+        const int tets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
+          { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
+        for (const auto& t : tets)
+        {
+          const vtkIdType ids[4] = { v[t[0]], v[t[1]], v[t[2]], v[t[3]] };
+          ug->InsertNextCell(VTK_TETRA, 4, ids);
+        }
+      }
+  return ug;
+}
+
+vtkPointSet* Deform(vtkChainMailDeformationFilter* f, vtkDataObject* input)
+{
+  f->SetInputData(input);
+  f->Update();
+  return vtkPointSet::SafeDownCast(f->GetOutputDataObject(0));
+}
+
+double MaxPointDifference(vtkPointSet* a, vtkPointSet* b)
+{
+  double e = 0.0, p[3], q[3];
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    e = std::max({ e, std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2]) });
+  }
+  return e;
+}
+} // namespace
+
+TEST(ChainMailDeformationFilter, MatchesTheCoreDeformerOnPolyData)
+{
+  auto grid = TriangleGrid(
+    30, 20, 1.0, [](int i, int j) { return (i > 10 && i < 16 && j > 5) ? 0.0 : 0.8; });
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetGraspPointId(5 * 30 + 20);
+  f->SetDisplacement(1.0, -2.0, 6.0);
+  vtkPointSet* out = Deform(f, grid);
+  ASSERT_NE(out, nullptr);
+  EXPECT_TRUE(out->IsA("vtkPolyData"));
+  EXPECT_EQ(out->GetNumberOfCells(), grid->GetNumberOfCells());
+  EXPECT_NE(out->GetPointData()->GetArray("Malleability"), nullptr);
+
+  const auto mesh = geoshaping::testing::triangle_grid(30, 20, 1.0);
+  geoshaping::ChainMailDeformer d;
+  d.set_mesh(mesh.xyz.data(), mesh.size(), mesh.adjacency);
+  std::vector<float> m(600);
+  for (int v = 0; v < 600; ++v)
+    m[v] = vtkFloatArray::SafeDownCast(grid->GetPointData()->GetArray("Malleability"))->GetValue(v);
+  d.set_malleability(m.data());
+  d.deform(5 * 30 + 20, { 1.0, -2.0, 6.0 });
+  EXPECT_EQ(f->GetNumberOfDisplacedPoints(), vtkIdType(d.moved().size()));
+  for (vtkIdType v = 0; v < 600; ++v)
+  {
+    double p[3];
+    out->GetPoint(v, p);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(p[c], mesh.xyz[3 * v + c] + d.displacement(v)[c]) << v;
+  }
+}
+
+TEST(ChainMailDeformationFilter, SparseUpdatesEqualAFreshFilterAndNeverRebuild)
+{
+  auto grid = UniformGrid(40, 40, 1.0, 0.6);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputData(grid);
+  const double moves[4][3] = { { 0, 0, 8 }, { 3, 0, -2 }, { 0, 0, 0.5 }, { -1, 4, 9 } };
+  const vtkIdType grasps[4] = { 820, 100, 1500, 820 };
+  for (int k = 0; k < 4; ++k)
+  {
+    f->SetGraspPointId(grasps[k]);
+    f->SetDisplacement(moves[k][0], moves[k][1], moves[k][2]);
+    f->SetCandidateQueue(k % 2 ? vtkChainMailDeformationFilter::FIFO
+                               : vtkChainMailDeformationFilter::FIFO_PRIORITY);
+    f->Update();
+    vtkNew<vtkChainMailDeformationFilter> fresh;
+    fresh->SetGraspPointId(grasps[k]);
+    fresh->SetDisplacement(moves[k][0], moves[k][1], moves[k][2]);
+    fresh->SetCandidateQueue(f->GetCandidateQueue());
+    EXPECT_EQ(MaxPointDifference(f->GetOutput(), Deform(fresh, grid)), 0.0) << "step " << k;
+  }
+  EXPECT_EQ(f->GetNumberOfRebuilds(), 1);
+  f->SetGraspPointId(-1);
+  f->Update();
+  EXPECT_EQ(MaxPointDifference(f->GetOutput(), grid), 0.0);
+}
+
+TEST(ChainMailDeformationFilter, RepaintingUpdatesMalleabilityWithoutRebuildingAdjacency)
+{
+  auto grid = UniformGrid(21, 21, 1.0, 1.0);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetGraspPointId(220);
+  f->SetDisplacement(0, 0, 5);
+  Deform(f, grid);
+  const vtkIdType softMoved = f->GetNumberOfDisplacedPoints();
+  auto* mal = vtkFloatArray::SafeDownCast(grid->GetPointData()->GetArray("Malleability"));
+  mal->Fill(0.0f);
+  mal->Modified();
+  f->Update();
+  EXPECT_EQ(f->GetNumberOfRebuilds(), 1);
+  EXPECT_EQ(f->GetNumberOfDisplacedPoints(), 441); // rigid: everything translates
+  EXPECT_LT(softMoved, 441);
+  double p[3];
+  f->GetOutput()->GetPoint(0, p);
+  EXPECT_EQ(p[2], 5.0);
+}
+
+TEST(ChainMailDeformationFilter, DefaultMalleabilityIsUsedWithoutAnArray)
+{
+  auto grid = UniformGrid(11, 11, 1.0, 0.0);
+  grid->GetPointData()->RemoveArray("Malleability");
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetDefaultMalleability(0.0);
+  f->SetGraspPointId(60);
+  f->SetDisplacement(0, 0, 1);
+  Deform(f, grid);
+  EXPECT_EQ(f->GetNumberOfDisplacedPoints(), 121);
+  f->SetDefaultMalleability(1.0);
+  f->Update();
+  EXPECT_LT(f->GetNumberOfDisplacedPoints(), 121);
+}
+
+TEST(ChainMailDeformationFilter, TetrahedralSlabTranslatesRigidlyAndKeepsItsType)
+{
+  auto slab = TetSlab(6, 5, 3, 2.0);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetDefaultMalleability(0.0);
+  f->SetGraspPointId(7);
+  f->SetDisplacement(0.25, 0.5, -1.0);
+  vtkPointSet* out = Deform(f, slab);
+  ASSERT_TRUE(out->IsA("vtkUnstructuredGrid"));
+  EXPECT_EQ(out->GetNumberOfCells(), slab->GetNumberOfCells());
+  EXPECT_EQ(f->GetNumberOfDisplacedPoints(), slab->GetNumberOfPoints());
+  double p[3], q[3];
+  for (vtkIdType i = 0; i < slab->GetNumberOfPoints(); ++i)
+  {
+    slab->GetPoint(i, p);
+    out->GetPoint(i, q);
+    EXPECT_EQ(q[0], p[0] + 0.25);
+    EXPECT_EQ(q[1], p[1] + 0.5);
+    EXPECT_EQ(q[2], p[2] - 1.0);
+  }
+}
+
+TEST(ChainMailDeformationFilter, SoftTetrahedralSlabAttenuatesAwayFromTheGrasp)
+{
+  auto slab = TetSlab(15, 15, 3, 1.0);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetDefaultMalleability(1.0);
+  f->SetGraspPointId(2 * 225 + 7 * 15 + 7);
+  f->SetDisplacement(0, 0, 3.0);
+  vtkPointSet* out = Deform(f, slab);
+  double corner[3];
+  out->GetPoint(0, corner);
+  EXPECT_EQ(corner[2], 0.0);
+  EXPECT_GT(f->GetNumberOfDisplacedPoints(), 20);
+  EXPECT_LT(f->GetNumberOfDisplacedPoints(), slab->GetNumberOfPoints());
+}
+
+TEST(ChainMailDeformationFilter, GraspNearestToPositionUsesTheClosestVertex)
+{
+  auto grid = UniformGrid(10, 10, 1.0, 0.0);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetGraspMode(vtkChainMailDeformationFilter::GRASP_NEAREST_TO_POSITION);
+  f->SetGraspPosition(3.2, 4.9, 0.3);
+  f->SetDisplacement(0, 0, 1);
+  Deform(f, grid);
+  EXPECT_EQ(f->GetLastGraspPointId(), 5 * 10 + 3);
+}
+
+TEST(ChainMailDeformationFilter, PinnedArrayKeepsVerticesInPlace)
+{
+  auto grid = UniformGrid(10, 10, 1.0, 0.0);
+  vtkNew<vtkIntArray> pins;
+  pins->SetName("Pinned");
+  pins->SetNumberOfTuples(100);
+  pins->Fill(0);
+  for (int i = 0; i < 10; ++i)
+    pins->SetValue(50 + i, 1); // a pinned row cuts the grid in two
+  grid->GetPointData()->AddArray(pins);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Pinned");
+  f->SetGraspPointId(5);
+  f->SetDisplacement(0, 0, 2);
+  vtkPointSet* out = Deform(f, grid);
+  double p[3];
+  for (vtkIdType i = 0; i < 100; ++i)
+  {
+    out->GetPoint(i, p);
+    EXPECT_EQ(p[2], i < 50 ? 2.0 : 0.0) << i;
+  }
+}
+
+TEST(ChainMailDeformationFilter, PiecewiseStretchCurveDrivesTheChainAnalytically)
+{
+  // A 1-point-wide strip: pulling the end of an x-chain (spacing 10) by 8 with stretch 1.1
+  // moves the vertices 8, 7, 6, ... (each link absorbs 1).
+  auto strip = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> lines;
+  for (int i = 0; i < 12; ++i)
+    pts->InsertNextPoint(10.0 * i, 0, 0);
+  for (vtkIdType i = 0; i + 1 < 12; ++i)
+  {
+    const vtkIdType l[2] = { i, i + 1 };
+    lines->InsertNextCell(2, l);
+  }
+  strip->SetPoints(pts);
+  strip->SetLines(lines);
+  vtkNew<vtkPiecewiseFunction> stretch;
+  stretch->AddPoint(0.0, 1.1);
+  stretch->AddPoint(1.0, 1.1);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetStretchFunction(stretch);
+  f->SetCompressionRange(1.0, 1.0);
+  f->SetShearRange(0.0, 0.0);
+  f->SetGraspPointId(11);
+  f->SetDisplacement(8, 0, 0);
+  vtkPointSet* out = Deform(f, strip);
+  for (int i = 0; i < 12; ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    EXPECT_NEAR(p[0] - 10.0 * i, std::max(0, 8 - (11 - i)), 1e-12) << i;
+  }
+}
+
+TEST(ChainMailDeformationFilter, OutputPrecisionFollowsVtkConvention)
+{
+  auto grid = TriangleGrid(5, 5, 1.0, [](int, int) { return 0.5; }, VTK_FLOAT);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetGraspPointId(12);
+  f->SetDisplacement(0, 0, 1);
+  EXPECT_EQ(Deform(f, grid)->GetPoints()->GetDataType(), VTK_FLOAT);
+  f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  f->Update();
+  EXPECT_EQ(f->GetOutput()->GetPoints()->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(f->GetNumberOfRebuilds(), 2);
+}
+
+TEST(ChainMailDeformationFilter, BadInputGivesAnErrorAndTheInputGeometry)
+{
+  auto grid = UniformGrid(6, 6, 1.0, 0.5);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  f->AddObserver(vtkCommand::ErrorEvent, errors);
+  f->SetGraspPointId(36);
+  f->SetDisplacement(0, 0, 1);
+  EXPECT_EQ(MaxPointDifference(Deform(f, grid), grid), 0.0);
+  EXPECT_TRUE(errors->GetError());
+  EXPECT_NE(errors->GetErrorMessage().find("outside"), std::string::npos);
+  errors->Clear();
+
+  f->SetGraspPointId(3);
+  f->SetDisplacement(0, std::nan(""), 1);
+  f->Update();
+  EXPECT_TRUE(errors->GetError());
+  EXPECT_EQ(MaxPointDifference(f->GetOutput(), grid), 0.0);
+  errors->Clear();
+
+  grid->GetPoints()->SetPoint(4, 0, INFINITY, 0);
+  grid->GetPoints()->Modified();
+  f->SetDisplacement(0, 0, 1);
+  f->Update();
+  EXPECT_TRUE(errors->GetError());
+  EXPECT_NE(errors->GetErrorMessage().find("non-finite"), std::string::npos);
+  double p[3];
+  f->GetOutput()->GetPoint(4, p);
+  EXPECT_TRUE(std::isinf(p[1])); // the input, untouched
+  f->GetOutput()->GetPoint(3, p);
+  EXPECT_EQ(p[2], 0.0);
+}
+
+TEST(ChainMailDeformationFilter, EmptyInputGivesEmptyOutput)
+{
+  vtkNew<vtkPolyData> empty;
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetGraspPointId(0);
+  vtkPointSet* out = Deform(f, empty);
+  ASSERT_NE(out, nullptr);
+  EXPECT_EQ(out->GetNumberOfPoints(), 0);
+}
+
+TEST(ChainMailDeformationFilter, DiagnosticsArraysOnlyWhenAsked)
+{
+  auto grid = UniformGrid(8, 8, 1.0, 0.5);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetGraspPointId(27);
+  f->SetDisplacement(0, 0, 1);
+  vtkPointSet* out = Deform(f, grid);
+  EXPECT_EQ(out->GetPointData()->GetArray("ChainMailDisplacement"), nullptr);
+  f->GenerateDiagnosticsOn();
+  f->Update();
+  auto* disp = f->GetOutput()->GetPointData()->GetArray("ChainMailDisplacement");
+  ASSERT_NE(disp, nullptr);
+  EXPECT_EQ(disp->GetComponent(27, 2), 1.0);
+  EXPECT_EQ(f->GetOutput()->GetPointData()->GetArray("ChainMailSponsor")->GetComponent(27, 0), -1);
+}
+
+TEST(ChainMailDeformationFilter, InputIsNeverModified)
+{
+  auto grid = UniformGrid(12, 12, 1.0, 0.7);
+  vtkNew<vtkPolyData> copy;
+  copy->DeepCopy(grid);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetGraspPointId(70);
+  f->SetDisplacement(2, 2, 2);
+  Deform(f, grid);
+  f->SetDisplacement(-2, 0, 1);
+  f->Update();
+  EXPECT_EQ(MaxPointDifference(grid, copy), 0.0);
+  EXPECT_GT(MaxPointDifference(f->GetOutput(), copy), 1.0);
+}
