@@ -80,7 +80,9 @@ TraceParseResult parse_trace(std::istream& in, const std::string& source)
     const double norm = s.orientation.norm();
     if (!(norm > 1e-12) || !std::isfinite(norm))
       return fail("orientation quaternion has zero length");
-    s.orientation.coeffs() /= norm;
+    // Already-unit quaternions are kept bit for bit so record -> replay is exact.
+    if (std::abs(norm - 1.0) > 1e-9)
+      s.orientation.coeffs() /= norm;
     if (!result.samples.empty() && s.t < result.samples.back().t)
       return fail("time goes backwards (" + std::string(f[0]) + " after " +
         std::to_string(result.samples.back().t) + ")");
@@ -181,11 +183,14 @@ bool TraceRecorder::record(const DeviceSample& s)
 bool TraceRecorder::close()
 {
   if (!out_.is_open())
-    return error_.empty();
+    return true;
+  // The stream's state, not error(): a rejected non-finite sample is not a failed write.
+  bool ok = bool(out_);
   out_.close();
-  if (out_.fail() && error_.empty())
+  ok = ok && !out_.fail();
+  if (!ok)
     error_ = path_ + ": write failed";
-  return error_.empty();
+  return ok;
 }
 
 } // namespace geoshaping::haptics

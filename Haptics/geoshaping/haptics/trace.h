@@ -8,7 +8,8 @@
 //
 //   t        seconds, non-decreasing down the file
 //   x y z    stylus position, metres
-//   qw..qz   orientation quaternion (normalised on reading; must not be zero)
+//   qw..qz   orientation quaternion (normalised on reading if its length is not 1
+//            within 1e-9; must not be zero)
 //   buttons  unsigned decimal bitmask, bit 0 = first button
 //
 // Blank lines and everything after '#' are ignored. Numbers are read and written in
@@ -51,7 +52,7 @@ public:
   // Creates or truncates `path` and writes a header comment; false with error() if not.
   bool open(const std::string& path);
   bool record(const DeviceSample& s);
-  // Flushes and closes; false if any write failed.
+  // Flushes and closes; false if any write failed (a rejected sample does not count).
   bool close();
   bool is_open() const { return out_.is_open(); }
   const std::string& error() const { return error_; }

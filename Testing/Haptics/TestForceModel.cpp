@@ -1,0 +1,229 @@
+#include "geoshaping/haptics/force_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+using namespace geoshaping::haptics;
+
+namespace
+{
+constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+const Clock::time_point now = Clock::time_point(std::chrono::hours(1));
+
+SceneSnapshot fresh_scene()
+{
+  SceneSnapshot s;
+  s.stamp = now - std::chrono::milliseconds(10);
+  s.sequence = 1;
+  return s;
+}
+
+SceneSnapshot grasp(const Eigen::Vector3d& anchor, double stiffness)
+{
+  SceneSnapshot s = fresh_scene();
+  s.grasping = true;
+  s.grasp_anchor = anchor;
+  s.grasp_stiffness = stiffness;
+  return s;
+}
+
+// A 20 cm square in the z = 0 plane, counter-clockwise seen from +z (free side up).
+SceneSnapshot floor_scene()
+{
+  SceneSnapshot s = fresh_scene();
+  const Eigen::Vector3d a(-0.1, -0.1, 0), b(0.1, -0.1, 0), c(0.1, 0.1, 0), d(-0.1, 0.1, 0);
+  s.contact_triangles = { a, b, c, a, c, d };
+  return s;
+}
+
+ForceInput at(const Eigen::Vector3d& x)
+{
+  ForceInput in;
+  in.position = x;
+  in.now = now;
+  return in;
+}
+} // namespace
+
+TEST(ForceModel, CouplingPullsTowardTheAnchorInProportionToTheDeformation)
+{
+  const DeviceLimits limits;
+  const ForceParams params;
+  const SceneSnapshot scene = grasp(Eigen::Vector3d::Zero(), 200.0);
+  const ForceResult one = compute_force(at({ 0.001, 0, 0 }), scene, params, limits);
+  const ForceResult two = compute_force(at({ 0.002, 0, 0 }), scene, params, limits);
+  EXPECT_EQ(one.status, ForceStatus::ok);
+  EXPECT_NEAR(one.force.x(), -0.2, 1e-12);
+  EXPECT_NEAR(two.force.x(), -0.4, 1e-12);
+  EXPECT_EQ(one.force.y(), 0.0);
+}
+
+TEST(ForceModel, RigidGraspFeelsStifferThanSoftGrasp)
+{
+  const DeviceLimits limits;
+  const ForceParams params;
+  const double rigid = coupling_stiffness(0.0, params, limits);
+  const double soft = coupling_stiffness(1.0, params, limits);
+  EXPECT_DOUBLE_EQ(rigid, params.rigid_fraction * limits.max_stiffness);
+  EXPECT_DOUBLE_EQ(soft, params.soft_fraction * limits.max_stiffness);
+  EXPECT_GT(rigid, coupling_stiffness(0.5, params, limits));
+  EXPECT_GT(coupling_stiffness(0.5, params, limits), soft);
+  EXPECT_DOUBLE_EQ(coupling_stiffness(not_a_number, params, limits), rigid);
+  const Eigen::Vector3d x(0.003, 0, 0);
+  const double f_rigid = compute_force(at(x), grasp({ 0, 0, 0 }, rigid), params, limits).force.norm();
+  const double f_soft = compute_force(at(x), grasp({ 0, 0, 0 }, soft), params, limits).force.norm();
+  EXPECT_GT(f_rigid, 4.0 * f_soft);
+}
+
+TEST(ForceModel, StiffnessIsClampedToTheDeviceMaximum)
+{
+  DeviceLimits limits;
+  limits.max_stiffness = 500.0;
+  const ForceResult r =
+    compute_force(at({ 0.001, 0, 0 }), grasp({ 0, 0, 0 }, 1e6), ForceParams(), limits);
+  EXPECT_NEAR(r.force.x(), -0.5, 1e-12);
+}
+
+TEST(ForceModel, ForceIsScaledDownToTheDeviceMaximumKeepingItsDirection)
+{
+  const DeviceLimits limits;
+  const ForceResult r =
+    compute_force(at({ 0.3, 0.4, 0 }), grasp({ 0, 0, 0 }, 800.0), ForceParams(), limits);
+  EXPECT_NEAR(r.force.norm(), limits.max_force, 1e-12);
+  EXPECT_NEAR(r.force.x() / r.force.y(), 0.75, 1e-12);
+}
+
+TEST(ForceModel, ContactPushesOutAlongTheNormalInsideTheShell)
+{
+  const DeviceLimits limits;
+  ForceParams params;
+  params.contact_stiffness = 600.0;
+  const ForceResult r = compute_force(at({ 0.01, 0.02, -0.002 }), floor_scene(), params, limits);
+  EXPECT_EQ(r.status, ForceStatus::ok);
+  EXPECT_TRUE(r.in_contact);
+  EXPECT_NEAR(r.force.z(), 600.0 * 0.002, 1e-12);
+  EXPECT_NEAR(r.force.x(), 0.0, 1e-15);
+  EXPECT_NEAR(r.force.y(), 0.0, 1e-15);
+}
+
+TEST(ForceModel, NoContactAboveTheSurfaceOrBelowTheShell)
+{
+  const DeviceLimits limits;
+  const ForceParams params;
+  const SceneSnapshot scene = floor_scene();
+  const ForceResult above = compute_force(at({ 0, 0, 0.001 }), scene, params, limits);
+  EXPECT_FALSE(above.in_contact);
+  EXPECT_EQ(above.force, Eigen::Vector3d::Zero());
+  const ForceResult deep =
+    compute_force(at({ 0, 0, -2 * params.contact_shell }), scene, params, limits);
+  EXPECT_FALSE(deep.in_contact);
+  EXPECT_EQ(deep.force, Eigen::Vector3d::Zero());
+}
+
+TEST(ForceModel, ClosestPointOnTriangleCoversFaceEdgeAndVertex)
+{
+  const Eigen::Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  EXPECT_TRUE(closest_point_on_triangle({ 0.2, 0.3, 5 }, a, b, c).isApprox(Eigen::Vector3d(0.2, 0.3, 0)));
+  EXPECT_TRUE(closest_point_on_triangle({ 0.5, -1, 0 }, a, b, c).isApprox(Eigen::Vector3d(0.5, 0, 0)));
+  EXPECT_TRUE(closest_point_on_triangle({ 1, 1, 0 }, a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
+  EXPECT_EQ(closest_point_on_triangle({ -1, -1, 2 }, a, b, c), a);
+  EXPECT_EQ(closest_point_on_triangle({ 3, -0.5, 0 }, a, b, c), b);
+  EXPECT_EQ(closest_point_on_triangle({ -0.1, 4, 0 }, a, b, c), c);
+}
+
+TEST(ForceModel, ForceIsZeroWhenTheDeviceReportsAnError)
+{
+  ForceInput in = at({ 0.05, 0, 0 });
+  in.device_ok = false;
+  const ForceResult r = compute_force(in, grasp({ 0, 0, 0 }, 800.0), ForceParams(), DeviceLimits());
+  EXPECT_EQ(r.status, ForceStatus::device_error);
+  EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
+}
+
+TEST(ForceModel, ForceIsZeroWhenTheSceneIsStaleOrWasNeverPublished)
+{
+  ForceParams params;
+  params.stale_after = std::chrono::milliseconds(100);
+  SceneSnapshot scene = grasp({ 0, 0, 0 }, 800.0);
+  scene.stamp = now - std::chrono::milliseconds(101);
+  ForceResult r = compute_force(at({ 0.05, 0, 0 }), scene, params, DeviceLimits());
+  EXPECT_EQ(r.status, ForceStatus::stale_scene);
+  EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
+  scene.stamp = Clock::time_point();
+  r = compute_force(at({ 0.05, 0, 0 }), scene, params, DeviceLimits());
+  EXPECT_EQ(r.status, ForceStatus::stale_scene);
+  EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
+}
+
+TEST(ForceModel, ForceIsZeroWhenAnyInputIsNonFinite)
+{
+  const DeviceLimits limits;
+  const ForceParams params;
+  EXPECT_EQ(compute_force(at({ not_a_number, 0, 0 }), grasp({ 0, 0, 0 }, 800), params, limits).status,
+    ForceStatus::non_finite);
+  ForceInput moving = at({ 0.01, 0, 0 });
+  moving.velocity.y() = infinity;
+  EXPECT_EQ(compute_force(moving, grasp({ 0, 0, 0 }, 800), params, limits).status,
+    ForceStatus::non_finite);
+  EXPECT_EQ(compute_force(at({ 0, 0, 0 }), grasp({ 0, not_a_number, 0 }, 800), params, limits).status,
+    ForceStatus::non_finite);
+  EXPECT_EQ(compute_force(at({ 0.01, 0, 0 }), grasp({ 0, 0, 0 }, not_a_number), params, limits).status,
+    ForceStatus::non_finite);
+  // Overflow from an absurd position is a fault too, not an infinite pull.
+  const ForceResult r = compute_force(at({ 1e308, -1e308, 0 }), grasp({ 0, 0, 0 }, 800), params, limits);
+  EXPECT_TRUE(r.force.allFinite());
+  EXPECT_LE(r.force.norm(), limits.max_force);
+}
+
+TEST(ForceModel, ForceNeverExceedsTheMaximumAndIsNeverNaNOverRandomInputs)
+{
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> pick(0, 9);
+  // Mostly sensible values, sometimes NaN, infinities, huge or tiny ones.
+  auto value = [&](double scale) {
+    switch (pick(rng))
+    {
+      case 0:
+        return not_a_number;
+      case 1:
+        return unit(rng) > 0 ? infinity : -infinity;
+      case 2:
+        return unit(rng) * 1e300;
+      case 3:
+        return unit(rng) * 1e-300;
+      default:
+        return unit(rng) * scale;
+    }
+  };
+  auto vec = [&](double scale) { return Eigen::Vector3d(value(scale), value(scale), value(scale)); };
+  DeviceLimits limits;
+  limits.max_force = 2.5;
+  int rendered = 0;
+  for (int i = 0; i < 20000; ++i)
+  {
+    SceneSnapshot scene;
+    scene.stamp = now - std::chrono::milliseconds(int(std::abs(unit(rng)) * 150)); // some stale
+    scene.grasping = pick(rng) < 7;
+    scene.grasp_anchor = vec(0.1);
+    scene.grasp_stiffness = value(5000.0);
+    for (int t = 0; t < 3 * (pick(rng) % 4); ++t)
+      scene.contact_triangles.push_back(vec(0.1));
+    ForceInput in = at(vec(0.1));
+    in.velocity = vec(1.0);
+    in.device_ok = pick(rng) != 0;
+    const ForceResult r = compute_force(in, scene, ForceParams(), limits);
+    ASSERT_TRUE(r.force.allFinite()) << "sample " << i;
+    ASSERT_LE(r.force.norm(), limits.max_force * (1 + 1e-12)) << "sample " << i;
+    if (r.status != ForceStatus::ok)
+      ASSERT_EQ(r.force, Eigen::Vector3d::Zero()) << "sample " << i;
+    rendered += r.force != Eigen::Vector3d::Zero();
+  }
+  // The sweep must exercise real forces, not only faults.
+  EXPECT_GT(rendered, 500);
+}
