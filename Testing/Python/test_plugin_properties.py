@@ -1,0 +1,20 @@
+"""The plugin loads in pvpython and exposes the public names of DESIGN.md section 5."""
+from geoshaping_testing import check, load
+from paraview.simple import *  # noqa: F401,F403
+
+load(ns=globals())
+src = Sphere()
+chain = ChainMailDeformation(Input=src)  # noqa: F405 (defined by the plugin)
+names = set(chain.ListProperties())
+for name in ["MalleabilityArray", "DefaultMalleability", "GraspPointId", "Displacement",
+             "CandidateQueue", "StretchRange", "CompressionRange", "ShearRange",
+             "PinnedArray", "OutputPointsPrecision"]:
+    check(name in names, "ChainMailDeformation has property %s" % name)
+check(chain.CandidateQueue == "FIFO Priority", "default queue is FIFO Priority")
+check(list(chain.StretchRange) == [1.0, 2.0], "default stretch range 1 -> 2")
+check(list(chain.CompressionRange) == [1.0, 0.5], "default compression range 1 -> 0.5")
+check(list(chain.ShearRange) == [0.0, 0.5], "default shear range 0 -> 0.5")
+check(chain.DefaultMalleability == 0.5, "default malleability 0.5")
+for queue in ["FIFO", "Priority", "FIFO Priority", "Max Violation"]:
+    chain.CandidateQueue = queue
+    check(chain.CandidateQueue == queue, "queue %s accepted" % queue)
