@@ -1,6 +1,8 @@
 #include "geoshaping/haptics/servo_loop.h"
 
 #ifdef __linux__
+#include <pthread.h>
+#include <sched.h>
 #include <sys/prctl.h>
 #endif
 
@@ -31,6 +33,7 @@ bool ServoLoop::start()
     return false;
   }
   stop_.store(false);
+  realtime_.store(false);
   ticks_.store(0);
   periods_.reset();
   running_.store(true, std::memory_order_release);
@@ -60,6 +63,12 @@ void ServoLoop::run()
 #ifdef __linux__
   if (config_.tight_timer_slack)
     prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
+  if (config_.realtime_priority > 0)
+  {
+    sched_param param{};
+    param.sched_priority = config_.realtime_priority;
+    realtime_.store(pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0);
+  }
 #endif
   const Clock::duration period = config_.period;
   DeviceSample sample;

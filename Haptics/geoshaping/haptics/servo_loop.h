@@ -21,6 +21,10 @@ struct ServoConfig
   // Linux: ask for 1 ns timer slack on the servo thread so sleep_until wakes on time
   // (the default 50 us slack is half the jitter budget). No privileges needed.
   bool tight_timer_slack = true;
+  // > 0: try to run the servo thread SCHED_FIFO at this priority (1..99). Needs
+  // CAP_SYS_NICE or an rtprio limit; without them the loop runs at normal priority and
+  // realtime() says so. Off by default: a runaway real-time thread can starve a desktop.
+  int realtime_priority = 0;
 };
 
 // One tick, every `period`, on steady_clock deadlines (sleep_until, not sleep_for, so
@@ -63,6 +67,8 @@ public:
   // Any thread, while running or after.
   PeriodSummary period_summary() const { return periods_.summary(); }
   std::uint64_t ticks() const { return ticks_.load(std::memory_order_relaxed); }
+  // Whether the servo thread got the real-time priority it asked for.
+  bool realtime() const { return realtime_.load(std::memory_order_relaxed); }
 
 private:
   void run();
@@ -73,6 +79,7 @@ private:
   std::thread thread_;
   std::atomic<bool> running_{ false };
   std::atomic<bool> stop_{ false };
+  std::atomic<bool> realtime_{ false };
   std::atomic<std::uint64_t> ticks_{ 0 };
   PeriodStats periods_;
   TripleBuffer<SceneSnapshot> scene_;
