@@ -23,7 +23,8 @@ const char* to_string(ForceStatus s)
   return "?";
 }
 
-double coupling_stiffness(double malleability, const ForceParams& params, const DeviceLimits& limits)
+double coupling_stiffness(
+  double malleability, const ForceParams& params, const DeviceLimits& limits)
 {
   const double m = std::isnan(malleability) ? 0.0 : std::clamp(malleability, 0.0, 1.0);
   return limits.max_stiffness * (params.rigid_fraction * (1.0 - m) + params.soft_fraction * m);
@@ -76,7 +77,8 @@ struct Contact
 
 // The nearest triangle decides: summing over all triangles would push twice at a
 // shared edge. Degenerate and non-finite triangles are skipped.
-Contact nearest_contact(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup, double shell)
+Contact nearest_contact(
+  const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup, double shell)
 {
   Contact c;
   double best = std::numeric_limits<double>::infinity();

@@ -27,13 +27,13 @@ constexpr HDerror success = 0x0000;
 constexpr HDCallbackCode callback_continue = 1;
 constexpr unsigned short default_priority = 0xFFFF / 2;
 constexpr HDenum current_buttons = 0x2000;
-constexpr HDenum current_position = 0x2050;  // 3 doubles, mm
+constexpr HDenum current_position = 0x2050; // 3 doubles, mm
 constexpr HDenum current_transform = 0x2052; // 16 doubles, column-major, mm
-constexpr HDenum usable_workspace = 0x2551;  // 6 doubles: min xyz, max xyz, mm
+constexpr HDenum usable_workspace = 0x2551; // 6 doubles: min xyz, max xyz, mm
 constexpr HDenum nominal_max_stiffness = 0x2602; // N/mm
-constexpr HDenum nominal_max_force = 0x2603;     // N
-constexpr HDenum nominal_max_damping = 0x2609;   // N s/mm
-constexpr HDenum current_force = 0x2700;         // 3 doubles, N
+constexpr HDenum nominal_max_force = 0x2603; // N
+constexpr HDenum nominal_max_damping = 0x2609; // N s/mm
+constexpr HDenum current_force = 0x2700; // 3 doubles, N
 constexpr HDenum force_output = 0x4000;
 } // namespace hd
 
@@ -67,7 +67,8 @@ struct OpenHapticsDevice::Api
     const hd::HDErrorInfo e = hdGetError();
     if (e.errorCode == hd::success)
       return {};
-    return hdGetErrorString ? hdGetErrorString(e.errorCode) : "HD error " + std::to_string(e.errorCode);
+    return hdGetErrorString ? hdGetErrorString(e.errorCode)
+                            : "HD error " + std::to_string(e.errorCode);
   }
 };
 
@@ -84,7 +85,8 @@ bool resolve(void* library, const char* name, F& f, std::string& missing)
 } // namespace
 
 OpenHapticsDevice::OpenHapticsDevice(std::string device_name, std::string library)
-  : device_name_(std::move(device_name)), library_(std::move(library))
+  : device_name_(std::move(device_name))
+  , library_(std::move(library))
 {
 }
 

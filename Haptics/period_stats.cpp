@@ -31,7 +31,8 @@ PeriodSummary PeriodStats::summary() const
   s.max_jitter_us = double(max_jitter_ns_.load(std::memory_order_relaxed)) * 1e-3;
   // Smallest jitter with at least q of the periods at or below it (nearest rank).
   auto percentile = [&](double q) {
-    const std::uint64_t rank = std::max<std::uint64_t>(1, std::uint64_t(std::ceil(q * double(s.periods))));
+    const std::uint64_t rank =
+      std::max<std::uint64_t>(1, std::uint64_t(std::ceil(q * double(s.periods))));
     std::uint64_t seen = 0;
     for (std::size_t b = 0; b < bins; ++b)
     {

@@ -5,10 +5,15 @@
 namespace geoshaping::haptics
 {
 
-ReplayDevice::ReplayDevice(std::string path, double step) : path_(std::move(path)), clock_(step) {}
+ReplayDevice::ReplayDevice(std::string path, double step)
+  : path_(std::move(path))
+  , clock_(step)
+{
+}
 
 ReplayDevice::ReplayDevice(std::vector<DeviceSample> samples, double step)
-  : samples_(std::move(samples)), clock_(step)
+  : samples_(std::move(samples))
+  , clock_(step)
 {
 }
 

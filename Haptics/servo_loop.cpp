@@ -10,7 +10,9 @@ namespace geoshaping::haptics
 {
 
 ServoLoop::ServoLoop(HapticDevice& device, ServoConfig config)
-  : device_(device), config_(config), periods_(config.period)
+  : device_(device)
+  , config_(config)
+  , periods_(config.period)
 {
 }
 

@@ -16,15 +16,22 @@ DeviceSample circle(double t)
   constexpr double hz = 0.5;
   DeviceSample s;
   s.t = t;
-  s.position = Eigen::Vector3d(radius * std::cos(2 * pi * hz * t), radius * std::sin(2 * pi * hz * t), 0.0);
+  s.position =
+    Eigen::Vector3d(radius * std::cos(2 * pi * hz * t), radius * std::sin(2 * pi * hz * t), 0.0);
   s.buttons = t >= 0.5 ? 1u : 0u;
   return s;
 }
 } // namespace
 
-SimulatedDevice::SimulatedDevice() : motion_(circle) {}
+SimulatedDevice::SimulatedDevice()
+  : motion_(circle)
+{
+}
 
-SimulatedDevice::SimulatedDevice(Motion motion) : motion_(std::move(motion)) {}
+SimulatedDevice::SimulatedDevice(Motion motion)
+  : motion_(std::move(motion))
+{
+}
 
 SimulatedDevice::SimulatedDevice(std::vector<DeviceSample> keyframes)
 {

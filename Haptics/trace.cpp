@@ -1,9 +1,9 @@
 #include "geoshaping/haptics/trace.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <istream>
-#include <algorithm>
 
 namespace geoshaping::haptics
 {
@@ -60,14 +60,14 @@ TraceParseResult parse_trace(std::istream& in, const std::string& source)
     if (f.empty())
       continue;
     if (f.size() != 9)
-      return fail("expected 9 fields 't x y z qw qx qy qz buttons', found " +
-        std::to_string(f.size()));
+      return fail(
+        "expected 9 fields 't x y z qw qx qy qz buttons', found " + std::to_string(f.size()));
     double v[8];
     for (int i = 0; i < 8; ++i)
     {
       if (!parse_number(f[i], v[i]))
-        return fail("field " + std::string(field_names[i]) + " '" + std::string(f[i]) +
-          "' is not a number");
+        return fail(
+          "field " + std::string(field_names[i]) + " '" + std::string(f[i]) + "' is not a number");
       if (!std::isfinite(v[i]))
         return fail("field " + std::string(field_names[i]) + " is not finite");
     }

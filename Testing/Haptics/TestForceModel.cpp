@@ -75,7 +75,8 @@ TEST(ForceModel, RigidGraspFeelsStifferThanSoftGrasp)
   EXPECT_GT(coupling_stiffness(0.5, params, limits), soft);
   EXPECT_DOUBLE_EQ(coupling_stiffness(not_a_number, params, limits), rigid);
   const Eigen::Vector3d x(0.003, 0, 0);
-  const double f_rigid = compute_force(at(x), grasp({ 0, 0, 0 }, rigid), params, limits).force.norm();
+  const double f_rigid =
+    compute_force(at(x), grasp({ 0, 0, 0 }, rigid), params, limits).force.norm();
   const double f_soft = compute_force(at(x), grasp({ 0, 0, 0 }, soft), params, limits).force.norm();
   EXPECT_GT(f_rigid, 4.0 * f_soft);
 }
@@ -128,9 +129,12 @@ TEST(ForceModel, NoContactAboveTheSurfaceOrBelowTheShell)
 TEST(ForceModel, ClosestPointOnTriangleCoversFaceEdgeAndVertex)
 {
   const Eigen::Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  EXPECT_TRUE(closest_point_on_triangle({ 0.2, 0.3, 5 }, a, b, c).isApprox(Eigen::Vector3d(0.2, 0.3, 0)));
-  EXPECT_TRUE(closest_point_on_triangle({ 0.5, -1, 0 }, a, b, c).isApprox(Eigen::Vector3d(0.5, 0, 0)));
-  EXPECT_TRUE(closest_point_on_triangle({ 1, 1, 0 }, a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
+  EXPECT_TRUE(
+    closest_point_on_triangle({ 0.2, 0.3, 5 }, a, b, c).isApprox(Eigen::Vector3d(0.2, 0.3, 0)));
+  EXPECT_TRUE(
+    closest_point_on_triangle({ 0.5, -1, 0 }, a, b, c).isApprox(Eigen::Vector3d(0.5, 0, 0)));
+  EXPECT_TRUE(
+    closest_point_on_triangle({ 1, 1, 0 }, a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
   EXPECT_EQ(closest_point_on_triangle({ -1, -1, 2 }, a, b, c), a);
   EXPECT_EQ(closest_point_on_triangle({ 3, -0.5, 0 }, a, b, c), b);
   EXPECT_EQ(closest_point_on_triangle({ -0.1, 4, 0 }, a, b, c), c);
@@ -164,18 +168,22 @@ TEST(ForceModel, ForceIsZeroWhenAnyInputIsNonFinite)
 {
   const DeviceLimits limits;
   const ForceParams params;
-  EXPECT_EQ(compute_force(at({ not_a_number, 0, 0 }), grasp({ 0, 0, 0 }, 800), params, limits).status,
+  EXPECT_EQ(
+    compute_force(at({ not_a_number, 0, 0 }), grasp({ 0, 0, 0 }, 800), params, limits).status,
     ForceStatus::non_finite);
   ForceInput moving = at({ 0.01, 0, 0 });
   moving.velocity.y() = infinity;
-  EXPECT_EQ(compute_force(moving, grasp({ 0, 0, 0 }, 800), params, limits).status,
+  EXPECT_EQ(
+    compute_force(moving, grasp({ 0, 0, 0 }, 800), params, limits).status, ForceStatus::non_finite);
+  EXPECT_EQ(
+    compute_force(at({ 0, 0, 0 }), grasp({ 0, not_a_number, 0 }, 800), params, limits).status,
     ForceStatus::non_finite);
-  EXPECT_EQ(compute_force(at({ 0, 0, 0 }), grasp({ 0, not_a_number, 0 }, 800), params, limits).status,
-    ForceStatus::non_finite);
-  EXPECT_EQ(compute_force(at({ 0.01, 0, 0 }), grasp({ 0, 0, 0 }, not_a_number), params, limits).status,
+  EXPECT_EQ(
+    compute_force(at({ 0.01, 0, 0 }), grasp({ 0, 0, 0 }, not_a_number), params, limits).status,
     ForceStatus::non_finite);
   // Overflow from an absurd position is a fault too, not an infinite pull.
-  const ForceResult r = compute_force(at({ 1e308, -1e308, 0 }), grasp({ 0, 0, 0 }, 800), params, limits);
+  const ForceResult r =
+    compute_force(at({ 1e308, -1e308, 0 }), grasp({ 0, 0, 0 }, 800), params, limits);
   EXPECT_TRUE(r.force.allFinite());
   EXPECT_LE(r.force.norm(), limits.max_force);
 }
@@ -201,7 +209,8 @@ TEST(ForceModel, ForceNeverExceedsTheMaximumAndIsNeverNaNOverRandomInputs)
         return unit(rng) * scale;
     }
   };
-  auto vec = [&](double scale) { return Eigen::Vector3d(value(scale), value(scale), value(scale)); };
+  auto vec = [&](
+               double scale) { return Eigen::Vector3d(value(scale), value(scale), value(scale)); };
   DeviceLimits limits;
   limits.max_force = 2.5;
   int rendered = 0;

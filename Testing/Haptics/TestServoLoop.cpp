@@ -67,11 +67,15 @@ TEST(PeriodStats, PercentilesAndRateOfKnownPeriods)
   EXPECT_NEAR(s.mean_rate_hz, 100.0 / (98e-3 + 1.5e-3 + 3e-3), 1e-9);
 }
 
-// Not a timing claim: a broad band that a loaded 2-core machine still meets.
+// Not a timing claim: a broad band that a loaded 2-core machine still meets. The loop
+// asks for real-time priority as the interactor would; where it is refused the band
+// still holds on a machine that is not saturated.
 TEST(ServoLoop, RunsNearOneKilohertzWithASimulatedDevice)
 {
   SimulatedDevice device;
-  ServoLoop loop(device);
+  ServoConfig config;
+  config.realtime_priority = 50;
+  ServoLoop loop(device, config);
   ASSERT_TRUE(loop.start()) << loop.error();
   EXPECT_TRUE(loop.running());
   std::this_thread::sleep_for(200ms);

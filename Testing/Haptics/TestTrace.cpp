@@ -31,7 +31,8 @@ bool bit_identical(const DeviceSample& a, const DeviceSample& b)
 {
   return std::memcmp(&a.t, &b.t, sizeof(double)) == 0 &&
     std::memcmp(a.position.data(), b.position.data(), 3 * sizeof(double)) == 0 &&
-    std::memcmp(a.orientation.coeffs().data(), b.orientation.coeffs().data(), 4 * sizeof(double)) == 0 &&
+    std::memcmp(a.orientation.coeffs().data(), b.orientation.coeffs().data(), 4 * sizeof(double)) ==
+    0 &&
     a.buttons == b.buttons;
 }
 } // namespace
@@ -63,7 +64,9 @@ TEST(Trace, BadLineGivesAnErrorWithItsLineNumber)
     "mem:3: buttons '-1' is not an unsigned integer");
   EXPECT_EQ(parse(std::string(good) + "0.1 0 0 0 0 0 0 0 0\n").message,
     "mem:3: orientation quaternion has zero length");
-  EXPECT_EQ(parse(std::string(good) + "\n-1 0 0 0 1 0 0 0 0\n").message.rfind("mem:4: time goes backwards", 0), 0u);
+  EXPECT_EQ(parse(std::string(good) + "\n-1 0 0 0 1 0 0 0 0\n")
+              .message.rfind("mem:4: time goes backwards", 0),
+    0u);
   EXPECT_FALSE(parse(std::string(good) + "0.1 0 0 0 1 0 0 0 0\n0.2 0 0 0 1 0 0 0 x\n").ok);
 }
 
@@ -97,7 +100,8 @@ TEST(Trace, RecorderOutputReadsBackBitIdentical)
     DeviceSample s;
     s.t = i * 0.001;
     s.position = Eigen::Vector3d(std::sin(i * 0.1) / 3.0, 1e-7 * i, -0.1 / (i + 1));
-    s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.01 * i, Eigen::Vector3d(1, 2, 3).normalized()));
+    s.orientation =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.01 * i, Eigen::Vector3d(1, 2, 3).normalized()));
     s.buttons = std::uint32_t(i % 4);
     in.push_back(s);
   }
@@ -139,10 +143,11 @@ TEST(Replay, InterpolatesBetweenSamplesAndRestsAfterTheEnd)
 TEST(Replay, IsDeterministicAndFollowsTheFile)
 {
   const std::string path = temp_path("replay_trace.txt");
-  write_file(path, "# t x y z qw qx qy qz buttons\n"
-                   "10.0 0 0 0 1 0 0 0 0\n"
-                   "10.1 0.01 0 0 1 0 0 0 1\n"
-                   "10.2 0.01 0.02 0 0.7071 0 0 0.7071 1\n");
+  write_file(path,
+    "# t x y z qw qx qy qz buttons\n"
+    "10.0 0 0 0 1 0 0 0 0\n"
+    "10.1 0.01 0 0 1 0 0 0 1\n"
+    "10.2 0.01 0.02 0 0.7071 0 0 0.7071 1\n");
   // Two devices replaying the same file on a stepped clock give the same samples, bit
   // for bit, and the trace plays from its first time stamp.
   ReplayDevice a(path, 0.001), b(path, 0.001);

@@ -71,8 +71,9 @@ void fill_scene(SceneSnapshot& s, std::uint64_t seq)
   for (int j = 0; j < 16; ++j)
     for (int i = 0; i < 16; ++i)
     {
-      const Eigen::Vector3d a(-0.08 + i * h, -0.08 + j * h, -0.001), b = a + Eigen::Vector3d(h, 0, 0),
-                            c = a + Eigen::Vector3d(h, h, 0), d = a + Eigen::Vector3d(0, h, 0);
+      const Eigen::Vector3d a(-0.08 + i * h, -0.08 + j * h, -0.001),
+        b = a + Eigen::Vector3d(h, 0, 0), c = a + Eigen::Vector3d(h, h, 0),
+        d = a + Eigen::Vector3d(0, h, 0);
       s.contact_triangles.insert(s.contact_triangles.end(), { a, b, c, a, c, d });
     }
 }

@@ -27,11 +27,11 @@ struct DeviceSample
 // (converted to SI); the defaults are those of a desktop PHANToM-class device.
 struct DeviceLimits
 {
-  double max_force = 3.3;        // N, peak
+  double max_force = 3.3; // N, peak
   double max_stiffness = 1000.0; // N/m: above this a virtual spring at 1 kHz may buzz
-  double max_damping = 5.0;      // N s/m
+  double max_damping = 5.0; // N s/m
   Eigen::Vector3d workspace_min = Eigen::Vector3d::Constant(-0.08); // m, device frame
-  Eigen::Vector3d workspace_max = Eigen::Vector3d::Constant(0.08);  // m, device frame
+  Eigen::Vector3d workspace_max = Eigen::Vector3d::Constant(0.08); // m, device frame
   double workspace_radius = 0.08; // m, radius of the sphere the stylus reaches everywhere
 };
 
@@ -87,7 +87,10 @@ private:
 class DeviceClock
 {
 public:
-  explicit DeviceClock(double step = 0.0) : step_(step) {}
+  explicit DeviceClock(double step = 0.0)
+    : step_(step)
+  {
+  }
   void restart();
   double next();
   double step() const { return step_; }

@@ -17,8 +17,8 @@ struct ForceParams
   double coupling_damping = 1.0; // N s/m, while grasping
 
   double contact_stiffness = 800.0; // N/m
-  double contact_damping = 1.0;     // N s/m, along the normal, while in contact
-  double contact_shell = 0.005;     // m: penetration depth below which contact acts
+  double contact_damping = 1.0; // N s/m, along the normal, while in contact
+  double contact_shell = 0.005; // m: penetration depth below which contact acts
 
   // A scene snapshot older than this renders zero force.
   std::chrono::nanoseconds stale_after = std::chrono::milliseconds(100);
@@ -27,7 +27,8 @@ struct ForceParams
 // Coupling stiffness for the malleability m in [0, 1] of the grasped region:
 //   k(m) = k_max (rigid_fraction (1 - m) + soft_fraction m),
 // m clamped to [0, 1]; NaN m is treated as rigid (as the deformer does).
-double coupling_stiffness(double malleability, const ForceParams& params, const DeviceLimits& limits);
+double coupling_stiffness(
+  double malleability, const ForceParams& params, const DeviceLimits& limits);
 
 // Nearest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5:
 // Voronoi regions of the vertices, then the edges, else the face).

@@ -10,7 +10,10 @@ class NullDevice : public HapticDevice
 public:
   // A non-empty `failure` makes open() fail with that message (make_device uses it for
   // an unknown kind, so the caller learns why at the usual place).
-  explicit NullDevice(std::string failure = {}) : failure_(std::move(failure)) {}
+  explicit NullDevice(std::string failure = {})
+    : failure_(std::move(failure))
+  {
+  }
 
   std::string name() const override { return "null"; }
   bool open() override;
