@@ -1,0 +1,124 @@
+// Every damaged file gives an error naming its line and an empty output.
+#include "GocadTestUtilities.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using gocadtest::Read;
+using gocadtest::WriteText;
+
+namespace
+{
+struct BadFile
+{
+  const char* Name;
+  std::string Content;
+  const char* Expected; // must appear in the error message
+};
+
+// Names the case in test names and messages instead of dumping the struct's bytes.
+void PrintTo(const BadFile& bad, std::ostream* os)
+{
+  *os << bad.Name;
+}
+
+std::string WithVertex(const std::string& vertexLine)
+{
+  return "GOCAD TSurf 1\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\n" + vertexLine +
+    "\nTRGL 1 2 3\nEND\n";
+}
+
+std::string BinaryJunk()
+{
+  std::mt19937 random(42);
+  std::string junk;
+  for (int i = 0; i < 4096; ++i)
+    junk += static_cast<char>(random() & 0xff);
+  return junk;
+}
+
+std::vector<BadFile> BadFiles()
+{
+  return {
+    { "UnknownVertexInTrgl",
+      "GOCAD TSurf 1\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\n"
+      "TRGL 1 2 9\nEND\n",
+      "line 7: TRGL refers to unknown vertex id 9" },
+    { "NanCoordinate", WithVertex("VRTX 3 0 nan 0"), "line 5: non-finite coordinate 'nan'" },
+    { "InfCoordinate", WithVertex("VRTX 3 inf 0 0"), "line 5: non-finite coordinate 'inf'" },
+    { "MinusInfinityCoordinate", WithVertex("VRTX 3 0 0 -Infinity"), "line 5: non-finite" },
+    { "WindowsInfCoordinate", WithVertex("VRTX 3 1.#INF 0 0"),
+      "line 5: non-numeric coordinate '1.#INF'" },
+    { "OverflowingCoordinate", WithVertex("VRTX 3 1e999 0 0"), "line 5: non-numeric" },
+    { "NonNumericCoordinate", WithVertex("VRTX 3 12a.5 0 0"),
+      "line 5: non-numeric coordinate '12a.5'" },
+    { "NonIntegerVertexId", WithVertex("VRTX 3.5 0 1 0"), "line 5: vertex id '3.5'" },
+    { "MissingCoordinate", WithVertex("VRTX 3 0 1"), "line 5: VRTX needs an id and three" },
+    { "DuplicateVertexId", WithVertex("VRTX 2 0 1 0"), "line 5: vertex id 2 is defined twice" },
+    { "AtomToUnknownVertex", WithVertex("ATOM 3 7"), "line 5: ATOM 3 refers to unknown vertex" },
+    { "PvrtxWithTooFewValues",
+      "GOCAD TSurf 1\nPROPERTIES a b\nPVRTX 1 0 0 0 1\nEND\n",
+      "line 3: PVRTX needs 2 property values, found 1" },
+    { "EsizesForOtherProperties",
+      "GOCAD TSurf 1\nPROPERTIES a b\nESIZES 1\nPVRTX 1 0 0 0 1 2\nEND\n",
+      "line 4: ESIZES gives 1 sizes for 2 PROPERTIES" },
+    { "TruncatedWithoutEnd",
+      "GOCAD TSurf 1\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\n",
+      "line 6: unexpected end of file" },
+    { "TruncatedInsideALine", "GOCAD TSurf 1\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1",
+      "line 5: VRTX needs" },
+    { "TruncatedInsideANumber", "GOCAD TSurf 1\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 1.5e",
+      "line 4: non-numeric coordinate '1.5e'" },
+    { "TruncatedInsideTheHeader", "GOCAD TSurf 1\nHEADER {\nname:cut", "line 3: unexpected end" },
+    { "NextObjectBeforeEnd", "GOCAD TSurf 1\nVRTX 1 0 0 0\nGOCAD TSurf 1\nEND\n",
+      "line 3: new GOCAD object before the END" },
+    { "EmptyFile", "", "line 1: the file is empty" },
+    { "OnlyComments", "# nothing here\n\n", "line 2: no 'GOCAD TSurf' object" },
+    { "NotATSurf", "solid cube\nfacet normal 0 0 1\n", "line 1: expected 'GOCAD TSurf'" },
+    { "BinaryJunk", BinaryJunk(), "binary data" },
+    { "NulInsideAValidFile", WithVertex(std::string("VRTX 3 0 1 0\0", 13)), "line 5: binary" },
+    { "BadZPositive", "GOCAD TSurf 1\nZPOSITIVE Up\nEND\n", "line 2: ZPOSITIVE must be" },
+  };
+}
+
+class GocadTSurfBadFile : public ::testing::TestWithParam<BadFile>
+{
+};
+}
+
+TEST_P(GocadTSurfBadFile, GivesAnErrorNamingTheLineAndAnEmptyOutput)
+{
+  const BadFile& bad = GetParam();
+  const auto r = Read(WriteText(std::string("bad_") + bad.Name + ".ts", bad.Content));
+  EXPECT_NE(r.Errors.find("line"), std::string::npos) << r.Errors;
+  EXPECT_NE(r.Errors.find(bad.Expected), std::string::npos) << r.Errors;
+  EXPECT_EQ(r.Output->GetNumberOfPoints(), 0);
+  EXPECT_EQ(r.Output->GetNumberOfCells(), 0);
+  EXPECT_EQ(r.Output->GetPointData()->GetNumberOfArrays(), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Reader, GocadTSurfBadFile, ::testing::ValuesIn(BadFiles()),
+  [](const ::testing::TestParamInfo<BadFile>& info) { return std::string(info.param.Name); });
+
+TEST(GocadTSurfReader, MissingFileGivesAnErrorAndAnEmptyOutput)
+{
+  const auto r = Read(gocadtest::WorkPath("does_not_exist.ts"));
+  EXPECT_NE(r.Errors.find("Cannot open"), std::string::npos) << r.Errors;
+  EXPECT_NE(r.Errors.find("line"), std::string::npos) << r.Errors;
+  EXPECT_EQ(r.Output->GetNumberOfPoints(), 0);
+}
+
+TEST(GocadTSurfReader, AGoodFileAfterABadOneReadsNormally)
+{
+  vtkNew<vtkGocadTSurfReader> reader;
+  vtkNew<gocadtest::MessageCapture> capture;
+  capture->Watch(reader);
+  reader->SetFileName(WriteText("bad_then.ts", "GOCAD TSurf 1\nVRTX 1 0 0 nan\nEND\n").c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  reader->SetFileName(WriteText("good_now.ts", WithVertex("VRTX 3 0 1 0")).c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 3);
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPolys(), 1);
+}
