@@ -230,7 +230,9 @@ TEST(ForceModel, ForceNeverExceedsTheMaximumAndIsNeverNaNOverRandomInputs)
     ASSERT_TRUE(r.force.allFinite()) << "sample " << i;
     ASSERT_LE(r.force.norm(), limits.max_force * (1 + 1e-12)) << "sample " << i;
     if (r.status != ForceStatus::ok)
+    {
       ASSERT_EQ(r.force, Eigen::Vector3d::Zero()) << "sample " << i;
+    }
     rendered += r.force != Eigen::Vector3d::Zero();
   }
   // The sweep must exercise real forces, not only faults.
