@@ -256,6 +256,7 @@ PaintReport Painter::paint(
     reach(dabs[i], mode, reach_);
     apply_dab(dabs[i], falloff, reach_, malleability);
     ++report.applied;
+    report.painted += reach_.vertices.size();
   }
   return report;
 }

@@ -201,11 +201,13 @@ std::vector<Dab> fault_step_painting(const FaultStepParams& p, double border)
         out.push_back(d);
       }
   };
+  // Pitches well under the radii keep the scallops between neighbouring spheres
+  // (their sagitta) below a tenth of the spacing.
   const double black = 2.0 * p.spacing; // reaches past the rows next to the step
   std::vector<Dab> dabs;
   if (border > 0.0)
-    dabs_on_step(black + border, border, 1.0, dabs);
-  dabs_on_step(black, black, 0.0, dabs);
+    dabs_on_step(black + border, 3.0 * p.spacing, 1.0, dabs);
+  dabs_on_step(black, p.spacing, 0.0, dabs);
   return dabs;
 }
 

@@ -116,6 +116,7 @@ PointQueries brute_force_queries(const double* xyz, index_t n);
 struct PaintReport
 {
   std::size_t applied = 0;
+  std::size_t painted = 0; // vertex values written (a vertex under two dabs counts twice)
   std::vector<std::pair<std::size_t, std::string>> rejected; // (dab index, reason)
 };
 

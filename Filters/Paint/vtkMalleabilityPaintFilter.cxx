@@ -1,0 +1,267 @@
+#include "vtkMalleabilityPaintFilter.h"
+
+#include "vtkFloatArray.h"
+#include "vtkGeoShapingAdapter.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
+#include "vtkStaticPointLocator.h"
+
+#include "geoshaping/brush.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkMalleabilityPaintFilter);
+
+struct vtkMalleabilityPaintFilter::vtkInternals
+{
+  std::vector<geoshaping::Dab> Dabs;
+
+  // Geometry the locator, points and adjacency were built from.
+  vtkPoints* GeometryPoints = nullptr;
+  vtkIdType GeometrySize = -1;
+  vtkMTimeType GeometryTime = 0;
+  bool GeometryValid = false;
+  std::vector<double> Xyz;
+  vtkSmartPointer<vtkStaticPointLocator> Locator;
+  bool AdjacencyValid = false;
+  geoshaping::Adjacency Adjacency;
+
+  // Rebuilds what depends on the geometry when it changed; false on bad points.
+  bool Update(vtkPointSet* input, vtkMalleabilityPaintFilter* self);
+  geoshaping::PointQueries Queries();
+};
+
+bool vtkMalleabilityPaintFilter::vtkInternals::Update(
+  vtkPointSet* input, vtkMalleabilityPaintFilter* self)
+{
+  vtkPoints* points = input->GetPoints();
+  const vtkMTimeType time = vtkGeoShapingAdapter::GeometryTime(input);
+  if (this->GeometryPoints == points && this->GeometrySize == input->GetNumberOfPoints() &&
+    this->GeometryTime == time && this->Locator)
+  {
+    return this->GeometryValid;
+  }
+  this->GeometryPoints = points;
+  this->GeometrySize = input->GetNumberOfPoints();
+  this->GeometryTime = time;
+  this->AdjacencyValid = false;
+  this->Adjacency = {};
+  vtkIdType firstBad;
+  const vtkIdType bad = vtkGeoShapingAdapter::PointsAsDouble(points, this->Xyz, firstBad);
+  this->GeometryValid = bad == 0;
+  if (bad > 0)
+  {
+    vtkErrorWithObjectMacro(self, "Input has " << bad
+                                               << " non-finite point coordinates (first at point "
+                                               << firstBad << "); no dab is applied.");
+  }
+  this->Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+  if (this->GeometryValid)
+  {
+    this->Locator->SetDataSet(input);
+    this->Locator->BuildLocator();
+  }
+  ++self->NumberOfRebuilds;
+  return this->GeometryValid;
+}
+
+geoshaping::PointQueries vtkMalleabilityPaintFilter::vtkInternals::Queries()
+{
+  vtkStaticPointLocator* locator = this->Locator;
+  geoshaping::PointQueries q;
+  q.nearest = [locator](const Eigen::Vector3d& p) {
+    return geoshaping::index_t(locator->FindClosestPoint(p.data()));
+  };
+  auto found = vtkSmartPointer<vtkIdList>::New();
+  q.within = [locator, found](const Eigen::Vector3d& p, double r, std::vector<geoshaping::index_t>& ids) {
+    // A hair wider than asked: the core keeps exactly those within r by its own test.
+    locator->FindPointsWithinRadius(r * (1.0 + 1e-9), p.data(), found);
+    ids.assign(found->begin(), found->end());
+  };
+  return q;
+}
+
+vtkMalleabilityPaintFilter::vtkMalleabilityPaintFilter()
+  : Internals(new vtkInternals)
+{
+  this->SetMalleabilityArrayName("Malleability");
+}
+
+vtkMalleabilityPaintFilter::~vtkMalleabilityPaintFilter()
+{
+  this->SetMalleabilityArrayName(nullptr);
+}
+
+void vtkMalleabilityPaintFilter::AddDab(
+  double x, double y, double z, double radius, double value, double strength)
+{
+  geoshaping::Dab d;
+  d.center = Eigen::Vector3d(x, y, z);
+  d.radius = radius;
+  d.value = value;
+  d.strength = strength;
+  this->Internals->Dabs.push_back(d);
+  this->Modified();
+}
+
+void vtkMalleabilityPaintFilter::RemoveAllDabs()
+{
+  if (!this->Internals->Dabs.empty())
+  {
+    this->Internals->Dabs.clear();
+    this->Modified();
+  }
+}
+
+int vtkMalleabilityPaintFilter::GetNumberOfDabs()
+{
+  return static_cast<int>(this->Internals->Dabs.size());
+}
+
+bool vtkMalleabilityPaintFilter::GetDab(int i, double dab[6])
+{
+  if (i < 0 || i >= this->GetNumberOfDabs())
+    return false;
+  const geoshaping::Dab& d = this->Internals->Dabs[std::size_t(i)];
+  const double values[6] = { d.center.x(), d.center.y(), d.center.z(), d.radius, d.value,
+    d.strength };
+  std::copy(values, values + 6, dab);
+  return true;
+}
+
+int vtkMalleabilityPaintFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPointSet* output = vtkPointSet::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Input and output must be vtkPointSet.");
+    return 0;
+  }
+  output->ShallowCopy(input);
+  this->NumberOfAppliedDabs = 0;
+  this->NumberOfRejectedDabs = 0;
+  this->NumberOfPaintedValues = 0;
+  this->LastPaintMilliseconds = 0.0;
+  const char* name = this->MalleabilityArrayName ? this->MalleabilityArrayName : "";
+  if (!*name)
+  {
+    vtkErrorMacro("MalleabilityArrayName is empty; output is the input.");
+    return 1;
+  }
+  const vtkIdType n = input->GetNumberOfPoints();
+  if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
+  {
+    vtkErrorMacro("Input has " << n << " points; painting supports at most 2^31 - 1.");
+    return 1;
+  }
+
+  // The array to paint: a clamped float copy of the input's, or InitialMalleability.
+  vtkNew<vtkFloatArray> malleability;
+  malleability->SetName(name);
+  malleability->SetNumberOfTuples(n);
+  vtkDataArray* source = input->GetPointData()->GetArray(name);
+  if (source && source->GetNumberOfComponents() != 1)
+  {
+    vtkWarningMacro("Point array '" << name << "' has " << source->GetNumberOfComponents()
+                                    << " components; it is replaced by InitialMalleability.");
+    source = nullptr;
+  }
+  float* m = malleability->GetPointer(0);
+  if (source)
+  {
+    vtkIdType clamped = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double v = source->GetComponent(i, 0);
+      const double c = std::isnan(v) ? 0.0 : std::min(std::max(v, 0.0), 1.0);
+      clamped += c != v;
+      m[i] = static_cast<float>(c);
+    }
+    if (clamped > 0)
+    {
+      vtkWarningMacro(<< clamped << " values of '" << name
+                      << "' are outside [0, 1] or NaN; they were clamped (NaN reads as 0).");
+    }
+  }
+  else
+  {
+    malleability->Fill(this->InitialMalleability);
+  }
+  output->GetPointData()->AddArray(malleability);
+  output->GetPointData()->SetActiveScalars(name);
+
+  vtkInternals& in = *this->Internals;
+  if (n == 0 || in.Dabs.empty() || !in.Update(input, this))
+  {
+    return 1;
+  }
+  const auto mode = static_cast<geoshaping::DistanceMode>(this->DistanceMode);
+  if (mode == geoshaping::DistanceMode::geodesic && !in.AdjacencyValid)
+  {
+    vtkIdType skipped = 0;
+    in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
+    in.AdjacencyValid = true;
+    if (skipped > 0)
+    {
+      vtkWarningMacro(<< skipped << " cells are of an unsupported type or have invalid point "
+                                    "ids; geodesic paths do not follow their edges.");
+    }
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  geoshaping::Painter painter(in.Xyz.data(), geoshaping::index_t(n), &in.Adjacency, in.Queries());
+  const geoshaping::PaintReport report =
+    painter.paint(in.Dabs, static_cast<geoshaping::Falloff>(this->Falloff), mode, m);
+  this->LastPaintMilliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  this->NumberOfAppliedDabs = static_cast<int>(report.applied);
+  this->NumberOfRejectedDabs = static_cast<int>(report.rejected.size());
+  this->NumberOfPaintedValues = static_cast<vtkIdType>(report.painted);
+  if (!report.rejected.empty())
+  {
+    std::ostringstream msg;
+    msg << report.rejected.size() << " of " << in.Dabs.size()
+        << " dabs were skipped (the others are applied):";
+    const std::size_t shown = std::min<std::size_t>(report.rejected.size(), 10);
+    for (std::size_t i = 0; i < shown; ++i)
+    {
+      const geoshaping::Dab& d = in.Dabs[report.rejected[i].first];
+      msg << "\n  dab " << report.rejected[i].first << " (" << d.center.x() << " "
+          << d.center.y() << " " << d.center.z() << " " << d.radius << " " << d.value << " "
+          << d.strength << "): " << report.rejected[i].second;
+    }
+    if (shown < report.rejected.size())
+      msg << "\n  ...";
+    vtkErrorMacro(<< msg.str());
+  }
+  malleability->Modified();
+  return 1;
+}
+
+void vtkMalleabilityPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MalleabilityArrayName: "
+     << (this->MalleabilityArrayName ? this->MalleabilityArrayName : "(none)") << "\n";
+  os << indent << "InitialMalleability: " << this->InitialMalleability << "\n";
+  os << indent << "NumberOfDabs: " << this->Internals->Dabs.size() << "\n";
+  os << indent << "Falloff: "
+     << geoshaping::falloff_name(static_cast<geoshaping::Falloff>(this->Falloff)) << "\n";
+  os << indent << "DistanceMode: "
+     << geoshaping::distance_mode_name(static_cast<geoshaping::DistanceMode>(this->DistanceMode))
+     << "\n";
+  os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";
+}

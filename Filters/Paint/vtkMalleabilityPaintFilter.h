@@ -1,0 +1,130 @@
+/**
+ * @class   vtkMalleabilityPaintFilter
+ * @brief   Paint malleability (0 rigid ... 1 soft) on a surface or volume mesh with a
+ *          list of brush dabs.
+ *
+ * The output is the input with a float point array (`Malleability` by default, see
+ * MalleabilityArrayName) in [0, 1]: a copy of the input's array of that name when it
+ * has one (values clamped to [0, 1], NaN read as 0, with a warning), otherwise
+ * InitialMalleability everywhere; the input's array is never modified. The array is
+ * made the active scalars so that a mapper colours by it.
+ *
+ * Each dab (x y z radius value strength) is applied in order: a vertex at distance d
+ * from the dab's centre with d <= radius moves toward `value`,
+ *
+ *   m += strength * falloff(d / radius) * (value - m),
+ *
+ * with Falloff CONSTANT, LINEAR, SMOOTH or GAUSSIAN (see geoshaping/brush.h). Distance
+ * is EUCLIDEAN (a sphere, found with a vtkStaticPointLocator) or GEODESIC (the path
+ * along cell edges from the vertex nearest the centre, bounded by the radius), so a
+ * brush on one side of a fault gap or a tight fold does not paint the other side. A dab
+ * costs time in proportion to the vertices under it; the locator and the adjacency are
+ * built once per geometry. The result is deterministic: the same input and dabs give a
+ * bit-identical array, so a ParaView state file or a script reproduces the painting.
+ *
+ * A bad dab (a non-finite number, a negative radius, value or strength outside [0, 1])
+ * is skipped with an error naming it; the other dabs are applied as if it were absent.
+ * In parallel each process paints its own points: Euclidean painting is exact, geodesic
+ * paths stop at the boundary of the local piece.
+ */
+#ifndef vtkMalleabilityPaintFilter_h
+#define vtkMalleabilityPaintFilter_h
+
+#include "GeoShapingFiltersPaintModule.h" // For export macro
+#include "vtkPointSetAlgorithm.h"
+
+#include <memory> // For std::unique_ptr
+
+class GEOSHAPINGFILTERSPAINT_EXPORT vtkMalleabilityPaintFilter : public vtkPointSetAlgorithm
+{
+public:
+  static vtkMalleabilityPaintFilter* New();
+  vtkTypeMacro(vtkMalleabilityPaintFilter, vtkPointSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Falloffs
+  {
+    CONSTANT = 0,
+    LINEAR = 1,
+    SMOOTH = 2,
+    GAUSSIAN = 3
+  };
+  enum DistanceModes
+  {
+    EUCLIDEAN = 0,
+    GEODESIC = 1
+  };
+
+  ///@{
+  /// Name of the output point array. Default "Malleability".
+  vtkSetStringMacro(MalleabilityArrayName);
+  vtkGetStringMacro(MalleabilityArrayName);
+  ///@}
+
+  ///@{
+  /// Value of the array when the input has none. Default 0.5.
+  vtkSetClampMacro(InitialMalleability, double, 0.0, 1.0);
+  vtkGetMacro(InitialMalleability, double);
+  ///@}
+
+  ///@{
+  /// The dabs, applied in the order they were added.
+  void AddDab(double x, double y, double z, double radius, double value, double strength);
+  void RemoveAllDabs();
+  int GetNumberOfDabs();
+  /// Six doubles: x y z radius value strength. False when `i` is out of range.
+  bool GetDab(int i, double dab[6]);
+  ///@}
+
+  ///@{
+  /// Weight across the brush: CONSTANT, LINEAR, SMOOTH (default) or GAUSSIAN.
+  vtkSetClampMacro(Falloff, int, CONSTANT, GAUSSIAN);
+  vtkGetMacro(Falloff, int);
+  ///@}
+
+  ///@{
+  /// EUCLIDEAN (default) or GEODESIC distance from the dab centre.
+  vtkSetClampMacro(DistanceMode, int, EUCLIDEAN, GEODESIC);
+  vtkGetMacro(DistanceMode, int);
+  ///@}
+
+  ///@{
+  /// Figures of the last update: dabs applied and skipped, vertex values written
+  /// (a vertex under two dabs counts twice), and the painting time in milliseconds
+  /// (dabs only, not the array copy).
+  vtkGetMacro(NumberOfAppliedDabs, int);
+  vtkGetMacro(NumberOfRejectedDabs, int);
+  vtkGetMacro(NumberOfPaintedValues, vtkIdType);
+  vtkGetMacro(LastPaintMilliseconds, double);
+  ///@}
+
+  /// Number of times the point locator and adjacency were (re)built: stays 1 while
+  /// only the dabs or the array change.
+  vtkGetMacro(NumberOfRebuilds, int);
+
+protected:
+  vtkMalleabilityPaintFilter();
+  ~vtkMalleabilityPaintFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* MalleabilityArrayName = nullptr;
+  double InitialMalleability = 0.5;
+  int Falloff = SMOOTH;
+  int DistanceMode = EUCLIDEAN;
+
+  int NumberOfAppliedDabs = 0;
+  int NumberOfRejectedDabs = 0;
+  vtkIdType NumberOfPaintedValues = 0;
+  double LastPaintMilliseconds = 0.0;
+  int NumberOfRebuilds = 0;
+
+private:
+  vtkMalleabilityPaintFilter(const vtkMalleabilityPaintFilter&) = delete;
+  void operator=(const vtkMalleabilityPaintFilter&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,127 @@
+#include "GeoShapingImageTesting.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkFaultStepHorizonSource.h"
+#include "vtkMalleabilityPaintFilter.h"
+#include "vtkNew.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkActor.h"
+
+#include "geoshaping/sample_scenes.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace geoshaping_image_testing
+{
+
+namespace
+{
+// The numbers of the preset's "RGBPoints" list (x r g b ...).
+std::vector<double> PresetPoints()
+{
+  std::ifstream file(GEOSHAPING_PRESET_FILE);
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string json = text.str();
+  const std::size_t key = json.find("\"RGBPoints\"");
+  const std::size_t open = json.find('[', key);
+  const std::size_t close = json.find(']', open);
+  if (key == std::string::npos || open == std::string::npos || close == std::string::npos)
+    throw std::runtime_error("no RGBPoints in " GEOSHAPING_PRESET_FILE);
+  std::vector<double> values;
+  const char* p = json.c_str() + open + 1;
+  const char* end = json.c_str() + close;
+  while (p < end)
+  {
+    char* next;
+    const double v = std::strtod(p, &next);
+    if (next == p)
+      ++p; // a comma or white space
+    else
+    {
+      values.push_back(v);
+      p = next;
+    }
+  }
+  if (values.size() < 8 || values.size() % 4 != 0)
+    throw std::runtime_error("malformed RGBPoints in " GEOSHAPING_PRESET_FILE);
+  return values;
+}
+} // namespace
+
+vtkSmartPointer<vtkColorTransferFunction> MalleabilityColors()
+{
+  auto colors = vtkSmartPointer<vtkColorTransferFunction>::New();
+  colors->SetColorSpaceToRGB();
+  const std::vector<double> points = PresetPoints();
+  for (std::size_t i = 0; i < points.size(); i += 4)
+    colors->AddRGBPoint(points[i], points[i + 1], points[i + 2], points[i + 3]);
+  colors->SetNanColor(0.0, 0.5, 1.0);
+  return colors;
+}
+
+vtkSmartPointer<vtkAlgorithm> PaintedFaultStep(bool slab)
+{
+  vtkNew<vtkFaultStepHorizonSource> scene;
+  scene->SetOutputMeshType(slab ? vtkFaultStepHorizonSource::SLAB : vtkFaultStepHorizonSource::SURFACE);
+  auto paint = vtkSmartPointer<vtkMalleabilityPaintFilter>::New();
+  paint->SetInputConnection(scene->GetOutputPort());
+  paint->SetInitialMalleability(geoshaping::fault_step_red);
+  paint->SetFalloff(vtkMalleabilityPaintFilter::CONSTANT);
+  paint->SetDistanceMode(vtkMalleabilityPaintFilter::EUCLIDEAN);
+  for (const geoshaping::Dab& d : geoshaping::fault_step_painting(geoshaping::FaultStepParams{}))
+    paint->AddDab(d.center.x(), d.center.y(), d.center.z(), d.radius, d.value, d.strength);
+  return paint;
+}
+
+vtkSmartPointer<vtkRenderer> SurfaceRenderer(
+  vtkAlgorithm* source, const char* array, vtkColorTransferFunction* colors)
+{
+  vtkNew<vtkDataSetSurfaceFilter> surface; // a no-op pass for polygonal data
+  surface->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(surface->GetOutputPort());
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray(array);
+  mapper->SetLookupTable(colors);
+  mapper->UseLookupTableScalarRangeOn();
+  mapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.35);
+  actor->GetProperty()->SetDiffuse(0.65);
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.55, 0.6, 0.68);
+  return renderer;
+}
+
+void FaultStepCamera(vtkRenderer* renderer)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(50.0, 30.0, 5.0);
+  camera->SetPosition(135.0, -75.0, 85.0);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetViewAngle(30.0);
+  renderer->ResetCameraClippingRange();
+}
+
+vtkSmartPointer<vtkRenderWindow> TestWindow(int width, int height)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);
+  return window;
+}
+
+} // namespace geoshaping_image_testing

@@ -1,0 +1,32 @@
+#pragma once
+// Scenes and colours shared by the GeoShaping image-regression tests.
+#include "vtkSmartPointer.h"
+
+class vtkAlgorithm;
+class vtkColorTransferFunction;
+class vtkRenderWindow;
+class vtkRenderer;
+
+namespace geoshaping_image_testing
+{
+
+// The "Malleability (black-body)" colour map, read from the ParaView preset file that
+// the plugin ships (one definition for ParaView and for these tests). Range 0-1.
+vtkSmartPointer<vtkColorTransferFunction> MalleabilityColors();
+
+// The Figure 5 horizon (default size, spacing 1) painted as in Figure 5C by
+// vtkMalleabilityPaintFilter from the core's dab list; `slab` gives the tetrahedral one.
+vtkSmartPointer<vtkAlgorithm> PaintedFaultStep(bool slab);
+
+// A renderer showing `source`'s output surface coloured by the point array `array`
+// through `colors` (scalar range fixed by the colour map), flat-lit, on a grey background.
+vtkSmartPointer<vtkRenderer> SurfaceRenderer(vtkAlgorithm* source, const char* array,
+  vtkColorTransferFunction* colors);
+
+// The oblique camera used for the fault-step figures.
+void FaultStepCamera(vtkRenderer* renderer);
+
+// An off-screen-sized window for one test image.
+vtkSmartPointer<vtkRenderWindow> TestWindow(int width, int height);
+
+} // namespace geoshaping_image_testing
