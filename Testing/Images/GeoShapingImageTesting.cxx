@@ -1,21 +1,26 @@
 #include "GeoShapingImageTesting.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataSetSurfaceFilter.h"
+#include "vtkImageDifference.h"
 #include "vtkFaultStepHorizonSource.h"
 #include "vtkMalleabilityPaintFilter.h"
 #include "vtkNew.h"
+#include "vtkPNGReader.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
+#include "vtkRegressionTestImage.h"
 #include "vtkRenderer.h"
-#include "vtkActor.h"
+#include "vtkWindowToImageFilter.h"
 
 #include "geoshaping/sample_scenes.h"
 
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -122,6 +127,30 @@ vtkSmartPointer<vtkRenderWindow> TestWindow(int width, int height)
   window->SetSize(width, height);
   window->SetMultiSamples(0);
   return window;
+}
+
+int CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* window)
+{
+  if (vtkRegressionTestImage(window) == vtkTesting::FAILED)
+    return 1;
+  vtkNew<vtkTesting> testing;
+  testing->AddArguments(argc, argv);
+  const std::string baseline = testing->GetValidImageFileName();
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(baseline.c_str());
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->ReadFrontBufferOff();
+  vtkNew<vtkImageDifference> difference;
+  difference->SetInputConnection(capture->GetOutputPort());
+  difference->SetImageConnection(reader->GetOutputPort());
+  difference->SetThreshold(30);
+  difference->AveragingOff();
+  difference->Update();
+  const double error = difference->GetThresholdedError();
+  std::cout << "Colour check against " << baseline << ": thresholded error " << error
+            << " (limit 1)\n";
+  return error > 1.0 ? 1 : 0;
 }
 
 } // namespace geoshaping_image_testing

@@ -4,7 +4,6 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -19,5 +18,5 @@ int TestFigure5C(int argc, char* argv[])
   vtkSmartPointer<vtkRenderWindow> window = TestWindow(480, 360);
   window->AddRenderer(renderer);
   window->Render();
-  return vtkRegressionTestImage(window) == vtkTesting::FAILED;
+  return CompareWithBaseline(argc, argv, window);
 }

@@ -7,7 +7,6 @@
 #include "vtkChainMailDeformationFilter.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkNew.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -32,5 +31,5 @@ int TestFigure5D(int argc, char* argv[])
   vtkSmartPointer<vtkRenderWindow> window = TestWindow(480, 360);
   window->AddRenderer(renderer);
   window->Render();
-  return vtkRegressionTestImage(window) == vtkTesting::FAILED;
+  return CompareWithBaseline(argc, argv, window);
 }

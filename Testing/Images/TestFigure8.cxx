@@ -13,7 +13,6 @@
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTriangleFilter.h"
@@ -73,5 +72,5 @@ int TestFigure8(int argc, char* argv[])
     window->AddRenderer(renderer);
   }
   window->Render();
-  return vtkRegressionTestImage(window) == vtkTesting::FAILED;
+  return geoshaping_image_testing::CompareWithBaseline(argc, argv, window);
 }

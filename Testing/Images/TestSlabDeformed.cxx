@@ -6,7 +6,6 @@
 #include "vtkChainMailDeformationFilter.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkNew.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -30,5 +29,5 @@ int TestSlabDeformed(int argc, char* argv[])
   vtkSmartPointer<vtkRenderWindow> window = TestWindow(480, 360);
   window->AddRenderer(renderer);
   window->Render();
-  return vtkRegressionTestImage(window) == vtkTesting::FAILED;
+  return CompareWithBaseline(argc, argv, window);
 }
