@@ -60,6 +60,14 @@ vtkSmartPointer<vtkPolyData> UtmSurface(int n)
   return surface;
 }
 
+void ExpectRefused(vtkPolyData* surface, const std::string& name, const std::string& message)
+{
+  std::string errors;
+  const std::string path = gocadtest::Write(surface, name, &errors);
+  EXPECT_NE(errors.find(message), std::string::npos) << errors;
+  EXPECT_FALSE(std::filesystem::exists(path)) << "nothing is written";
+}
+
 std::string ReadAll(const std::string& path)
 {
   std::ostringstream text;
@@ -129,20 +137,14 @@ TEST(GocadTSurfWriter, RefusesPolygonsThatAreNotTriangles)
   auto surface = UtmSurface(3);
   const vtkIdType quad[4] = { 0, 1, 4, 3 };
   surface->GetPolys()->InsertNextCell(4, quad);
-  std::string errors;
-  const std::string path = gocadtest::Write(surface, "quad.ts", &errors);
-  EXPECT_NE(errors.find("Cell 8 has 4 points"), std::string::npos) << errors;
-  EXPECT_FALSE(std::filesystem::exists(path));
+  ExpectRefused(surface, "quad.ts", "Cell 8 has 4 points");
 }
 
 TEST(GocadTSurfWriter, RefusesNonFiniteCoordinates)
 {
   auto surface = UtmSurface(3);
   surface->GetPoints()->SetPoint(2, 0.0, std::nan(""), 0.0);
-  std::string errors;
-  const std::string path = gocadtest::Write(surface, "nanpoint.ts", &errors);
-  EXPECT_NE(errors.find("Point 2 has a non-finite coordinate"), std::string::npos) << errors;
-  EXPECT_FALSE(std::filesystem::exists(path));
+  ExpectRefused(surface, "nanpoint.ts", "Point 2 has a non-finite coordinate");
 }
 
 TEST(GocadTSurfWriter, ReportsAnUnwritableFile)
