@@ -37,7 +37,10 @@ void PaintThousandDabs(benchmark::State& state)
   std::mt19937 random(42);
   std::uniform_real_distribution<double> x(0.0, 984.0), y(0.0, 999.0);
   for (int i = 0; i < 1000; ++i)
-    paint->AddDab(x(random), y(random), 10.0, 5.0, (i % 2) ? 1.0 : 0.0, 0.5);
+  {
+    const double cx = x(random); // on the upper (z = 20) or lower (z = 0) side of the step
+    paint->AddDab(cx, y(random), cx < 492.0 ? 20.0 : 0.0, 5.0, (i % 2) ? 1.0 : 0.0, 0.5);
+  }
   paint->Update(); // builds the locator (and adjacency) once
   double total = 0.0;
   for (auto _ : state)
