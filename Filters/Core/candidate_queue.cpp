@@ -35,61 +35,11 @@ bool parse_queue_name(const char* name, QueueKind& kind)
   return false;
 }
 
-bool HeapPriorityQueue::pop(Candidate& out)
-{
-  if (heap_.empty())
-    return false;
-  out = heap_.top().c;
-  heap_.pop();
-  return true;
-}
-
-bool MaxViolationQueue::pop(Candidate& out)
-{
-  if (heap_.empty())
-    return false;
-  out = heap_.top().c;
-  heap_.pop();
-  return true;
-}
-
 void BucketFifoPriorityQueue::reset_ranks(index_t num_ranks)
 {
   head_.assign(std::size_t(num_ranks), -1);
   tail_.assign(std::size_t(num_ranks), -1);
   clear();
-}
-
-void BucketFifoPriorityQueue::push(Candidate c, index_t rank, double)
-{
-  const index_t node = index_t(pool_.size());
-  pool_.push_back({ c, -1 });
-  if (head_[rank] < 0)
-  {
-    head_[rank] = node;
-    active_.push(rank);
-  }
-  else
-  {
-    pool_[tail_[rank]].next = node;
-  }
-  tail_[rank] = node;
-}
-
-bool BucketFifoPriorityQueue::pop(Candidate& out)
-{
-  if (active_.empty())
-    return false;
-  const index_t rank = active_.top();
-  const index_t node = head_[rank];
-  out = pool_[node].c;
-  head_[rank] = pool_[node].next;
-  if (head_[rank] < 0)
-  {
-    tail_[rank] = -1;
-    active_.pop();
-  }
-  return true;
 }
 
 void BucketFifoPriorityQueue::clear()

@@ -23,12 +23,13 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
     first = false;
   }
   origin_ = 0.5 * (lo + hi);
-  rest_.resize(std::size_t(n));
+  state_.resize(std::size_t(n));
   for (index_t v = 0; v < n; ++v)
-    rest_[v] = Eigen::Vector3d(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]) - origin_;
-  disp_.assign(std::size_t(n), Eigen::Vector3d::Zero());
-  stamp_.assign(std::size_t(n), 0);
-  sponsor_.assign(std::size_t(n), -1);
+  {
+    state_[v].rest = Eigen::Vector3d(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]) - origin_;
+    state_[v].disp.setZero();
+  }
+  tags_.assign(std::size_t(n), VertexTag{ 0, 0, 0.0f, -1 });
   pinned_.clear();
   frame_ = 0;
   moved_.clear();
@@ -38,51 +39,48 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
 
 namespace
 {
-template <class T>
-std::size_t sanitize(const T* m, std::vector<float>& out)
+double sanitize(double x)
 {
-  std::size_t bad = 0;
-  for (std::size_t v = 0; v < out.size(); ++v)
-  {
-    const double x = double(m[v]);
-    const double c = std::isnan(x) ? 0.0 : std::clamp(x, 0.0, 1.0);
-    bad += (c != x);
-    out[v] = float(c);
-  }
-  return bad;
+  return std::isnan(x) ? 0.0 : std::clamp(x, 0.0, 1.0);
 }
 } // namespace
 
-std::size_t ChainMailDeformer::set_malleability(const float* m)
+template <class T>
+std::size_t ChainMailDeformer::assign_malleability(const T* m)
 {
-  const std::size_t bad = sanitize(m, malleability_);
+  std::size_t bad = 0;
+  for (std::size_t v = 0; v < tags_.size(); ++v)
+  {
+    const double x = double(m[v]);
+    const double c = sanitize(x);
+    bad += (c != x);
+    tags_[v].malleability = float(c);
+  }
   rebuild_ranks();
   return bad;
 }
 
-std::size_t ChainMailDeformer::set_malleability(const double* m)
-{
-  const std::size_t bad = sanitize(m, malleability_);
-  rebuild_ranks();
-  return bad;
-}
+std::size_t ChainMailDeformer::set_malleability(const float* m) { return assign_malleability(m); }
+
+std::size_t ChainMailDeformer::set_malleability(const double* m) { return assign_malleability(m); }
 
 void ChainMailDeformer::set_uniform_malleability(double m)
 {
-  const double c = std::isnan(m) ? 0.0 : std::clamp(m, 0.0, 1.0);
-  malleability_.assign(rest_.size(), float(c));
+  for (VertexTag& t : tags_)
+    t.malleability = float(sanitize(m));
   rebuild_ranks();
 }
 
 void ChainMailDeformer::rebuild_ranks()
 {
-  std::vector<float> distinct(malleability_);
+  std::vector<float> distinct(tags_.size());
+  for (std::size_t v = 0; v < tags_.size(); ++v)
+    distinct[v] = tags_[v].malleability;
   std::sort(distinct.begin(), distinct.end());
   distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
-  rank_.resize(malleability_.size());
-  for (std::size_t v = 0; v < malleability_.size(); ++v)
-    rank_[v] = index_t(
-      std::lower_bound(distinct.begin(), distinct.end(), malleability_[v]) - distinct.begin());
+  for (VertexTag& t : tags_)
+    t.rank = index_t(
+      std::lower_bound(distinct.begin(), distinct.end(), t.malleability) - distinct.begin());
   num_ranks_ = std::max<index_t>(1, index_t(distinct.size()));
   buckets_.reset_ranks(num_ranks_);
 }
@@ -94,18 +92,19 @@ void ChainMailDeformer::set_pinned(const std::uint8_t* mask)
     pinned_.clear();
     return;
   }
-  pinned_.assign(mask, mask + rest_.size());
+  pinned_.assign(mask, mask + state_.size());
 }
 
 void ChainMailDeformer::reset()
 {
   for (index_t v : moved_)
-    disp_[v].setZero();
+    state_[v].disp.setZero();
   previously_moved_.swap(moved_);
   moved_.clear();
   if (++frame_ == 0) // wrapped: stale stamps could alias the new frame
   {
-    std::fill(stamp_.begin(), stamp_.end(), 0);
+    for (VertexTag& t : tags_)
+      t.stamp = 0;
     frame_ = 1;
   }
 }
@@ -125,7 +124,7 @@ FrameResult ChainMailDeformer::deform(index_t grasp, const Eigen::Vector3d& disp
     result.message = "displacement is not finite";
     return result;
   }
-  if (!rest_[grasp].allFinite())
+  if (!state_[grasp].rest.allFinite())
   {
     result.message = "grasp vertex has a non-finite rest position";
     return result;
@@ -135,9 +134,9 @@ FrameResult ChainMailDeformer::deform(index_t grasp, const Eigen::Vector3d& disp
     result.message = "grasp vertex " + std::to_string(grasp) + " is pinned";
     return result;
   }
-  disp_[grasp] = displacement;
-  stamp_[grasp] = frame_;
-  sponsor_[grasp] = -1;
+  state_[grasp].disp = displacement;
+  tags_[grasp].stamp = frame_;
+  tags_[grasp].sponsor = -1;
   moved_.push_back(grasp);
   switch (queue_kind_)
   {
@@ -164,23 +163,24 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
 {
   // Where candidate c must move given sponsor s: the nearest point of the box to its
   // rest position, in displacements u[s] + [lo - o, hi - o] (valid_region.h).
-  auto required_displacement = [&](index_t c, index_t s) -> Eigen::Vector3d {
-    const Eigen::Vector3d o = rest_[c] - rest_[s];
+  auto required_displacement = [&](const VertexState& c, float m, const VertexState& s) {
+    const Eigen::Vector3d o = c.rest - s.rest;
     if (!o.allFinite())
-      return Eigen::Vector3d::Zero();
-    const Box b = displacement_bounds(o, params(c));
-    return Eigen::Vector3d::Zero().cwiseMax(disp_[s] + b.lo).cwiseMin(disp_[s] + b.hi);
+      return Eigen::Vector3d::Zero().eval();
+    const Box b = displacement_bounds(o, transfer_(m));
+    return Eigen::Vector3d::Zero().cwiseMax(s.disp + b.lo).cwiseMin(s.disp + b.hi).eval();
   };
   auto sponsor_neighbours = [&](index_t s) {
     for (const index_t* it = adj_.begin(s); it != adj_.end(s); ++it)
     {
       const index_t c = *it;
-      if (stamp_[c] == frame_ || pinned(c))
+      const VertexTag& tag = tags_[c];
+      if (tag.stamp == frame_ || pinned(c))
         continue;
       double violation = 0.0;
       if constexpr (Queue::needs_violation)
-        violation = required_displacement(c, s).norm();
-      queue.push({ c, s }, rank_[c], violation);
+        violation = required_displacement(state_[c], tag.malleability, state_[s]).norm();
+      queue.push({ c, s }, tag.rank, violation);
     }
   };
 
@@ -190,28 +190,27 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
   while (queue.pop(cand))
   {
     ++result.examined;
-    const index_t c = cand.vertex;
-    if (stamp_[c] == frame_)
+    VertexTag& tag = tags_[cand.vertex];
+    if (tag.stamp == frame_)
       continue;
-    const Eigen::Vector3d target = required_displacement(c, cand.sponsor);
+    VertexState& c = state_[cand.vertex];
+    const Eigen::Vector3d target = required_displacement(c, tag.malleability, state_[cand.sponsor]);
     if (target.isZero(0.0))
       continue;
-    disp_[c] = target;
-    stamp_[c] = frame_;
-    sponsor_[c] = cand.sponsor;
-    moved_.push_back(c);
-    sponsor_neighbours(c);
+    c.disp = target;
+    tag.stamp = frame_;
+    tag.sponsor = cand.sponsor;
+    moved_.push_back(cand.vertex);
+    sponsor_neighbours(cand.vertex);
   }
 }
 
 std::size_t ChainMailDeformer::memory_bytes() const
 {
-  return rest_.capacity() * sizeof(Eigen::Vector3d) + disp_.capacity() * sizeof(Eigen::Vector3d) +
-    malleability_.capacity() * sizeof(float) + rank_.capacity() * sizeof(index_t) +
-    pinned_.capacity() + stamp_.capacity() * sizeof(std::uint32_t) +
-    sponsor_.capacity() * sizeof(index_t) +
-    (moved_.capacity() + previously_moved_.capacity()) * sizeof(index_t) +
-    adj_.offsets.capacity() * sizeof(std::int64_t) + adj_.neighbors.capacity() * sizeof(index_t);
+  return state_.capacity() * sizeof(VertexState) + tags_.capacity() * sizeof(VertexTag) +
+    pinned_.capacity() + (moved_.capacity() + previously_moved_.capacity()) * sizeof(index_t) +
+    adj_.offsets.capacity() * sizeof(std::int64_t) + adj_.neighbors.capacity() * sizeof(index_t) +
+    buckets_.memory_bytes();
 }
 
 } // namespace geoshaping

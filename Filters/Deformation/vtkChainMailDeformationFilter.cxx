@@ -6,6 +6,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkInformationStringKey.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -276,7 +277,12 @@ int vtkChainMailDeformationFilter::RequestData(
     in.MalleabilitySource = malleability;
     in.MalleabilityDefault = this->DefaultMalleability;
   }
-  vtkDataArray* pins = this->GetInputArrayToProcess(1, inputVector);
+  // The pin array is optional: ask for it only when one was named.
+  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
+  vtkDataArray* pins = arrays && arrays->GetNumberOfInformationObjects() > 1 &&
+      arrays->GetInformationObject(1)->Get(vtkDataObject::FIELD_NAME())
+    ? this->GetInputArrayToProcess(1, inputVector)
+    : nullptr;
   if (pins != in.PinSource || (pins && pins->GetMTime() != in.PinTime))
   {
     if (pins)

@@ -60,7 +60,14 @@ class HeapPriorityQueue
 public:
   static constexpr bool needs_violation = false;
   void push(Candidate c, index_t rank, double) { heap_.push({ rank, c }); }
-  bool pop(Candidate& out);
+  bool pop(Candidate& out)
+  {
+    if (heap_.empty())
+      return false;
+    out = heap_.top().c;
+    heap_.pop();
+    return true;
+  }
   void clear() { heap_ = {}; }
 
 private:
@@ -90,9 +97,41 @@ class BucketFifoPriorityQueue
 public:
   static constexpr bool needs_violation = false;
   void reset_ranks(index_t num_ranks);
-  void push(Candidate c, index_t rank, double);
-  bool pop(Candidate& out);
+  void push(Candidate c, index_t rank, double)
+  {
+    const index_t node = index_t(pool_.size());
+    pool_.push_back({ c, -1 });
+    if (head_[rank] < 0)
+    {
+      head_[rank] = node;
+      active_.push(rank);
+    }
+    else
+    {
+      pool_[tail_[rank]].next = node;
+    }
+    tail_[rank] = node;
+  }
+  bool pop(Candidate& out)
+  {
+    if (active_.empty())
+      return false;
+    const index_t rank = active_.top();
+    const index_t node = head_[rank];
+    out = pool_[node].c;
+    head_[rank] = pool_[node].next;
+    if (head_[rank] < 0)
+    {
+      tail_[rank] = -1;
+      active_.pop();
+    }
+    return true;
+  }
   void clear();
+  std::size_t memory_bytes() const
+  {
+    return pool_.capacity() * sizeof(Node) + (head_.capacity() + tail_.capacity()) * sizeof(index_t);
+  }
 
 private:
   struct Node
@@ -112,7 +151,14 @@ class MaxViolationQueue
 public:
   static constexpr bool needs_violation = true;
   void push(Candidate c, index_t, double violation) { heap_.push({ violation, c }); }
-  bool pop(Candidate& out);
+  bool pop(Candidate& out)
+  {
+    if (heap_.empty())
+      return false;
+    out = heap_.top().c;
+    heap_.pop();
+    return true;
+  }
   void clear() { heap_ = {}; }
 
 private:

@@ -50,7 +50,7 @@ public:
   // Rest positions, `n` xyz triples in any frame; the centre of their bounding box
   // becomes the local origin. Resets malleability to `default_malleability`, clears pins.
   void set_mesh(const double* xyz, index_t n, Adjacency adjacency);
-  index_t size() const { return index_t(rest_.size()); }
+  index_t size() const { return index_t(state_.size()); }
   const Adjacency& adjacency() const { return adj_; }
 
   // Per-vertex malleability. Values are clamped to [0, 1]; NaN is treated as 0 (rigid:
@@ -59,7 +59,7 @@ public:
   std::size_t set_malleability(const float* m);
   std::size_t set_malleability(const double* m);
   void set_uniform_malleability(double m);
-  float malleability(index_t v) const { return malleability_[std::size_t(v)]; }
+  float malleability(index_t v) const { return tags_[std::size_t(v)].malleability; }
 
   // Optional mask: non-zero = pinned. Pass nullptr to clear.
   void set_pinned(const std::uint8_t* mask);
@@ -82,14 +82,14 @@ public:
   // mirroring positions can restore them too.
   const std::vector<index_t>& previously_moved() const { return previously_moved_; }
   // Sponsor of a vertex moved in the last frame (-1 for the grasp); undefined otherwise.
-  index_t sponsor(index_t v) const { return sponsor_[std::size_t(v)]; }
-  bool moved_this_frame(index_t v) const { return stamp_[std::size_t(v)] == frame_; }
+  index_t sponsor(index_t v) const { return tags_[std::size_t(v)].sponsor; }
+  bool moved_this_frame(index_t v) const { return tags_[std::size_t(v)].stamp == frame_; }
 
   const Eigen::Vector3d& origin() const { return origin_; }
-  const Eigen::Vector3d& rest_local(index_t v) const { return rest_[std::size_t(v)]; }
-  const Eigen::Vector3d& displacement(index_t v) const { return disp_[std::size_t(v)]; }
+  const Eigen::Vector3d& rest_local(index_t v) const { return state_[std::size_t(v)].rest; }
+  const Eigen::Vector3d& displacement(index_t v) const { return state_[std::size_t(v)].disp; }
   Eigen::Vector3d position(index_t v) const { return origin_ + rest_local(v) + displacement(v); }
-  ChainMailParams params(index_t v) const { return transfer_(malleability_[std::size_t(v)]); }
+  ChainMailParams params(index_t v) const { return transfer_(malleability(v)); }
 
   // Bytes held beyond the input mesh (rest copy, state, adjacency, queue pool).
   std::size_t memory_bytes() const;
@@ -98,17 +98,31 @@ private:
   template <class Queue>
   void propagate(Queue& queue, index_t grasp, FrameResult& result);
   void rebuild_ranks();
+  template <class T>
+  std::size_t assign_malleability(const T* m);
+
+  // Per-vertex data is laid out for the propagation's random access: what a candidate
+  // examination reads sits in one record (rest offset and displacement), and the
+  // bookkeeping (stamp, queue rank, malleability, sponsor) in another.
+  struct VertexState
+  {
+    Eigen::Vector3d rest; // relative to origin_
+    Eigen::Vector3d disp; // zero except for moved_
+  };
+  struct VertexTag
+  {
+    std::uint32_t stamp;   // == frame_ when moved this frame
+    index_t rank;          // index of the malleability among the sorted distinct values
+    float malleability;
+    index_t sponsor;       // valid when moved this frame
+  };
 
   Adjacency adj_;
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
-  std::vector<Eigen::Vector3d> rest_; // relative to origin_
-  std::vector<Eigen::Vector3d> disp_; // zero except for moved_
-  std::vector<float> malleability_;
-  std::vector<index_t> rank_; // index of the malleability among the sorted distinct values
+  std::vector<VertexState> state_;
+  std::vector<VertexTag> tags_;
   index_t num_ranks_ = 1;
   std::vector<std::uint8_t> pinned_;
-  std::vector<std::uint32_t> stamp_; // == frame_ when moved this frame
-  std::vector<index_t> sponsor_;
   std::uint32_t frame_ = 0;
   std::vector<index_t> moved_, previously_moved_;
 

@@ -1,0 +1,23 @@
+#pragma once
+// Scenes for the benchmarks: painted grids and grasps sized to displace a given
+// number of vertices (the paper's Table 1 counts).
+#include "geoshaping/chainmail_deformer.h"
+#include "test_meshes.h"
+
+namespace geoshaping::bench
+{
+
+// A square triangle grid of side `n` with malleability painted in 8 levels
+// (0.3 ... 0.86, smooth bands), so the FIFO Priority queue holds several buckets.
+geoshaping::testing::Mesh painted_grid(index_t n, std::vector<float>& malleability);
+
+// The vertical pull of the centre vertex whose FIFO Priority frame displaces the
+// number of vertices closest to `target` (bisection on the pull); returns the pull.
+double pull_for_count(ChainMailDeformer& d, index_t grasp, std::size_t target);
+
+// A bare breadth-first traversal over the vertices moved in the deformer's last frame:
+// the floor any propagation over that region must pay. Returns vertices visited.
+std::size_t bfs_floor(const ChainMailDeformer& d, index_t grasp, std::vector<std::uint32_t>& mark,
+  std::uint32_t stamp, std::vector<index_t>& queue);
+
+} // namespace geoshaping::bench

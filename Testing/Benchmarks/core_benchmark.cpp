@@ -1,0 +1,100 @@
+// Per-frame cost of the ChainMail core for each candidate queue at the paper's Table 1
+// displaced-vertex counts and at 1,000,000, the bare BFS floor over the same region,
+// and a 1,000-vertex grasp on a 4,000,000-vertex mesh.
+#include "bench_scenes.h"
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+
+using namespace geoshaping;
+
+namespace
+{
+struct Scene
+{
+  std::unique_ptr<ChainMailDeformer> deformer;
+  index_t grasp;
+  double pull;
+};
+
+// Scenes are built once per (mesh side, target) and shared by the queues.
+Scene& scene(index_t side, std::size_t target)
+{
+  static std::map<std::pair<index_t, std::size_t>, Scene> cache;
+  auto it = cache.find({ side, target });
+  if (it != cache.end())
+    return it->second;
+  std::vector<float> m;
+  auto mesh = bench::painted_grid(side, m);
+  auto d = std::make_unique<ChainMailDeformer>();
+  d->set_mesh(mesh.xyz.data(), mesh.size(), std::move(mesh.adjacency));
+  d->set_malleability(m.data());
+  const index_t grasp = (side / 2) * side + side / 2;
+  const double pull = bench::pull_for_count(*d, grasp, target);
+  return cache[{ side, target }] = Scene{ std::move(d), grasp, pull };
+}
+
+index_t side_for(std::size_t target)
+{
+  return target > 100000 ? 1600 : (target > 5000 ? 400 : 2000);
+}
+
+void BM_Frame(benchmark::State& state)
+{
+  const auto queue = static_cast<QueueKind>(state.range(0));
+  const std::size_t target = std::size_t(state.range(1));
+  const index_t side = state.range(2) ? index_t(state.range(2)) : side_for(target);
+  Scene& s = scene(side, target);
+  s.deformer->set_queue(queue);
+  FrameResult r;
+  for (auto _ : state)
+  {
+    r = s.deformer->deform(s.grasp, { 0.0, 0.0, s.pull });
+    benchmark::DoNotOptimize(r.moved);
+  }
+  state.counters["displaced"] = double(r.moved);
+  state.counters["mesh_vertices"] = double(s.deformer->size());
+  state.counters["bytes_per_vertex"] =
+    double(s.deformer->memory_bytes()) / double(s.deformer->size());
+  state.SetLabel(queue_name(queue));
+}
+
+void BM_BfsFloor(benchmark::State& state)
+{
+  const std::size_t target = std::size_t(state.range(1));
+  Scene& s = scene(side_for(target), target);
+  s.deformer->set_queue(QueueKind::fifo_priority);
+  s.deformer->deform(s.grasp, { 0.0, 0.0, s.pull });
+  std::vector<std::uint32_t> mark(std::size_t(s.deformer->size()), 0);
+  std::vector<index_t> queue;
+  std::uint32_t stamp = 0;
+  std::size_t visited = 0;
+  for (auto _ : state)
+  {
+    visited = bench::bfs_floor(*s.deformer, s.grasp, mark, ++stamp, queue);
+    benchmark::DoNotOptimize(visited);
+  }
+  state.counters["displaced"] = double(visited);
+  state.SetLabel("BFS floor");
+}
+
+void TableArgs(benchmark::internal::Benchmark* b)
+{
+  for (int q = 0; q < 4; ++q)
+    for (long n : { 9152L, 14088L, 17289L, 18225L, 29241L, 1000000L })
+      b->Args({ q, n, 0 });
+  // A 1,000-vertex grasp on a 4,000,000-vertex mesh: the frame ignores the mesh size.
+  b->Args({ 2, 1000, 2000 });
+  b->Args({ 2, 1000, 200 });
+}
+} // namespace
+
+BENCHMARK(BM_Frame)->Apply(TableArgs)->Unit(benchmark::kMillisecond)->MinTime(0.2);
+BENCHMARK(BM_BfsFloor)
+  ->ArgsProduct({ { 0 }, { 9152, 14088, 17289, 18225, 29241, 1000000 } })
+  ->Unit(benchmark::kMillisecond)
+  ->MinTime(0.2);
+
+BENCHMARK_MAIN();
