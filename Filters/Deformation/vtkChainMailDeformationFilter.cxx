@@ -18,8 +18,10 @@
 #include "vtkStaticPointLocator.h"
 
 #include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/link_projection.h"
 
 #include <chrono>
+#include <initializer_list>
 #include <vector>
 
 vtkStandardNewMacro(vtkChainMailDeformationFilter);
@@ -41,6 +43,15 @@ struct vtkChainMailDeformationFilter::vtkInternals
   vtkDataArray* PinSource = nullptr;
   vtkMTimeType PinTime = 0;
 
+  // The refinement pass: per-vertex link data (rebuilt when the geometry, malleability,
+  // pins or curves change), the projector's scratch, and the vertices the last pass
+  // moved off the ChainMail result (restored to rest next update, with the moved ones).
+  geoshaping::LinkMesh Links;
+  std::unique_ptr<geoshaping::LinkProjector> Projector;
+  geoshaping::TransferFunction LinksTransfer;
+  std::vector<geoshaping::index_t> Refined;
+  bool Refining = false; // the last update wrote the projector's result
+
   vtkSmartPointer<vtkPoints> OutputPoints;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   bool WarnedParallel = false;
@@ -59,6 +70,21 @@ void SetCurvePoints(geoshaping::Curve& curve, vtkPiecewiseFunction* f)
     f->GetNodeValue(i, node);
     curve.points.emplace_back(node[0], node[1]);
   }
+}
+
+using IdList = std::vector<geoshaping::index_t>;
+using IdLists = std::initializer_list<const IdList*>;
+
+bool SameCurve(const geoshaping::Curve& a, const geoshaping::Curve& b)
+{
+  return a.at_rigid == b.at_rigid && a.at_soft == b.at_soft && a.shape == b.shape &&
+    a.threshold == b.threshold && a.points == b.points;
+}
+
+bool SameTransfer(const geoshaping::TransferFunction& a, const geoshaping::TransferFunction& b)
+{
+  return SameCurve(a.stretch, b.stretch) && SameCurve(a.compression, b.compression) &&
+    SameCurve(a.shear, b.shear) && a.exact_rigid_at_zero == b.exact_rigid_at_zero;
 }
 
 geoshaping::Curve MakeCurve(const double range[2], int shape, double threshold,
@@ -158,7 +184,11 @@ int vtkChainMailDeformationFilter::RequestData(
   this->NumberOfExaminedCandidates = 0;
   this->LastDeformationMilliseconds = 0.0;
   this->LastGraspPointId = -1;
+  this->NumberOfRefinementSweeps = 0;
+  this->NumberOfRefinedPoints = 0;
+  this->LastRefinementMilliseconds = 0.0;
   vtkInternals& in = *this->Internals;
+  in.Refining = false;
 
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   if (controller && controller->GetNumberOfProcesses() > 1)
@@ -201,6 +231,9 @@ int vtkChainMailDeformationFilter::RequestData(
     in.PinSource = nullptr;
     in.MalleabilityDefault = -1.0;
     in.Locator = nullptr;
+    in.Projector.reset();
+    in.Refined.clear();
+    in.Refining = false;
 
     std::vector<double> xyz;
     vtkIdType firstBad;
@@ -276,6 +309,7 @@ int vtkChainMailDeformationFilter::RequestData(
     }
     in.MalleabilitySource = malleability;
     in.MalleabilityDefault = this->DefaultMalleability;
+    in.Projector.reset();
   }
   // The pin array is optional: ask for it only when one was named.
   vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
@@ -298,6 +332,7 @@ int vtkChainMailDeformationFilter::RequestData(
       in.Deformer.set_pinned(nullptr);
     }
     in.PinSource = pins;
+    in.Projector.reset();
   }
 
   // 3. Transfer function and queue, cheap to set every time.
@@ -350,23 +385,37 @@ int vtkChainMailDeformationFilter::RequestData(
       this->NumberOfDisplacedPoints = vtkIdType(r.moved);
       this->NumberOfExaminedCandidates = vtkIdType(r.examined);
       this->LastGraspPointId = r.ok ? grasp : -1;
+      if (r.ok && this->RefinementIterations > 0)
+      {
+        this->Refine(grasp);
+      }
     }
   }
 
-  // 5. Rewrite only the vertices that moved now or last time.
+  // 5. Rewrite only the vertices that moved now or last time (the moved and the refined).
   vtkPoints* outPoints = in.OutputPoints;
   double p[3];
-  for (geoshaping::index_t v : in.Deformer.previously_moved())
+  for (const IdList* restore : IdLists{ &in.Deformer.previously_moved(), &in.Refined })
+    for (geoshaping::index_t v : *restore)
+    {
+      inPoints->GetPoint(v, p);
+      outPoints->SetPoint(v, p);
+    }
+  in.Refined.clear();
+  if (in.Refining)
   {
-    inPoints->GetPoint(v, p);
-    outPoints->SetPoint(v, p);
+    in.Refined = in.Projector->changed();
   }
-  for (geoshaping::index_t v : in.Deformer.moved())
-  {
-    inPoints->GetPoint(v, p);
-    const Eigen::Vector3d& u = in.Deformer.displacement(v);
-    outPoints->SetPoint(v, p[0] + u.x(), p[1] + u.y(), p[2] + u.z());
-  }
+  const auto finalDisplacement = [&in](geoshaping::index_t v) -> const Eigen::Vector3d& {
+    return in.Refining ? in.Projector->displacement(v) : in.Deformer.displacement(v);
+  };
+  for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined })
+    for (geoshaping::index_t v : *write)
+    {
+      inPoints->GetPoint(v, p);
+      const Eigen::Vector3d& u = finalDisplacement(v);
+      outPoints->SetPoint(v, p[0] + u.x(), p[1] + u.y(), p[2] + u.z());
+    }
   outPoints->Modified();
   output->SetPoints(outPoints);
 
@@ -383,9 +432,13 @@ int vtkChainMailDeformationFilter::RequestData(
     sponsor->Fill(-1);
     for (geoshaping::index_t v : in.Deformer.moved())
     {
-      displacement->SetTuple(v, in.Deformer.displacement(v).data());
       sponsor->SetValue(v, in.Deformer.sponsor(v));
     }
+    for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined })
+      for (geoshaping::index_t v : *write)
+      {
+        displacement->SetTuple(v, finalDisplacement(v).data());
+      }
     output->GetPointData()->AddArray(displacement);
     output->GetPointData()->AddArray(sponsor);
   }
@@ -413,5 +466,26 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ExactRigidAtZero: " << this->ExactRigidAtZero << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "GenerateDiagnostics: " << this->GenerateDiagnostics << "\n";
+  os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";
   os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";
+}
+
+void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
+{
+  vtkInternals& in = *this->Internals;
+  const geoshaping::TransferFunction& tf = in.Deformer.transfer_function();
+  if (!in.Projector || !SameTransfer(tf, in.LinksTransfer))
+  {
+    in.Links = geoshaping::link_mesh(in.Deformer);
+    in.LinksTransfer = tf;
+    in.Projector = std::make_unique<geoshaping::LinkProjector>(in.Links);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const geoshaping::ProjectionReport report =
+    geoshaping::refine_links(*in.Projector, in.Deformer, geoshaping::index_t(grasp), this->RefinementIterations);
+  this->LastRefinementMilliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  this->NumberOfRefinementSweeps = report.iterations;
+  this->NumberOfRefinedPoints = vtkIdType(in.Projector->changed().size());
+  in.Refining = true;
 }
