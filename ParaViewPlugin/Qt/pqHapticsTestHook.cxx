@@ -1,0 +1,137 @@
+#include "pqHapticsTestHook.h"
+
+#include "pqHapticsDockPanel.h"
+#include "pqHapticsPipeline.h"
+
+#include <pqActiveObjects.h>
+#include <pqCoreUtilities.h>
+#include <pqPipelineSource.h>
+#include <pqView.h>
+
+#include <vtkAlgorithm.h>
+#include <vtkPointSet.h>
+#include <vtkSMProxy.h>
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QPixmap>
+#include <QTextStream>
+#include <QTimer>
+
+void pqHapticsTestHook::installIfRequested(pqHapticsDockPanel* dock)
+{
+  const QString trace = qEnvironmentVariable("GEOSHAPING_HAPTICS_REPLAY");
+  if (!trace.isEmpty())
+  {
+    new pqHapticsTestHook(dock, trace, qEnvironmentVariable("GEOSHAPING_HAPTICS_TEST_OUTPUT"));
+  }
+}
+
+pqHapticsTestHook::pqHapticsTestHook(
+  pqHapticsDockPanel* dock, const QString& trace, const QString& output)
+  : QObject(dock)
+  , Dock(dock)
+  , Trace(trace)
+  , Output(output)
+{
+  auto* timer = new QTimer(this);
+  QObject::connect(timer, &QTimer::timeout, this, &pqHapticsTestHook::poll);
+  timer->start(100);
+}
+
+void pqHapticsTestHook::poll()
+{
+  // A test must end: after 45 s write what there is (started/timed_out tell) and quit.
+  if (++this->Polls > 450 && !this->Output.isEmpty())
+  {
+    this->TimedOut = true;
+    this->writeResults();
+    return;
+  }
+  if (!this->Started)
+  {
+    // Wait for the pipeline (the --script that builds it runs after the plugin loads)
+    // and its first render.
+    if (!pqHapticsFindSource("ChainMailDeformation") || !pqActiveObjects::instance().activeView())
+    {
+      return;
+    }
+    this->Dock->setHand(0, pqHapticsInteractor::ReplayFile, this->Trace,
+      geoshaping::interactor::Tool::deform);
+    this->Dock->setHand(1, pqHapticsInteractor::NoDevice, QString(),
+      geoshaping::interactor::Tool::hold_and_turn);
+    this->Started = this->Dock->start();
+    if (!this->Started && !this->Output.isEmpty())
+    {
+      this->writeResults();
+    }
+    return;
+  }
+  // A few frames after the trace is over, so the last sample has been rendered.
+  if (this->Dock->interactor()->replaysFinished() && ++this->FinishedPolls >= 5)
+  {
+    if (!this->Output.isEmpty())
+    {
+      this->writeResults();
+    }
+  }
+}
+
+void pqHapticsTestHook::writeResults()
+{
+  QFile file(this->Output + ".txt");
+  if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+  {
+    qCritical("GeoShaping test hook: cannot write %s", qPrintable(file.fileName()));
+    QCoreApplication::exit(1);
+    return;
+  }
+  QTextStream out(&file);
+  const pqHapticsInteractor* interactor = this->Dock->interactor();
+  const pqHapticsInteractor::Figures& f = interactor->figures();
+  out << "started = " << int(this->Started) << "\n";
+  out << "timed_out = " << int(this->TimedOut) << "\n";
+  out << "dock_visible = " << int(this->Dock->isVisible()) << "\n";
+  out << "dock_title = " << this->Dock->windowTitle() << "\n";
+  out << "frames = " << f.frames << "\n";
+  out << "frames_per_second = " << f.framesPerSecond << "\n";
+  out << "servo_hz = " << f.servoHz[0] << "\n";
+  out << "deformation_ms = " << f.deformationMilliseconds << "\n";
+  out << "displaced_points = " << f.displacedPoints << "\n";
+  const Eigen::Vector3d& d = interactor->lastDisplacement();
+  out << "last_displacement = " << d.x() << " " << d.y() << " " << d.z() << "\n";
+
+  // The deformed output against its input (builtin session: the filter itself).
+  pqPipelineSource* source = pqHapticsFindSource("ChainMailDeformation");
+  auto* filter =
+    source ? vtkAlgorithm::SafeDownCast(source->getProxy()->GetClientSideObject()) : nullptr;
+  auto* input = filter ? vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0)) : nullptr;
+  auto* output = filter ? vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0)) : nullptr;
+  if (input && output && input->GetNumberOfPoints() == output->GetNumberOfPoints())
+  {
+    long long moved = 0;
+    Eigen::Vector3d largest = Eigen::Vector3d::Zero();
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      Eigen::Vector3d a, b;
+      input->GetPoint(i, a.data());
+      output->GetPoint(i, b.data());
+      const Eigen::Vector3d delta = b - a;
+      moved += delta.norm() > 1e-9 ? 1 : 0;
+      largest = delta.norm() > largest.norm() ? delta : largest;
+    }
+    out << "output_points = " << output->GetNumberOfPoints() << "\n";
+    out << "moved_points = " << moved << "\n";
+    out << "max_displacement = " << largest.x() << " " << largest.y() << " " << largest.z()
+        << "\n";
+  }
+  out.flush();
+  pqCoreUtilities::mainWidget()->grab().save(this->Output + ".png");
+  if (pqView* view = pqActiveObjects::instance().activeView())
+  {
+    view->widget()->grab().save(this->Output + "-view.png");
+  }
+  this->Dock->stop();
+  QTimer::singleShot(0, qApp, []() { QCoreApplication::exit(0); });
+  this->deleteLater();
+}

@@ -1,0 +1,100 @@
+"""GUI test (run by pvpython): paraview under xvfb-run loads the GeoShaping plugin, the
+Haptics dock appears, a replayed stylus trace (Data/Traces/grasp_drag.trace) deforms the
+fault-step horizon through the dock's interactor, and the plugin's test hook writes a
+screenshot and figures. Checked here: the dock was shown, the grasped vertex moved by the
+trace's drag mapped through the camera (DESIGN.md section 7), the deformation spread to
+its neighbours, and the screenshot shows the red (malleability 0.4) surface."""
+import math
+import os
+import subprocess
+import sys
+
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_setup_camera import CAMERA  # noqa: E402
+
+WORKSPACE_RADIUS = 0.08  # m, the default DeviceLimits of the replay device
+
+
+def read_trace(path):
+    rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
+    return [(float(r[0]), [float(v) for v in r[1:4]], int(r[8])) for r in rows]
+
+
+def expected_drag(trace_path):
+    """The trace's motion from press to release, device frame -> scene (the mapping of
+    HapticsControl.h, computed independently)."""
+    samples = read_trace(trace_path)
+    held = [s for s in samples if s[2] & 1]
+    press, last = held[0][1], held[-1][1]
+    d = [b - a for a, b in zip(press, last)]
+    pos, foc, up = CAMERA["position"], CAMERA["focal_point"], CAMERA["view_up"]
+    z = [p - f for p, f in zip(pos, foc)]
+    dist = math.sqrt(sum(c * c for c in z))
+    z = [c / dist for c in z]
+    x = [up[1] * z[2] - up[2] * z[1], up[2] * z[0] - up[0] * z[2], up[0] * z[1] - up[1] * z[0]]
+    n = math.sqrt(sum(c * c for c in x))
+    x = [c / n for c in x]
+    y = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]]
+    scale = dist * math.tan(math.radians(CAMERA["view_angle"] / 2)) / WORKSPACE_RADIUS
+    return [scale * (d[0] * x[i] + d[1] * y[i] + d[2] * z[i]) for i in range(3)]
+
+
+def read_results(path):
+    results = {}
+    for line in open(path):
+        key, _, value = line.partition(" = ")
+        results[key.strip()] = value.strip()
+    return results
+
+
+def red_fraction(png):
+    reader = vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    image = reader.GetOutput()
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).astype(int)
+    r, g, b = pixels[:, 0], pixels[:, 1], pixels[:, 2]
+    return float(((r > 90) & (g < 0.45 * r) & (b < 0.45 * r)).mean()), image.GetDimensions()
+
+
+def main():
+    out = os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_replay")
+    for suffix in (".txt", ".png", "-view.png"):
+        if os.path.exists(out + suffix):
+            os.remove(out + suffix)
+    env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
+    command = ["xvfb-run", "-a", "-s", "-screen 0 1280x900x24", os.environ["PARAVIEW"],
+               "--dr", "--script=" + os.environ["GEOSHAPING_GUI_SETUP"]]
+    run = subprocess.run(command, env=env, timeout=90, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    print(run.stdout[-4000:])
+    assert os.path.exists(out + ".txt"), "paraview wrote no results (exit code %d)" % run.returncode
+    results = read_results(out + ".txt")
+    print("results:", results)
+    assert results["started"] == "1" and results["timed_out"] == "0", results
+    assert results["dock_visible"] == "1" and results["dock_title"] == "Haptics", results
+    assert int(results["frames"]) >= 30, "too few interactor frames"
+
+    expected = expected_drag(os.environ["GEOSHAPING_HAPTICS_REPLAY"])
+    sent = [float(v) for v in results["last_displacement"].split()]
+    moved = [float(v) for v in results["max_displacement"].split()]
+    tolerance = 1e-3 * math.sqrt(sum(c * c for c in expected))
+    print("expected drag", expected, "sent", sent, "largest output motion", moved)
+    assert all(abs(a - b) <= tolerance for a, b in zip(sent, expected)), (sent, expected)
+    assert all(abs(a - b) <= 1e-4 + tolerance for a, b in zip(moved, expected)), (moved, expected)
+    assert 1 < int(results["moved_points"]) < int(results["output_points"]), results
+    assert int(results["displaced_points"]) == int(results["moved_points"]), results
+
+    fraction, size = red_fraction(out + "-view.png")
+    print("view screenshot %s: %.1f %% red pixels" % (size, 100 * fraction))
+    assert size[0] >= 200 and size[1] >= 200 and fraction > 0.05, (size, fraction)
+    window_size = red_fraction(out + ".png")[1]
+    assert window_size[0] > size[0], "the window screenshot should show the dock beside the view"
+    print("GUI test passed; screenshots:", out + ".png", out + "-view.png")
+
+
+if __name__ == "__main__":
+    main()
