@@ -370,6 +370,13 @@ int vtkChainMailDeformationFilter::RequestData(
     {
       in.Deformer.reset(); // no grasp: the rest shape
     }
+    else if (grasp >= n)
+    {
+      // Checked here: the core's 32-bit ids would wrap a 64-bit id into range.
+      vtkErrorMacro("No deformation: grasp vertex " << grasp << " is outside [0, " << n
+                                                    << "); output is the undeformed input.");
+      in.Deformer.reset();
+    }
     else
     {
       const auto start = std::chrono::steady_clock::now();
