@@ -43,7 +43,6 @@ struct pqHapticsInteractor::Hand
     this->mapper->SetInputConnection(this->sphere->GetOutputPort());
     this->cursor->SetMapper(this->mapper);
     this->cursor->PickableOff();
-    this->cursor->GetProperty()->SetOpacity(0.6);
   }
   ~Hand()
   {
@@ -170,6 +169,7 @@ bool pqHapticsInteractor::stylusOf(
   if (!hand.controller.held())
   {
     hand.mapping = mapping;
+    this->Stats.sceneUnitsPerMetre = mapping.scale();
   }
   const gh::DeviceSample& sample = hand.latest.sample;
   world.position = hand.mapping.to_scene(sample.position);

@@ -42,6 +42,7 @@ public:
     double deformationMilliseconds = 0.0;
     long long displacedPoints = 0;
     int frames = 0;
+    double sceneUnitsPerMetre = 0.0; // the workspace mapping's scale, first device hand
   };
 
   explicit pqHapticsInteractor(QObject* parent = nullptr);

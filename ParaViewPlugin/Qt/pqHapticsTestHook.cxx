@@ -50,9 +50,15 @@ void pqHapticsTestHook::poll()
   }
   if (!this->Started)
   {
-    // Wait for the pipeline (the --script that builds it runs after the plugin loads)
-    // and its first render.
+    // Wait for the pipeline (the --script that builds it runs after the plugin loads),
+    // then one more second: the script's renders process events, so this timer can
+    // fire before the script has set the camera.
     if (!pqHapticsFindSource("ChainMailDeformation") || !pqActiveObjects::instance().activeView())
+    {
+      this->ReadyPolls = 0;
+      return;
+    }
+    if (++this->ReadyPolls < 10)
     {
       return;
     }
@@ -96,6 +102,7 @@ void pqHapticsTestHook::writeResults()
   out << "frames = " << f.frames << "\n";
   out << "frames_per_second = " << f.framesPerSecond << "\n";
   out << "servo_hz = " << f.servoHz[0] << "\n";
+  out << "scene_units_per_metre = " << f.sceneUnitsPerMetre << "\n";
   out << "deformation_ms = " << f.deformationMilliseconds << "\n";
   out << "displaced_points = " << f.displacedPoints << "\n";
   const Eigen::Vector3d& d = interactor->lastDisplacement();

@@ -31,4 +31,5 @@ private:
   bool TimedOut = false;
   int FinishedPolls = 0;
   int Polls = 0;
+  int ReadyPolls = 0;
 };

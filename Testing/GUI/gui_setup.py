@@ -15,6 +15,7 @@ view = GetActiveViewOrCreate("RenderView")
 display = Show(deformation, view)
 geoshaping_presets.show_malleability(display)
 view.OrientationAxesVisibility = 0
+Render(view)  # paraview.simple resets the camera on the first render: set it after
 view.CameraPosition = CAMERA["position"]
 view.CameraFocalPoint = CAMERA["focal_point"]
 view.CameraViewUp = CAMERA["view_up"]

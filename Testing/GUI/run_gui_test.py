@@ -66,7 +66,7 @@ def main():
         if os.path.exists(out + suffix):
             os.remove(out + suffix)
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
-    command = ["xvfb-run", "-a", "-s", "-screen 0 1280x900x24", os.environ["PARAVIEW"],
+    command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24", os.environ["PARAVIEW"],
                "--dr", "--script=" + os.environ["GEOSHAPING_GUI_SETUP"]]
     run = subprocess.run(command, env=env, timeout=90, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True)
@@ -76,7 +76,7 @@ def main():
     print("results:", results)
     assert results["started"] == "1" and results["timed_out"] == "0", results
     assert results["dock_visible"] == "1" and results["dock_title"] == "Haptics", results
-    assert int(results["frames"]) >= 30, "too few interactor frames"
+    assert int(results["frames"]) >= 5, "too few interactor frames"
 
     expected = expected_drag(os.environ["GEOSHAPING_HAPTICS_REPLAY"])
     sent = [float(v) for v in results["last_displacement"].split()]
