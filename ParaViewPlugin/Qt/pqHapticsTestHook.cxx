@@ -6,9 +6,14 @@
 #include <pqActiveObjects.h>
 #include <pqCoreUtilities.h>
 #include <pqPipelineSource.h>
+#include <pqRenderView.h>
 #include <pqView.h>
 
 #include <vtkAlgorithm.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkSMRenderViewProxy.h>
 #include <vtkPointSet.h>
 #include <vtkSMProxy.h>
 
@@ -17,6 +22,8 @@
 #include <QPixmap>
 #include <QTextStream>
 #include <QTimer>
+
+#include <algorithm>
 
 void pqHapticsTestHook::installIfRequested(pqHapticsDockPanel* dock)
 {
@@ -62,8 +69,9 @@ void pqHapticsTestHook::poll()
     {
       return;
     }
-    this->Dock->setHand(0, pqHapticsInteractor::ReplayFile, this->Trace,
-      geoshaping::interactor::Tool::deform);
+    const bool mouse = this->Trace == "mouse";
+    this->Dock->setHand(0, mouse ? pqHapticsInteractor::Mouse : pqHapticsInteractor::ReplayFile,
+      mouse ? QString() : this->Trace, geoshaping::interactor::Tool::deform);
     this->Dock->setHand(1, pqHapticsInteractor::NoDevice, QString(),
       geoshaping::interactor::Tool::hold_and_turn);
     this->Started = this->Dock->start();
@@ -73,6 +81,11 @@ void pqHapticsTestHook::poll()
     }
     return;
   }
+  if (this->Trace == "mouse")
+  {
+    this->dragMouse();
+    return;
+  }
   // A few frames after the trace is over, so the last sample has been rendered.
   if (this->Dock->interactor()->replaysFinished() && ++this->FinishedPolls >= 5)
   {
@@ -80,6 +93,40 @@ void pqHapticsTestHook::poll()
     {
       this->writeResults();
     }
+  }
+}
+
+void pqHapticsTestHook::dragMouse()
+{
+  // Press at 30 % of the width, half the height (on the horizon's upper side in the GUI
+  // test's camera), drag 60 pixels up in 6 steps, release; one step per poll.
+  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
+  vtkRenderWindowInteractor* interactor =
+    view ? view->getRenderViewProxy()->GetInteractor() : nullptr;
+  if (!interactor)
+  {
+    return;
+  }
+  const int step = this->MouseSteps++;
+  const int* size = interactor->GetSize();
+  const int x = static_cast<int>(0.3 * size[0]);
+  const int y = size[1] / 2 + 10 * std::min(std::max(step - 1, 0), 6);
+  interactor->SetEventInformation(x, y, 0, 0);
+  if (step == 1)
+  {
+    interactor->InvokeEvent(vtkCommand::LeftButtonPressEvent);
+  }
+  else if (step > 1 && step <= 7)
+  {
+    interactor->InvokeEvent(vtkCommand::MouseMoveEvent);
+  }
+  else if (step == 10)
+  {
+    interactor->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
+  }
+  else if (step == 14 && !this->Output.isEmpty())
+  {
+    this->writeResults();
   }
 }
 
@@ -106,6 +153,12 @@ void pqHapticsTestHook::writeResults()
   out << "deformation_ms = " << f.deformationMilliseconds << "\n";
   out << "displaced_points = " << f.displacedPoints << "\n";
   const Eigen::Vector3d& d = interactor->lastDisplacement();
+  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
+  if (vtkCamera* camera = view ? view->getRenderViewProxy()->GetActiveCamera() : nullptr)
+  {
+    const double* p = camera->GetPosition();
+    out << "camera_position = " << p[0] << " " << p[1] << " " << p[2] << "\n";
+  }
   out << "last_displacement = " << d.x() << " " << d.y() << " " << d.z() << "\n";
 
   // The deformed output against its input (builtin session: the filter itself).

@@ -2,6 +2,8 @@
 // A hook for the GUI test and the demo, off unless asked for by the environment:
 //   GEOSHAPING_HAPTICS_REPLAY=<trace>       hand 1 replays the trace with the Deform tool,
 //                                           started once a ChainMailDeformation exists;
+//                                           "mouse": hand 1 is the mouse, and the hook
+//                                           drags it up on the surface (Deform);
 //   GEOSHAPING_HAPTICS_TEST_OUTPUT=<prefix> when the replay is over, write <prefix>.png
 //                                           (the main window), <prefix>-view.png (the
 //                                           render view) and <prefix>.txt (key = value
@@ -22,6 +24,7 @@ private Q_SLOTS:
 
 private:
   pqHapticsTestHook(pqHapticsDockPanel* dock, const QString& trace, const QString& output);
+  void dragMouse();
   void writeResults();
 
   pqHapticsDockPanel* Dock;
@@ -32,4 +35,5 @@ private:
   int FinishedPolls = 0;
   int Polls = 0;
   int ReadyPolls = 0;
+  int MouseSteps = 0;
 };

@@ -14,6 +14,8 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_setup_camera import CAMERA  # noqa: E402
+# Mode "replay": GEOSHAPING_HAPTICS_REPLAY is the trace; mode "mouse": the plugin's test
+# hook drags the mouse itself (GEOSHAPING_HAPTICS_REPLAY=mouse).
 
 WORKSPACE_RADIUS = 0.08  # m, the default DeviceLimits of the replay device
 
@@ -60,8 +62,30 @@ def red_fraction(png):
     return float(((r > 90) & (g < 0.45 * r) & (b < 0.45 * r)).mean()), image.GetDimensions()
 
 
+def screen_axes():
+    pos, foc, up = CAMERA["position"], CAMERA["focal_point"], CAMERA["view_up"]
+    z = [p - f for p, f in zip(pos, foc)]
+    n = math.sqrt(sum(c * c for c in z))
+    return [c / n for c in z], up
+
+
+def check_mouse(results):
+    """The mouse dragged 60 px up on the surface: the grasped vertex moved up the screen,
+    and the camera did not turn (the interactor style never saw the drag)."""
+    toward_viewer, screen_up = screen_axes()
+    d = [float(v) for v in results["last_displacement"].split()]
+    length = math.sqrt(sum(c * c for c in d))
+    up = sum(a * b for a, b in zip(d, screen_up))
+    print("mouse drag", d, "screen-up part", up)
+    assert length > 1.0 and up > 0.99 * length, d
+    camera = [float(v) for v in results["camera_position"].split()]
+    assert all(abs(a - b) < 1e-6 for a, b in zip(camera, CAMERA["position"])), camera
+    assert int(results["moved_points"]) > 1, results
+
+
 def main():
-    out = os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_replay")
+    mode = sys.argv[1] if len(sys.argv) > 1 else "replay"
+    out = os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_" + mode)
     for suffix in (".txt", ".png", "-view.png"):
         if os.path.exists(out + suffix):
             os.remove(out + suffix)
@@ -77,6 +101,10 @@ def main():
     assert results["started"] == "1" and results["timed_out"] == "0", results
     assert results["dock_visible"] == "1" and results["dock_title"] == "Haptics", results
     assert int(results["frames"]) >= 5, "too few interactor frames"
+    if mode == "mouse":
+        check_mouse(results)
+        print("GUI mouse test passed; screenshot:", out + "-view.png")
+        return
 
     expected = expected_drag(os.environ["GEOSHAPING_HAPTICS_REPLAY"])
     sent = [float(v) for v in results["last_displacement"].split()]
