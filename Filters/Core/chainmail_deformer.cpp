@@ -31,6 +31,7 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
   }
   tags_.assign(std::size_t(n), VertexTag{ 0, 0, 0.0f, -1 });
   pinned_.clear();
+  committed_.clear();
   frame_ = 0;
   moved_.clear();
   previously_moved_.clear();
@@ -107,6 +108,28 @@ void ChainMailDeformer::reset()
       t.stamp = 0;
     frame_ = 1;
   }
+}
+
+void ChainMailDeformer::commit()
+{
+  if (committed_.empty() && !moved_.empty())
+    committed_.assign(state_.size(), Eigen::Vector3d::Zero());
+  for (index_t v : moved_)
+  {
+    VertexState& s = state_[std::size_t(v)];
+    s.rest += s.disp;
+    committed_[std::size_t(v)] += s.disp;
+    s.disp.setZero();
+  }
+}
+
+void ChainMailDeformer::set_rest(
+  index_t v, const Eigen::Vector3d& rest_local, const Eigen::Vector3d& offset)
+{
+  if (committed_.empty())
+    committed_.assign(state_.size(), Eigen::Vector3d::Zero());
+  state_[std::size_t(v)].rest = rest_local;
+  committed_[std::size_t(v)] = offset;
 }
 
 FrameResult ChainMailDeformer::deform(index_t grasp, const Eigen::Vector3d& displacement)
@@ -208,7 +231,7 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
 std::size_t ChainMailDeformer::memory_bytes() const
 {
   return state_.capacity() * sizeof(VertexState) + tags_.capacity() * sizeof(VertexTag) +
-    pinned_.capacity() + (moved_.capacity() + previously_moved_.capacity()) * sizeof(index_t) +
+    pinned_.capacity() + committed_.capacity() * sizeof(Eigen::Vector3d) + (moved_.capacity() + previously_moved_.capacity()) * sizeof(index_t) +
     adj_.offsets.capacity() * sizeof(std::int64_t) + adj_.neighbors.capacity() * sizeof(index_t) +
     buckets_.memory_bytes();
 }

@@ -76,6 +76,26 @@ public:
   // Back to the rest state (sparse).
   void reset();
 
+  // Editing (edit_history.h). The rest shape can change: `commit()` makes the last
+  // frame's shape the rest shape of the vertices it moved (x0 += u, u = 0), in
+  // O(moved). Besides its rest position each vertex keeps its offset from the mesh
+  // given to set_mesh (zero until an edit moves it), accumulated by the same additions,
+  // so a caller writes `input + offset_from_input(v)`: never-edited vertices stay
+  // bit-identical to the input, and restoring both values undoes an edit exactly.
+  void commit();
+  // Sets v's rest position (local) and its offset from the input; u[v] must be zero
+  // (call between frames or after reset()).
+  void set_rest(index_t v, const Eigen::Vector3d& rest_local, const Eigen::Vector3d& offset);
+  const Eigen::Vector3d& committed_offset(index_t v) const
+  {
+    return committed_.empty() ? zero_ : committed_[std::size_t(v)];
+  }
+  // committed_offset(v) + displacement(v): where v is now relative to its input point.
+  Eigen::Vector3d offset_from_input(index_t v) const
+  {
+    return committed_.empty() ? displacement(v) : Eigen::Vector3d(committed_[std::size_t(v)] + displacement(v));
+  }
+
   // Vertices displaced by the last frame, in the order they moved (grasp first).
   const std::vector<index_t>& moved() const { return moved_; }
   // Vertices displaced by the frame before it (already reset to rest), so a caller
@@ -123,6 +143,8 @@ private:
   std::vector<VertexTag> tags_;
   index_t num_ranks_ = 1;
   std::vector<std::uint8_t> pinned_;
+  std::vector<Eigen::Vector3d> committed_; // empty until the first edit; else dense
+  Eigen::Vector3d zero_ = Eigen::Vector3d::Zero();
   std::uint32_t frame_ = 0;
   std::vector<index_t> moved_, previously_moved_;
 
