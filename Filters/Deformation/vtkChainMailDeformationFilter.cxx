@@ -18,10 +18,12 @@
 #include "vtkStaticPointLocator.h"
 
 #include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/edit_history.h"
 #include "geoshaping/link_projection.h"
 
 #include <chrono>
 #include <initializer_list>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkChainMailDeformationFilter);
@@ -51,6 +53,20 @@ struct vtkChainMailDeformationFilter::vtkInternals
   geoshaping::TransferFunction LinksTransfer;
   std::vector<geoshaping::index_t> Refined;
   bool Refining = false; // the last update wrote the projector's result
+
+  // Editing: the applied edits' records (the EditHistory property), the history that
+  // applies them (with the undone tail kept for redo), and the last frame's recipe.
+  std::vector<std::string> EditRecords;
+  bool EditsDirty = false;
+  geoshaping::EditHistory History;
+  geoshaping::EditRecipe FrameRecipe;
+  std::string LastEdit;
+
+  // Displacement of v from its rest position in the last frame (refined or not).
+  const Eigen::Vector3d& FinalDisplacement(geoshaping::index_t v) const
+  {
+    return this->Refining ? this->Projector->displacement(v) : this->Deformer.displacement(v);
+  }
 
   vtkSmartPointer<vtkPoints> OutputPoints;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
@@ -85,6 +101,21 @@ bool SameTransfer(const geoshaping::TransferFunction& a, const geoshaping::Trans
 {
   return SameCurve(a.stretch, b.stretch) && SameCurve(a.compression, b.compression) &&
     SameCurve(a.shear, b.shear) && a.exact_rigid_at_zero == b.exact_rigid_at_zero;
+}
+
+geoshaping::EditRecipe Recipe(vtkChainMailDeformationFilter* self, vtkIdType grasp)
+{
+  geoshaping::EditRecipe r;
+  r.grasp = geoshaping::index_t(grasp);
+  r.displacement = Eigen::Vector3d(self->GetDisplacement());
+  r.queue = self->GetCandidateQueue();
+  self->GetStretchRange(r.stretch);
+  self->GetCompressionRange(r.compression);
+  self->GetShearRange(r.shear);
+  r.curve_shape = self->GetTransferCurveShape();
+  r.step_threshold = self->GetStepThreshold();
+  r.refinement_iterations = self->GetRefinementIterations();
+  return r;
 }
 
 geoshaping::Curve MakeCurve(const double range[2], int shape, double threshold,
@@ -234,6 +265,8 @@ int vtkChainMailDeformationFilter::RequestData(
     in.Projector.reset();
     in.Refined.clear();
     in.Refining = false;
+    in.History.clear();
+    in.EditsDirty = true;
 
     std::vector<double> xyz;
     vtkIdType firstBad;
@@ -335,7 +368,25 @@ int vtkChainMailDeformationFilter::RequestData(
     in.Projector.reset();
   }
 
-  // 3. Transfer function and queue, cheap to set every time.
+  // 3. Committed edits: replayed when the list or the geometry changed.
+  IdList stale; // the last frame, shown until rewritten
+  if (in.EditsDirty)
+  {
+    stale = in.Deformer.moved();
+    std::string error;
+    if (!in.History.synchronize(in.Deformer, in.EditRecords, error))
+    {
+      vtkErrorMacro("EditHistory: " << error << "; the edits before it are applied.");
+    }
+    in.EditsDirty = false;
+  }
+  const IdList touched = in.History.take_touched();
+  if (!touched.empty())
+  {
+    in.Projector.reset(); // its links were built from the old rest shape
+  }
+
+  // 4. Transfer function and queue, cheap to set every time.
   geoshaping::TransferFunction tf;
   tf.stretch = MakeCurve(this->StretchRange, this->TransferCurveShape, this->StepThreshold,
     in.StretchCurve);
@@ -354,7 +405,7 @@ int vtkChainMailDeformationFilter::RequestData(
     in.Deformer.set_transfer_function(tf);
     in.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
 
-    // 4. Grasp and deform.
+    // 5. Grasp and deform.
     vtkIdType grasp = this->GraspPointId;
     if (this->GraspMode == GRASP_NEAREST_TO_POSITION)
     {
@@ -392,6 +443,7 @@ int vtkChainMailDeformationFilter::RequestData(
       this->NumberOfDisplacedPoints = vtkIdType(r.moved);
       this->NumberOfExaminedCandidates = vtkIdType(r.examined);
       this->LastGraspPointId = r.ok ? grasp : -1;
+      in.FrameRecipe = Recipe(this, grasp);
       if (r.ok && this->RefinementIterations > 0)
       {
         this->Refine(grasp);
@@ -399,28 +451,27 @@ int vtkChainMailDeformationFilter::RequestData(
     }
   }
 
-  // 5. Rewrite only the vertices that moved now or last time (the moved and the refined).
+  // 6. Rewrite only the vertices that moved now or last time (the moved and the refined)
+  // and those an edit changed, as input + offset so unedited vertices stay the input's.
   vtkPoints* outPoints = in.OutputPoints;
   double p[3];
-  for (const IdList* restore : IdLists{ &in.Deformer.previously_moved(), &in.Refined })
+  for (const IdList* restore : IdLists{ &in.Deformer.previously_moved(), &in.Refined, &stale, &touched })
     for (geoshaping::index_t v : *restore)
     {
       inPoints->GetPoint(v, p);
-      outPoints->SetPoint(v, p);
+      const Eigen::Vector3d& c = in.Deformer.committed_offset(v);
+      outPoints->SetPoint(v, p[0] + c.x(), p[1] + c.y(), p[2] + c.z());
     }
   in.Refined.clear();
   if (in.Refining)
   {
     in.Refined = in.Projector->changed();
   }
-  const auto finalDisplacement = [&in](geoshaping::index_t v) -> const Eigen::Vector3d& {
-    return in.Refining ? in.Projector->displacement(v) : in.Deformer.displacement(v);
-  };
   for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined })
     for (geoshaping::index_t v : *write)
     {
       inPoints->GetPoint(v, p);
-      const Eigen::Vector3d& u = finalDisplacement(v);
+      const Eigen::Vector3d u = in.Deformer.committed_offset(v) + in.FinalDisplacement(v);
       outPoints->SetPoint(v, p[0] + u.x(), p[1] + u.y(), p[2] + u.z());
     }
   outPoints->Modified();
@@ -444,7 +495,7 @@ int vtkChainMailDeformationFilter::RequestData(
     for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined })
       for (geoshaping::index_t v : *write)
       {
-        displacement->SetTuple(v, finalDisplacement(v).data());
+        displacement->SetTuple(v, in.FinalDisplacement(v).data());
       }
     output->GetPointData()->AddArray(displacement);
     output->GetPointData()->AddArray(sponsor);
@@ -474,6 +525,7 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "GenerateDiagnostics: " << this->GenerateDiagnostics << "\n";
   os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";
+  os << indent << "NumberOfEdits: " << this->Internals->EditRecords.size() << "\n";
   os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";
 }
 
@@ -495,4 +547,104 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
   this->NumberOfRefinementSweeps = report.iterations;
   this->NumberOfRefinedPoints = vtkIdType(in.Projector->changed().size());
   in.Refining = true;
+}
+
+void vtkChainMailDeformationFilter::AddEdit(const char* record)
+{
+  this->Internals->EditRecords.emplace_back(record ? record : "");
+  this->Internals->EditsDirty = true;
+  this->Modified();
+}
+
+void vtkChainMailDeformationFilter::RemoveAllEdits()
+{
+  this->Internals->EditRecords.clear();
+  this->Internals->EditsDirty = true;
+  this->Modified();
+}
+
+int vtkChainMailDeformationFilter::GetNumberOfEdits()
+{
+  return static_cast<int>(this->Internals->EditRecords.size());
+}
+
+const char* vtkChainMailDeformationFilter::GetEdit(int i)
+{
+  const auto& records = this->Internals->EditRecords;
+  return i >= 0 && std::size_t(i) < records.size() ? records[std::size_t(i)].c_str() : nullptr;
+}
+
+const char* vtkChainMailDeformationFilter::GetLastEdit()
+{
+  return this->Internals->LastEdit.c_str();
+}
+
+int vtkChainMailDeformationFilter::GetNumberOfRedoableEdits()
+{
+  const vtkInternals& in = *this->Internals;
+  return in.History.size() > in.EditRecords.size()
+    ? static_cast<int>(in.History.size() - in.EditRecords.size())
+    : 0;
+}
+
+void vtkChainMailDeformationFilter::CommitEdit()
+{
+  vtkInternals& in = *this->Internals;
+  if (!in.GeometryValid || in.EditsDirty || this->LastGraspPointId < 0)
+  {
+    vtkWarningMacro("CommitEdit: nothing to commit (no deformation in the last update).");
+    return;
+  }
+  IdList vertices = in.Deformer.moved();
+  if (in.Refining)
+  {
+    for (geoshaping::index_t v : in.Refined)
+      if (!in.Deformer.moved_this_frame(v))
+        vertices.push_back(v);
+  }
+  std::vector<Eigen::Vector3d> displacements;
+  displacements.reserve(vertices.size());
+  for (geoshaping::index_t v : vertices)
+    displacements.push_back(in.FinalDisplacement(v));
+  in.History.commit(in.Deformer, in.FrameRecipe, vertices, displacements);
+  in.LastEdit = in.History.record(in.History.applied() - 1);
+  in.EditRecords.push_back(in.LastEdit);
+  in.Refining = false;
+  in.Projector.reset();
+  // Released: the next update shows the committed shape, not the grasp applied again.
+  this->LastGraspPointId = -1;
+  this->GraspPointId = -1;
+  std::fill(this->Displacement, this->Displacement + 3, 0.0);
+  this->Modified();
+}
+
+void vtkChainMailDeformationFilter::UndoEdit()
+{
+  vtkInternals& in = *this->Internals;
+  if (in.EditRecords.empty())
+    return;
+  in.EditRecords.pop_back();
+  in.EditsDirty = true;
+  this->Modified();
+}
+
+void vtkChainMailDeformationFilter::RedoEdit()
+{
+  vtkInternals& in = *this->Internals;
+  if (in.History.size() <= in.EditRecords.size())
+    return;
+  in.LastEdit = in.History.record(in.EditRecords.size());
+  in.EditRecords.push_back(in.LastEdit);
+  in.EditsDirty = true;
+  this->Modified();
+}
+
+void vtkChainMailDeformationFilter::ResetEdits()
+{
+  vtkInternals& in = *this->Internals;
+  if (in.EditRecords.empty())
+    return;
+  in.EditRecords.clear();
+  in.EditsDirty = true;
+  this->Modified();
 }

@@ -29,6 +29,15 @@
  * vertices that moved in this or the previous update are rewritten, so a small grasp
  * costs the same on a mesh of millions of vertices as on a small one.
  *
+ * Editing (docs/editing.md): CommitEdit() makes the shape of the last update the rest
+ * shape for the next grasp and releases the grasp (GraspPointId -1, Displacement 0);
+ * the edit's record (GetLastEdit(), a lossless line of text) is appended to the edit
+ * list, which is also the `EditHistory` property (AddEdit / RemoveAllEdits): the output
+ * is the input with every listed edit applied, replayed once when the list or the
+ * geometry changes, with the least work (only the edits that differ are undone or
+ * applied, each in time proportional to the vertices it moved). UndoEdit, RedoEdit and
+ * ResetEdits edit that list; undo restores the previous points bit-exactly.
+ *
  * Input: any vtkPointSet (vtkPolyData, vtkUnstructuredGrid, ...). Output: the same
  * type, topology and attribute data passed, new points whose precision follows
  * `OutputPointsPrecision`. Bad input (non-finite points, grasp out of range, non-finite
@@ -186,6 +195,32 @@ public:
   vtkGetMacro(NumberOfRefinedPoints, vtkIdType);
   vtkGetMacro(LastRefinementMilliseconds, double);
   ///@}
+
+  ///@{
+  /// The applied edits as records (see geoshaping/edit_history.h), in order; the
+  /// EditHistory property. A bad record is refused with an error and ends the replay.
+  void AddEdit(const char* record);
+  void RemoveAllEdits();
+  int GetNumberOfEdits();
+  const char* GetEdit(int i);
+  ///@}
+
+  ///@{
+  /// Commands. CommitEdit: the last update's shape becomes the rest shape (an edit is
+  /// appended, the redo tail dropped) and the grasp is released. UndoEdit / RedoEdit:
+  /// drop the last edit / re-append the next undone one. ResetEdits: drop every edit
+  /// (all stay redoable). Each takes effect at the next update.
+  void CommitEdit();
+  void UndoEdit();
+  void RedoEdit();
+  void ResetEdits();
+  ///@}
+
+  /// The record of the edit last committed or redone ("" before any): a client copies it
+  /// into its EditHistory property so a saved state holds it.
+  const char* GetLastEdit();
+  /// Undone edits that RedoEdit can re-append.
+  int GetNumberOfRedoableEdits();
 
   /// Number of times the adjacency and rest state were (re)built: stays 1 while only
   /// the grasp, displacement, queue or curves change.

@@ -12,6 +12,7 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "geoshaping/brush.h"
 
@@ -26,6 +27,7 @@ vtkStandardNewMacro(vtkMalleabilityPaintFilter);
 struct vtkMalleabilityPaintFilter::vtkInternals
 {
   std::vector<geoshaping::Dab> Dabs;
+  std::vector<double> PointDabs; // id value weight
 
   // Geometry the locator, points and adjacency were built from.
   vtkPoints* GeometryPoints = nullptr;
@@ -96,11 +98,28 @@ vtkMalleabilityPaintFilter::vtkMalleabilityPaintFilter()
   : Internals(new vtkInternals)
 {
   this->SetMalleabilityArrayName("Malleability");
+  this->SetPinnedArrayName("Pinned");
 }
 
 vtkMalleabilityPaintFilter::~vtkMalleabilityPaintFilter()
 {
   this->SetMalleabilityArrayName(nullptr);
+  this->SetPinnedArrayName(nullptr);
+}
+
+void vtkMalleabilityPaintFilter::AddPointDab(double id, double value, double weight)
+{
+  this->Internals->PointDabs.insert(this->Internals->PointDabs.end(), { id, value, weight });
+  this->Modified();
+}
+
+void vtkMalleabilityPaintFilter::RemoveAllPointDabs()
+{
+  if (!this->Internals->PointDabs.empty())
+  {
+    this->Internals->PointDabs.clear();
+    this->Modified();
+  }
 }
 
 void vtkMalleabilityPaintFilter::AddDab(
@@ -155,10 +174,12 @@ int vtkMalleabilityPaintFilter::RequestData(
   this->NumberOfRejectedDabs = 0;
   this->NumberOfPaintedValues = 0;
   this->LastPaintMilliseconds = 0.0;
-  const char* name = this->MalleabilityArrayName ? this->MalleabilityArrayName : "";
+  const char* name = this->PaintPins ? this->PinnedArrayName : this->MalleabilityArrayName;
+  name = name ? name : "";
   if (!*name)
   {
-    vtkErrorMacro("MalleabilityArrayName is empty; output is the input.");
+    vtkErrorMacro(<< (this->PaintPins ? "PinnedArrayName" : "MalleabilityArrayName")
+      << " is empty; output is the input.");
     return 1;
   }
   const vtkIdType n = input->GetNumberOfPoints();
@@ -185,7 +206,8 @@ int vtkMalleabilityPaintFilter::RequestData(
     vtkIdType clamped = 0;
     for (vtkIdType i = 0; i < n; ++i)
     {
-      const double v = source->GetComponent(i, 0);
+      const double v = this->PaintPins ? double(source->GetComponent(i, 0) != 0.0)
+                                       : source->GetComponent(i, 0);
       const double c = std::isnan(v) ? 0.0 : std::min(std::max(v, 0.0), 1.0);
       clamped += c != v;
       m[i] = static_cast<float>(c);
@@ -198,15 +220,54 @@ int vtkMalleabilityPaintFilter::RequestData(
   }
   else
   {
-    malleability->Fill(this->InitialMalleability);
+    malleability->Fill(this->PaintPins ? 0.0 : this->InitialMalleability);
   }
-  output->GetPointData()->AddArray(malleability);
-  output->GetPointData()->SetActiveScalars(name);
+  this->ApplyDabs(input, m);
+  this->ApplyPointDabs(n, m);
+  if (this->PaintPins)
+  {
+    vtkNew<vtkUnsignedCharArray> pins;
+    pins->SetName(name);
+    pins->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+      pins->SetValue(i, m[i] >= 0.5f ? 1 : 0);
+    output->GetPointData()->AddArray(pins);
+  }
+  else
+  {
+    output->GetPointData()->AddArray(malleability);
+    output->GetPointData()->SetActiveScalars(name);
+  }
+  return 1;
+}
 
+void vtkMalleabilityPaintFilter::ApplyPointDabs(vtkIdType n, float* m)
+{
+  const std::vector<double>& d = this->Internals->PointDabs;
+  for (std::size_t i = 0; i + 2 < d.size(); i += 3)
+  {
+    const double id = d[i], value = d[i + 1], weight = d[i + 2];
+    if (!(id >= 0 && id < double(n) && id == std::floor(id) && value >= 0 && value <= 1 &&
+          weight >= 0 && weight <= 1))
+    {
+      vtkErrorMacro("Point dab " << i / 3 << " (" << id << " " << value << " " << weight
+                                 << ") is skipped: id outside the mesh or value/weight outside [0, 1].");
+      ++this->NumberOfRejectedDabs;
+      continue;
+    }
+    float& x = m[static_cast<vtkIdType>(id)];
+    x = static_cast<float>(std::min(1.0, std::max(0.0, x + weight * (value - x))));
+    ++this->NumberOfPaintedValues;
+  }
+}
+
+void vtkMalleabilityPaintFilter::ApplyDabs(vtkPointSet* input, float* m)
+{
   vtkInternals& in = *this->Internals;
+  const vtkIdType n = input->GetNumberOfPoints();
   if (n == 0 || in.Dabs.empty() || !in.Update(input, this))
   {
-    return 1;
+    return;
   }
   const auto mode = static_cast<geoshaping::DistanceMode>(this->DistanceMode);
   if (mode == geoshaping::DistanceMode::geodesic && !in.AdjacencyValid)
@@ -247,8 +308,6 @@ int vtkMalleabilityPaintFilter::RequestData(
       msg << "\n  ...";
     vtkErrorMacro(<< msg.str());
   }
-  malleability->Modified();
-  return 1;
 }
 
 void vtkMalleabilityPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
@@ -263,5 +322,8 @@ void vtkMalleabilityPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DistanceMode: "
      << geoshaping::distance_mode_name(static_cast<geoshaping::DistanceMode>(this->DistanceMode))
      << "\n";
+  os << indent << "PaintPins: " << this->PaintPins << " ("
+     << (this->PinnedArrayName ? this->PinnedArrayName : "(none)") << ")\n";
+  os << indent << "NumberOfPointDabs: " << this->Internals->PointDabs.size() / 3 << "\n";
   os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";
 }

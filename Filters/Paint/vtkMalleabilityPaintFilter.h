@@ -22,6 +22,18 @@
  * built once per geometry. The result is deterministic: the same input and dabs give a
  * bit-identical array, so a ParaView state file or a script reproduces the painting.
  *
+ * Point dabs (id value weight) paint given vertices after the dabs:
+ * m += weight * (value - m). A client painting on a deformed surface (the output of
+ * ChainMailDeformation downstream, which this filter cannot read without a pipeline
+ * cycle) finds the vertices under its brush there and sends them as point dabs, so the
+ * paint lands on the vertices the user sees while the array stays on the rest mesh.
+ *
+ * With PaintPins on, the filter paints the unsigned-char pin mask PinnedArrayName
+ * (default "Pinned", for ChainMailDeformation's PinnedArray) instead of malleability:
+ * the same dabs are applied to 0/1 values (the input's mask, non-zero read as 1, or 0)
+ * and a vertex is pinned where the result is >= 0.5 (a dab of value 1 pins, of value 0
+ * unpins). The malleability array and the active scalars pass through untouched.
+ *
  * A bad dab (a non-finite number, a negative radius, value or strength outside [0, 1])
  * is skipped with an error naming it; the other dabs are applied as if it were absent.
  * In parallel each process paints its own points: Euclidean painting is exact, geodesic
@@ -34,6 +46,8 @@
 #include "vtkPointSetAlgorithm.h"
 
 #include <memory> // For std::unique_ptr
+
+class vtkPointSet;
 
 class GEOSHAPINGFILTERSPAINT_EXPORT vtkMalleabilityPaintFilter : public vtkPointSetAlgorithm
 {
@@ -77,6 +91,22 @@ public:
   ///@}
 
   ///@{
+  /// Point dabs, applied after the dabs in the order added: vertex id, value, weight,
+  /// each in [0, 1] but the id; a bad one is skipped with an error.
+  void AddPointDab(double id, double value, double weight);
+  void RemoveAllPointDabs();
+  ///@}
+
+  ///@{
+  /// Paint the pin mask instead of malleability. Off by default.
+  vtkSetMacro(PaintPins, bool);
+  vtkGetMacro(PaintPins, bool);
+  vtkBooleanMacro(PaintPins, bool);
+  vtkSetStringMacro(PinnedArrayName);
+  vtkGetStringMacro(PinnedArrayName);
+  ///@}
+
+  ///@{
   /// Weight across the brush: CONSTANT, LINEAR, SMOOTH (default) or GAUSSIAN.
   vtkSetClampMacro(Falloff, int, CONSTANT, GAUSSIAN);
   vtkGetMacro(Falloff, int);
@@ -112,6 +142,8 @@ protected:
   double InitialMalleability = 0.5;
   int Falloff = SMOOTH;
   int DistanceMode = EUCLIDEAN;
+  bool PaintPins = false;
+  char* PinnedArrayName = nullptr;
 
   int NumberOfAppliedDabs = 0;
   int NumberOfRejectedDabs = 0;
@@ -122,6 +154,9 @@ protected:
 private:
   vtkMalleabilityPaintFilter(const vtkMalleabilityPaintFilter&) = delete;
   void operator=(const vtkMalleabilityPaintFilter&) = delete;
+
+  void ApplyDabs(vtkPointSet* input, float* m);
+  void ApplyPointDabs(vtkIdType n, float* m);
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

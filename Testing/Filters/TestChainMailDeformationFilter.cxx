@@ -22,6 +22,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -513,5 +515,100 @@ TEST(ChainMailDeformationFilter, RefinedSparseUpdatesEqualAFreshFilter)
   }
   f->SetGraspPointId(-1);
   f->Update();
+  EXPECT_EQ(MaxPointDifference(f->GetOutput(), grid), 0.0);
+}
+
+namespace
+{
+// Every output coordinate, for bit-exact comparison (float points widen exactly).
+std::vector<double> Coordinates(vtkPointSet* ps)
+{
+  std::vector<double> x(std::size_t(3 * ps->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < ps->GetNumberOfPoints(); ++i)
+    ps->GetPoint(i, x.data() + 3 * i);
+  return x;
+}
+
+std::vector<double> Drag(vtkChainMailDeformationFilter* f, vtkIdType grasp, double dx, double dy,
+  double dz)
+{
+  f->SetGraspPointId(grasp);
+  f->SetDisplacement(dx, dy, dz);
+  f->Update();
+  return Coordinates(f->GetOutput());
+}
+} // namespace
+
+TEST(ChainMailDeformationFilter, CommitUndoRedoAndResetAreBitExact)
+{
+  auto grid = TriangleGrid(25, 25, 1.0, [](int i, int) { return i < 8 ? 0.0 : 0.7; }, VTK_FLOAT,
+    512345.0, 4123456.0);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  const auto original = Coordinates(Deform(f, grid));
+  const auto one = Drag(f, 12 * 25 + 12, 0.0, 0.0, 3.0);
+  f->CommitEdit();
+  EXPECT_EQ(f->GetGraspPointId(), -1) << "commit releases the grasp";
+  f->Update();
+  EXPECT_EQ(Coordinates(f->GetOutput()), one) << "the committed shape is shown";
+  EXPECT_EQ(f->GetNumberOfEdits(), 1);
+  const std::string record = f->GetLastEdit();
+  EXPECT_EQ(record, f->GetEdit(0));
+  const auto two = Drag(f, 12 * 25 + 14, 1.0, 0.0, -2.0);
+  f->CommitEdit();
+  f->Update();
+  EXPECT_EQ(Coordinates(f->GetOutput()), two);
+
+  f->UndoEdit();
+  f->Update();
+  EXPECT_EQ(Coordinates(f->GetOutput()), one) << "undo";
+  EXPECT_EQ(f->GetNumberOfRedoableEdits(), 1);
+  f->RedoEdit();
+  f->Update();
+  EXPECT_EQ(Coordinates(f->GetOutput()), two) << "redo";
+  f->ResetEdits();
+  f->Update();
+  EXPECT_EQ(Coordinates(f->GetOutput()), original) << "reset";
+  EXPECT_EQ(f->GetNumberOfRebuilds(), 1) << "edits never rebuild the adjacency";
+
+  // The records alone reproduce the shape in a fresh filter, once per change of the list.
+  vtkNew<vtkChainMailDeformationFilter> fresh;
+  f->RedoEdit();
+  f->RedoEdit();
+  EXPECT_EQ(record, f->GetEdit(0));
+  fresh->AddEdit(f->GetEdit(0));
+  fresh->AddEdit(f->GetEdit(1));
+  EXPECT_EQ(Coordinates(Deform(fresh, grid)), two);
+}
+
+TEST(ChainMailDeformationFilter, CommitKeepsTheRefinedShape)
+{
+  auto grid = TriangleGrid(21, 21, 1.0, [](int i, int) { return i < 6 ? 0.0 : 0.9; });
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetRefinementIterations(20);
+  Deform(f, grid);
+  const auto refined = Drag(f, 10 * 21 + 10, 0.0, 2.0, 4.0);
+  ASSERT_GT(f->GetNumberOfRefinedPoints(), 0);
+  f->CommitEdit();
+  f->Update();
+  EXPECT_EQ(Coordinates(f->GetOutput()), refined);
+  f->UndoEdit();
+  f->Update();
+  EXPECT_EQ(MaxPointDifference(f->GetOutput(), grid), 0.0);
+}
+
+TEST(ChainMailDeformationFilter, CommitWithoutADeformationOrWithABadRecordWarns)
+{
+  auto grid = UniformGrid(11, 11, 1.0, 0.5);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  vtkNew<vtkTest::ErrorObserver> observer;
+  f->AddObserver(vtkCommand::WarningEvent, observer);
+  f->AddObserver(vtkCommand::ErrorEvent, observer);
+  Deform(f, grid);
+  f->CommitEdit();
+  EXPECT_TRUE(observer->GetWarning());
+  EXPECT_EQ(f->GetNumberOfEdits(), 0);
+  f->AddEdit("GSE1 junk");
+  f->Update();
+  EXPECT_TRUE(observer->GetError());
   EXPECT_EQ(MaxPointDifference(f->GetOutput(), grid), 0.0);
 }
