@@ -3,27 +3,29 @@
 #include <algorithm>
 #include <cmath>
 
-namespace geoshaping::interactor {
+namespace geoshaping::interactor
+{
 
-WorkspaceMapping::WorkspaceMapping(const CameraFrame &camera,
-                                   double workspace_radius) {
+WorkspaceMapping::WorkspaceMapping(const CameraFrame& camera, double workspace_radius)
+{
   const Eigen::Vector3d toward_viewer = camera.position - camera.focal_point;
   const double distance = toward_viewer.norm();
   const Eigen::Vector3d z = toward_viewer / distance;
   const Eigen::Vector3d x = camera.view_up.cross(z);
   if (!(distance > 0.0) || !(x.norm() > 1e-12) || !(workspace_radius > 0.0) ||
-      !std::isfinite(distance)) {
+    !std::isfinite(distance))
+  {
     return;
   }
   axes_.col(0) = x.normalized();
   axes_.col(2) = z;
   axes_.col(1) = z.cross(axes_.col(0));
   const double pi = 3.14159265358979323846;
-  const double half_height =
-      camera.parallel
-          ? camera.parallel_scale
-          : distance * std::tan(0.5 * camera.view_angle_deg * pi / 180.0);
-  if (!(half_height > 0.0) || !std::isfinite(half_height)) {
+  const double half_height = camera.parallel
+    ? camera.parallel_scale
+    : distance * std::tan(0.5 * camera.view_angle_deg * pi / 180.0);
+  if (!(half_height > 0.0) || !std::isfinite(half_height))
+  {
     axes_.setIdentity();
     return;
   }
@@ -32,29 +34,29 @@ WorkspaceMapping::WorkspaceMapping(const CameraFrame &camera,
   valid_ = true;
 }
 
-Eigen::Vector3d
-WorkspaceMapping::to_scene(const Eigen::Vector3d &device) const {
+Eigen::Vector3d WorkspaceMapping::to_scene(const Eigen::Vector3d& device) const
+{
   return origin_ + vector_to_scene(device);
 }
 
-Eigen::Vector3d
-WorkspaceMapping::vector_to_scene(const Eigen::Vector3d &device) const {
+Eigen::Vector3d WorkspaceMapping::vector_to_scene(const Eigen::Vector3d& device) const
+{
   return scale_ * (axes_ * device);
 }
 
-Eigen::Vector3d
-WorkspaceMapping::to_device(const Eigen::Vector3d &scene) const {
+Eigen::Vector3d WorkspaceMapping::to_device(const Eigen::Vector3d& scene) const
+{
   return axes_.transpose() * (scene - origin_) / scale_;
 }
 
-Eigen::Quaterniond
-WorkspaceMapping::rotation_to_scene(const Eigen::Quaterniond &device) const {
+Eigen::Quaterniond WorkspaceMapping::rotation_to_scene(const Eigen::Quaterniond& device) const
+{
   // A rotation R in device axes is A R A^T in scene axes.
-  return Eigen::Quaterniond(axes_ * device.toRotationMatrix() *
-                            axes_.transpose());
+  return Eigen::Quaterniond(axes_ * device.toRotationMatrix() * axes_.transpose());
 }
 
-Eigen::Matrix4d RigidMotion::matrix() const {
+Eigen::Matrix4d RigidMotion::matrix() const
+{
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   const Eigen::Matrix3d r = rotation.toRotationMatrix();
   m.topLeftCorner<3, 3>() = r;
@@ -62,9 +64,11 @@ Eigen::Matrix4d RigidMotion::matrix() const {
   return m;
 }
 
-HandActions HandController::finish() {
+HandActions HandController::finish()
+{
   HandActions actions;
-  if (held_) {
+  if (held_)
+  {
     actions.release = tool_ == Tool::deform;
     actions.end_hold = tool_ == Tool::hold_and_turn;
   }
@@ -72,8 +76,10 @@ HandActions HandController::finish() {
   return actions;
 }
 
-HandActions HandController::set_tool(Tool tool) {
-  if (tool == tool_) {
+HandActions HandController::set_tool(Tool tool)
+{
+  if (tool == tool_)
+  {
     return {};
   }
   HandActions actions = finish();
@@ -81,65 +87,67 @@ HandActions HandController::set_tool(Tool tool) {
   return actions;
 }
 
-HandActions HandController::update(const StylusState &stylus,
-                                   const Brush &brush) {
-  const bool finite =
-      stylus.position.allFinite() && stylus.orientation.coeffs().allFinite();
-  if (!stylus.button || !finite) {
+HandActions HandController::update(const StylusState& stylus, const Brush& brush)
+{
+  const bool finite = stylus.position.allFinite() && stylus.orientation.coeffs().allFinite();
+  if (!stylus.button || !finite)
+  {
     return finish();
   }
   HandActions actions;
   const bool pressed = !held_;
-  if (pressed) {
+  if (pressed)
+  {
     held_ = true;
     press_position_ = stylus.position;
     press_orientation_ = stylus.orientation.normalized();
   }
-  switch (tool_) {
-  case Tool::deform:
-    actions.grasp = pressed;
-    actions.grasp_position = press_position_;
-    actions.set_displacement = true;
-    actions.displacement = stylus.position - press_position_;
-    break;
-  case Tool::paint: {
-    const double spacing = 0.25 * brush.radius;
-    if (pressed || (stylus.position - last_dab_).norm() >= spacing) {
-      const Eigen::Vector3d &p = stylus.position;
-      actions.dabs.push_back({p.x(), p.y(), p.z(), brush.radius,
-                              std::clamp(brush.value, 0.0, 1.0),
-                              std::clamp(brush.strength, 0.0, 1.0)});
-      last_dab_ = p;
+  switch (tool_)
+  {
+    case Tool::deform:
+      actions.grasp = pressed;
+      actions.grasp_position = press_position_;
+      actions.set_displacement = true;
+      actions.displacement = stylus.position - press_position_;
+      break;
+    case Tool::paint:
+    {
+      const double spacing = 0.25 * brush.radius;
+      if (pressed || (stylus.position - last_dab_).norm() >= spacing)
+      {
+        const Eigen::Vector3d& p = stylus.position;
+        actions.dabs.push_back({ p.x(), p.y(), p.z(), brush.radius,
+          std::clamp(brush.value, 0.0, 1.0), std::clamp(brush.strength, 0.0, 1.0) });
+        last_dab_ = p;
+      }
+      break;
     }
-    break;
-  }
-  case Tool::hold_and_turn:
-    actions.begin_hold = pressed;
-    actions.set_motion = true;
-    actions.motion.pivot = press_position_;
-    actions.motion.translation = stylus.position - press_position_;
-    actions.motion.rotation =
-        (stylus.orientation.normalized() * press_orientation_.conjugate())
-            .normalized();
-    break;
+    case Tool::hold_and_turn:
+      actions.begin_hold = pressed;
+      actions.set_motion = true;
+      actions.motion.pivot = press_position_;
+      actions.motion.translation = stylus.position - press_position_;
+      actions.motion.rotation =
+        (stylus.orientation.normalized() * press_orientation_.conjugate()).normalized();
+      break;
   }
   return actions;
 }
 
-Eigen::Vector3d malleability_color(double m) {
-  static const double stops[5][4] = {{0.0, 0.0, 0.0, 0.0},
-                                     {0.4, 0.9, 0.0, 0.0},
-                                     {0.6, 1.0, 0.5, 0.0},
-                                     {0.8, 1.0, 0.9, 0.1},
-                                     {1.0, 1.0, 1.0, 1.0}};
+Eigen::Vector3d malleability_color(double m)
+{
+  static const double stops[5][4] = { { 0.0, 0.0, 0.0, 0.0 }, { 0.4, 0.9, 0.0, 0.0 },
+    { 0.6, 1.0, 0.5, 0.0 }, { 0.8, 1.0, 0.9, 0.1 }, { 1.0, 1.0, 1.0, 1.0 } };
   m = std::isfinite(m) ? std::clamp(m, 0.0, 1.0) : 0.0;
   int i = 0;
-  while (i < 3 && m > stops[i + 1][0]) {
+  while (i < 3 && m > stops[i + 1][0])
+  {
     ++i;
   }
   const double f = (m - stops[i][0]) / (stops[i + 1][0] - stops[i][0]);
   Eigen::Vector3d c;
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < 3; ++k)
+  {
     c[k] = stops[i][k + 1] + f * (stops[i + 1][k + 1] - stops[i][k + 1]);
   }
   return c;

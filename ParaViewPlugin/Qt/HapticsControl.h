@@ -1,18 +1,19 @@
 #pragma once
-// The haptic interactor's decisions, free of Qt, VTK and ParaView so that they
-// are unit tested (Testing/GUI/TestHapticsControl.cpp): where the device
-// workspace sits in the scene, and what one hand asks of the pipeline each
-// frame.
+// The haptic interactor's decisions, free of Qt, VTK and ParaView so that they are unit
+// tested (Testing/GUI/TestHapticsControl.cpp): where the device workspace sits in the
+// scene, and what one hand asks of the pipeline each frame.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <array>
 #include <vector>
 
-namespace geoshaping::interactor {
+namespace geoshaping::interactor
+{
 
 // The active view's camera, in scene units (what vtkCamera reports).
-struct CameraFrame {
+struct CameraFrame
+{
   Eigen::Vector3d position = Eigen::Vector3d::UnitZ();
   Eigen::Vector3d focal_point = Eigen::Vector3d::Zero();
   Eigen::Vector3d view_up = Eigen::Vector3d::UnitY();
@@ -21,65 +22,71 @@ struct CameraFrame {
   double parallel_scale = 1.0;
 };
 
-// Device workspace (metres; x right, y up, z toward the user, as PHANToM and
-// CHAI3D devices report) -> scene. The workspace centre sits at the camera's
-// focal point, its axes follow the screen (x right, y up, z toward the viewer)
-// and its radius spans half the view height at the focal distance: the stylus
-// moves where the user looks, and a zoom makes the same hand motion finer.
-class WorkspaceMapping {
+// Device workspace (metres; x right, y up, z toward the user, as PHANToM and CHAI3D
+// devices report) -> scene. The workspace centre sits at the camera's focal point, its
+// axes follow the screen (x right, y up, z toward the viewer) and its radius spans half
+// the view height at the focal distance: the stylus moves where the user looks, and a
+// zoom makes the same hand motion finer.
+class WorkspaceMapping
+{
 public:
   WorkspaceMapping() = default;
-  WorkspaceMapping(const CameraFrame &camera, double workspace_radius);
+  WorkspaceMapping(const CameraFrame& camera, double workspace_radius);
 
-  // False for a degenerate camera (position on the focal point, up along the
-  // view); the mapping is then the identity.
+  // False for a degenerate camera (position on the focal point, up along the view);
+  // the mapping is then the identity.
   bool valid() const { return valid_; }
   double scale() const { return scale_; } // scene units per metre
 
-  Eigen::Vector3d to_scene(const Eigen::Vector3d &device) const;
-  Eigen::Vector3d to_device(const Eigen::Vector3d &scene) const;
-  Eigen::Vector3d vector_to_scene(const Eigen::Vector3d &device) const;
-  Eigen::Quaterniond rotation_to_scene(const Eigen::Quaterniond &device) const;
+  Eigen::Vector3d to_scene(const Eigen::Vector3d& device) const;
+  Eigen::Vector3d to_device(const Eigen::Vector3d& scene) const;
+  Eigen::Vector3d vector_to_scene(const Eigen::Vector3d& device) const;
+  Eigen::Quaterniond rotation_to_scene(const Eigen::Quaterniond& device) const;
 
 private:
-  Eigen::Matrix3d axes_ =
-      Eigen::Matrix3d::Identity(); // columns: screen x, y, z in scene
+  Eigen::Matrix3d axes_ = Eigen::Matrix3d::Identity(); // columns: screen x, y, z in scene
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   double scale_ = 1.0;
   bool valid_ = false;
 };
 
-enum class Tool { paint, deform, hold_and_turn };
+enum class Tool
+{
+  paint,
+  deform,
+  hold_and_turn
+};
 
 // One hand's stylus this frame, in the coordinates of the object it acts on.
-struct StylusState {
+struct StylusState
+{
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   bool button = false;
 };
 
-struct Brush {
-  double radius = 5.0;   // scene units
-  double value = 1.0;    // malleability painted, [0, 1]
+struct Brush
+{
+  double radius = 5.0; // scene units
+  double value = 1.0; // malleability painted, [0, 1]
   double strength = 0.5; // per dab, [0, 1]
 };
 
 // A rigid motion x -> rotation * (x - pivot) + pivot + translation.
-struct RigidMotion {
+struct RigidMotion
+{
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
   Eigen::Matrix4d matrix() const;
 };
 
-// What a hand asks of the pipeline this frame; the ParaView side carries it
-// out.
-struct HandActions {
-  bool grasp =
-      false; // Deform press: grasp the vertex nearest to grasp_position
+// What a hand asks of the pipeline this frame; the ParaView side carries it out.
+struct HandActions
+{
+  bool grasp = false; // Deform press: grasp the vertex nearest to grasp_position
   Eigen::Vector3d grasp_position = Eigen::Vector3d::Zero();
-  bool set_displacement =
-      false; // Deform held: the grasped vertex's displacement
+  bool set_displacement = false; // Deform held: the grasped vertex's displacement
   Eigen::Vector3d displacement = Eigen::Vector3d::Zero();
   bool release = false; // Deform released (the shape stays as it is)
   std::vector<std::array<double, 6>> dabs; // Paint: x y z radius value strength
@@ -89,19 +96,19 @@ struct HandActions {
   bool end_hold = false;
 };
 
-// The per-hand state machine. Deform: the press grasps, holding drags by the
-// stylus motion since the press, releasing stops. Paint: a dab at the press and
-// then one each time the stylus has moved a quarter of the brush radius.
-// Hold-and-turn: the object follows the stylus's translation and rotation since
-// the press (6 DoF, about the stylus tip). Changing the tool ends what the old
-// tool was doing.
-class HandController {
+// The per-hand state machine. Deform: the press grasps, holding drags by the stylus
+// motion since the press, releasing stops. Paint: a dab at the press and then one each
+// time the stylus has moved a quarter of the brush radius. Hold-and-turn: the object
+// follows the stylus's translation and rotation since the press (6 DoF, about the
+// stylus tip). Changing the tool ends what the old tool was doing.
+class HandController
+{
 public:
   Tool tool() const { return tool_; }
   HandActions set_tool(Tool tool);
-  HandActions update(const StylusState &stylus, const Brush &brush);
+  HandActions update(const StylusState& stylus, const Brush& brush);
   bool held() const { return held_; }
-  const Eigen::Vector3d &press_position() const { return press_position_; }
+  const Eigen::Vector3d& press_position() const { return press_position_; }
 
 private:
   HandActions finish();
@@ -113,9 +120,8 @@ private:
   Eigen::Vector3d last_dab_ = Eigen::Vector3d::Zero();
 };
 
-// The heat map of the malleability palette (the "Malleability (black-body)"
-// preset's control points): black 0, red 0.4, orange 0.6, yellow 0.8, white 1.
-// RGB in [0, 1].
+// The heat map of the malleability palette (the "Malleability (black-body)" preset's
+// control points): black 0, red 0.4, orange 0.6, yellow 0.8, white 1. RGB in [0, 1].
 Eigen::Vector3d malleability_color(double m);
 
 } // namespace geoshaping::interactor

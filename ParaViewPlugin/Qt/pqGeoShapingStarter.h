@@ -3,11 +3,12 @@
 // "Malleability (black-body)" colour map available in the preset list.
 #include <QObject>
 
-class pqGeoShapingStarter : public QObject {
+class pqGeoShapingStarter : public QObject
+{
   Q_OBJECT
 
 public:
-  explicit pqGeoShapingStarter(QObject *parent = nullptr);
+  explicit pqGeoShapingStarter(QObject* parent = nullptr);
   ~pqGeoShapingStarter() override = default;
 
   void onStartup();

@@ -19,60 +19,63 @@
 namespace gi = geoshaping::interactor;
 using Kind = pqHapticsInteractor::DeviceKind;
 
-namespace {
+namespace
+{
 // OpenHaptics is offered only where its runtime library loads.
-bool openHapticsPresent() {
-  void *library = dlopen("libHD.so", RTLD_LAZY | RTLD_LOCAL);
-  if (library) {
+bool openHapticsPresent()
+{
+  void* library = dlopen("libHD.so", RTLD_LAZY | RTLD_LOCAL);
+  if (library)
+  {
     dlclose(library);
   }
   return library != nullptr;
 }
 
-QString swatchStyle(double value, bool selected) {
+QString swatchStyle(double value, bool selected)
+{
   const Eigen::Vector3d c = gi::malleability_color(value) * 255.0;
-  return QString("QToolButton { background-color: rgb(%1, %2, %3); border: "
-                 "%4px solid %5; }")
-      .arg(int(c.x()))
-      .arg(int(c.y()))
-      .arg(int(c.z()))
-      .arg(selected ? 3 : 1)
-      .arg(selected ? "#20a0ff" : "#808080");
+  return QString("QToolButton { background-color: rgb(%1, %2, %3); border: %4px solid %5; }")
+    .arg(int(c.x()))
+    .arg(int(c.y()))
+    .arg(int(c.z()))
+    .arg(selected ? 3 : 1)
+    .arg(selected ? "#20a0ff" : "#808080");
 }
-} // namespace
+}
 
-pqHapticsDockPanel::pqHapticsDockPanel(QWidget *parent)
-    : QDockWidget("Haptics", parent) {
+pqHapticsDockPanel::pqHapticsDockPanel(QWidget* parent)
+  : QDockWidget("Haptics", parent)
+{
   this->setObjectName("GeoShapingHapticsDock");
   this->Interactor = new pqHapticsInteractor(this);
   this->build();
-  QObject::connect(this->Interactor, &pqHapticsInteractor::frameDone, this,
-                   &pqHapticsDockPanel::onFrame);
+  QObject::connect(
+    this->Interactor, &pqHapticsInteractor::frameDone, this, &pqHapticsDockPanel::onFrame);
   pqHapticsTestHook::installIfRequested(this);
 }
 
 pqHapticsDockPanel::~pqHapticsDockPanel() = default;
 
-void pqHapticsDockPanel::build() {
-  auto *body = new QWidget(this);
-  auto *layout = new QVBoxLayout(body);
+void pqHapticsDockPanel::build()
+{
+  auto* body = new QWidget(this);
+  auto* layout = new QVBoxLayout(body);
   layout->addWidget(this->buildHand(0));
   layout->addWidget(this->buildHand(1));
-  auto *brush = new QFormLayout();
+  auto* brush = new QFormLayout();
   this->Radius = new QDoubleSpinBox(body);
   this->Radius->setRange(0.001, 1e6);
   this->Radius->setDecimals(3);
   this->Radius->setValue(this->Interactor->brush().radius);
-  this->Radius->setToolTip(
-      "Brush radius in scene units (the Dabs radius of MalleabilityPaint).");
+  this->Radius->setToolTip("Brush radius in scene units (the Dabs radius of MalleabilityPaint).");
   brush->addRow("Brush radius", this->Radius);
   layout->addLayout(brush);
   layout->addWidget(this->buildPalette());
   this->StartStop = new QPushButton("Start", body);
   this->StartStop->setObjectName("StartStop");
   layout->addWidget(this->StartStop);
-  this->Figures =
-      new QLabel("servo — Hz · frame — fps · deformation — ms", body);
+  this->Figures = new QLabel("servo — Hz · frame — fps · deformation — ms", body);
   this->Figures->setObjectName("Figures");
   this->Figures->setWordWrap(true);
   layout->addWidget(this->Figures);
@@ -82,38 +85,37 @@ void pqHapticsDockPanel::build() {
   layout->addStretch(1);
   this->setWidget(body);
 
-  QObject::connect(this->StartStop, &QPushButton::clicked, this,
-                   &pqHapticsDockPanel::onStartStop);
-  QObject::connect(this->Radius,
-                   QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-                   [this](double radius) {
-                     gi::Brush b = this->Interactor->brush();
-                     b.radius = radius;
-                     this->Interactor->setBrush(b);
-                   });
+  QObject::connect(this->StartStop, &QPushButton::clicked, this, &pqHapticsDockPanel::onStartStop);
+  QObject::connect(this->Radius, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+    [this](double radius) {
+      gi::Brush b = this->Interactor->brush();
+      b.radius = radius;
+      this->Interactor->setBrush(b);
+    });
   this->setPaintValue(this->Interactor->brush().value);
 }
 
-QWidget *pqHapticsDockPanel::buildHand(int hand) {
-  auto *box = new QWidget(this);
-  auto *form = new QFormLayout(box);
+QWidget* pqHapticsDockPanel::buildHand(int hand)
+{
+  auto* box = new QWidget(this);
+  auto* form = new QFormLayout(box);
   form->setContentsMargins(0, 0, 0, 0);
-  HandWidgets &w = this->Hands[hand];
+  HandWidgets& w = this->Hands[hand];
   w.device = new QComboBox(box);
   w.device->addItem("None", Kind::NoDevice);
   w.device->addItem("Replay file", Kind::ReplayFile);
   w.device->addItem("Simulated", Kind::Simulated);
-  if (openHapticsPresent()) {
+  if (openHapticsPresent())
+  {
     w.device->addItem("OpenHaptics", Kind::OpenHaptics);
   }
   w.device->addItem("Mouse", Kind::Mouse);
-  w.device->setCurrentIndex(
-      w.device->findData(hand == 0 ? Kind::Mouse : Kind::NoDevice));
+  w.device->setCurrentIndex(w.device->findData(hand == 0 ? Kind::Mouse : Kind::NoDevice));
   w.file = new QLineEdit(box);
   w.file->setPlaceholderText("trace file (t x y z qw qx qy qz buttons)");
-  auto *browse = new QToolButton(box);
+  auto* browse = new QToolButton(box);
   browse->setText("…");
-  auto *fileRow = new QHBoxLayout();
+  auto* fileRow = new QHBoxLayout();
   fileRow->addWidget(w.file);
   fileRow->addWidget(browse);
   w.tool = new QComboBox(box);
@@ -126,37 +128,36 @@ QWidget *pqHapticsDockPanel::buildHand(int hand) {
   form->addRow("Tool", w.tool);
 
   QObject::connect(browse, &QToolButton::clicked, this, [this, hand]() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, "Stylus trace", QString(),
-        "Stylus traces (*.trace *.txt);;All files (*)");
-    if (!path.isEmpty()) {
+    const QString path = QFileDialog::getOpenFileName(this, "Stylus trace", QString(),
+      "Stylus traces (*.trace *.txt);;All files (*)");
+    if (!path.isEmpty())
+    {
       this->Hands[hand].file->setText(path);
     }
   });
-  QObject::connect(
-      w.tool, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
-      [this, hand]() {
-        this->Interactor->setTool(
-            hand, gi::Tool(this->Hands[hand].tool->currentData().toInt()));
-      });
+  QObject::connect(w.tool, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+    [this, hand]() {
+      this->Interactor->setTool(hand, gi::Tool(this->Hands[hand].tool->currentData().toInt()));
+    });
   return box;
 }
 
-QWidget *pqHapticsDockPanel::buildPalette() {
-  auto *box = new QWidget(this);
-  auto *grid = new QGridLayout(box);
+QWidget* pqHapticsDockPanel::buildPalette()
+{
+  auto* box = new QWidget(this);
+  auto* grid = new QGridLayout(box);
   grid->setContentsMargins(0, 0, 0, 0);
   grid->setSpacing(2);
   grid->addWidget(new QLabel("Malleability (rigid → soft)", box), 0, 0, 1, 11);
-  for (int i = 0; i <= 10; ++i) {
+  for (int i = 0; i <= 10; ++i)
+  {
     const double value = i / 10.0;
-    auto *swatch = new QToolButton(box);
+    auto* swatch = new QToolButton(box);
     swatch->setObjectName(QString("Swatch%1").arg(i));
     swatch->setFixedSize(22, 22);
     swatch->setToolTip(QString("Paint malleability %1").arg(value, 0, 'f', 1));
     swatch->setProperty("malleability", value);
-    QObject::connect(swatch, &QToolButton::clicked, this,
-                     [this, value]() { this->setPaintValue(value); });
+    QObject::connect(swatch, &QToolButton::clicked, this, [this, value]() { this->setPaintValue(value); });
     grid->addWidget(swatch, 1, i);
     this->Swatches.append(swatch);
   }
@@ -165,29 +166,33 @@ QWidget *pqHapticsDockPanel::buildPalette() {
   return box;
 }
 
-void pqHapticsDockPanel::setPaintValue(double value) {
+void pqHapticsDockPanel::setPaintValue(double value)
+{
   gi::Brush b = this->Interactor->brush();
   b.value = value;
   this->Interactor->setBrush(b);
-  for (QToolButton *swatch : this->Swatches) {
+  for (QToolButton* swatch : this->Swatches)
+  {
     const double m = swatch->property("malleability").toDouble();
     swatch->setStyleSheet(swatchStyle(m, std::abs(m - value) < 1e-9));
   }
   this->PaintValue->setText(QString("Paint value %1").arg(value, 0, 'f', 2));
 }
 
-void pqHapticsDockPanel::setHand(int hand,
-                                 pqHapticsInteractor::DeviceKind device,
-                                 const QString &file, gi::Tool tool) {
-  HandWidgets &w = this->Hands[hand];
+void pqHapticsDockPanel::setHand(
+  int hand, pqHapticsInteractor::DeviceKind device, const QString& file, gi::Tool tool)
+{
+  HandWidgets& w = this->Hands[hand];
   w.device->setCurrentIndex(w.device->findData(device));
   w.file->setText(file);
   w.tool->setCurrentIndex(w.tool->findData(int(tool)));
 }
 
-bool pqHapticsDockPanel::start() {
+bool pqHapticsDockPanel::start()
+{
   std::array<pqHapticsInteractor::HandSetup, 2> setups;
-  for (int i = 0; i < 2; ++i) {
+  for (int i = 0; i < 2; ++i)
+  {
     setups[i].device = Kind(this->Hands[i].device->currentData().toInt());
     setups[i].file = this->Hands[i].file->text();
     setups[i].tool = gi::Tool(this->Hands[i].tool->currentData().toInt());
@@ -196,37 +201,45 @@ bool pqHapticsDockPanel::start() {
   const bool started = this->Interactor->start(setups, error);
   this->Status->setText(started ? QString() : error);
   this->StartStop->setText(started ? "Stop" : "Start");
-  for (const HandWidgets &w : this->Hands) {
+  for (const HandWidgets& w : this->Hands)
+  {
     w.device->setEnabled(!started);
     w.file->setEnabled(!started);
   }
   return started;
 }
 
-void pqHapticsDockPanel::stop() {
+void pqHapticsDockPanel::stop()
+{
   this->Interactor->stop();
   this->StartStop->setText("Start");
-  for (const HandWidgets &w : this->Hands) {
+  for (const HandWidgets& w : this->Hands)
+  {
     w.device->setEnabled(true);
     w.file->setEnabled(true);
   }
 }
 
-void pqHapticsDockPanel::onStartStop() {
-  if (this->Interactor->isRunning()) {
+void pqHapticsDockPanel::onStartStop()
+{
+  if (this->Interactor->isRunning())
+  {
     this->stop();
-  } else {
+  }
+  else
+  {
     this->start();
   }
 }
 
-void pqHapticsDockPanel::onFrame() {
-  const pqHapticsInteractor::Figures &f = this->Interactor->figures();
-  this->Figures->setText(QString("servo %1 / %2 Hz · frame %3 fps\ndeformation "
-                                 "%4 ms, %5 points displaced")
-                             .arg(f.servoHz[0], 0, 'f', 0)
-                             .arg(f.servoHz[1], 0, 'f', 0)
-                             .arg(f.framesPerSecond, 0, 'f', 1)
-                             .arg(f.deformationMilliseconds, 0, 'f', 2)
-                             .arg(f.displacedPoints));
+void pqHapticsDockPanel::onFrame()
+{
+  const pqHapticsInteractor::Figures& f = this->Interactor->figures();
+  this->Figures->setText(
+    QString("servo %1 / %2 Hz · frame %3 fps\ndeformation %4 ms, %5 points displaced")
+      .arg(f.servoHz[0], 0, 'f', 0)
+      .arg(f.servoHz[1], 0, 'f', 0)
+      .arg(f.framesPerSecond, 0, 'f', 1)
+      .arg(f.deformationMilliseconds, 0, 'f', 2)
+      .arg(f.displacedPoints));
 }

@@ -1,8 +1,7 @@
 #pragma once
 // The "Haptics" dock: a device and a tool for each hand, the brush radius, the
-// malleability palette (click a swatch to paint that value), start/stop and
-// live figures. Thin: every decision is in pqHapticsInteractor and
-// HapticsControl.
+// malleability palette (click a swatch to paint that value), start/stop and live figures.
+// Thin: every decision is in pqHapticsInteractor and HapticsControl.
 #include "pqHapticsInteractor.h"
 
 #include <QDockWidget>
@@ -14,17 +13,18 @@ class QLineEdit;
 class QPushButton;
 class QToolButton;
 
-class pqHapticsDockPanel : public QDockWidget {
+class pqHapticsDockPanel : public QDockWidget
+{
   Q_OBJECT
 
 public:
-  explicit pqHapticsDockPanel(QWidget *parent = nullptr);
+  explicit pqHapticsDockPanel(QWidget* parent = nullptr);
   ~pqHapticsDockPanel() override;
 
-  pqHapticsInteractor *interactor() const { return this->Interactor; }
+  pqHapticsInteractor* interactor() const { return this->Interactor; }
   // Chooses a hand's device (as the combo boxes would) and starts.
-  void setHand(int hand, pqHapticsInteractor::DeviceKind device,
-               const QString &file, geoshaping::interactor::Tool tool);
+  void setHand(int hand, pqHapticsInteractor::DeviceKind device, const QString& file,
+    geoshaping::interactor::Tool tool);
   bool start();
   void stop();
 
@@ -34,21 +34,22 @@ private Q_SLOTS:
   void setPaintValue(double value);
 
 private:
-  struct HandWidgets {
-    QComboBox *device = nullptr;
-    QLineEdit *file = nullptr;
-    QComboBox *tool = nullptr;
+  struct HandWidgets
+  {
+    QComboBox* device = nullptr;
+    QLineEdit* file = nullptr;
+    QComboBox* tool = nullptr;
   };
   void build();
-  QWidget *buildHand(int hand);
-  QWidget *buildPalette();
+  QWidget* buildHand(int hand);
+  QWidget* buildPalette();
 
-  pqHapticsInteractor *Interactor = nullptr;
+  pqHapticsInteractor* Interactor = nullptr;
   HandWidgets Hands[2];
-  QDoubleSpinBox *Radius = nullptr;
-  QLabel *PaintValue = nullptr;
-  QList<QToolButton *> Swatches;
-  QPushButton *StartStop = nullptr;
-  QLabel *Figures = nullptr;
-  QLabel *Status = nullptr;
+  QDoubleSpinBox* Radius = nullptr;
+  QLabel* PaintValue = nullptr;
+  QList<QToolButton*> Swatches;
+  QPushButton* StartStop = nullptr;
+  QLabel* Figures = nullptr;
+  QLabel* Status = nullptr;
 };

@@ -19,10 +19,10 @@
 namespace gi = geoshaping::interactor;
 namespace gh = geoshaping::haptics;
 
-struct pqHapticsInteractor::Hand {
+struct pqHapticsInteractor::Hand
+{
   DeviceKind kind = NoDevice;
-  gi::Tool tool =
-      gi::Tool::deform; // chosen in the dock; Ctrl in mouse mode paints
+  gi::Tool tool = gi::Tool::deform; // chosen in the dock; Ctrl in mouse mode paints
   std::unique_ptr<gh::HapticDevice> device;
   std::unique_ptr<gh::ServoLoop> servo;
   pqHapticsMouse mouse;
@@ -36,64 +36,77 @@ struct pqHapticsInteractor::Hand {
   vtkNew<vtkActor> cursor;
   vtkWeakPointer<vtkRenderer> renderer;
 
-  Hand() {
+  Hand()
+  {
     this->sphere->SetThetaResolution(16);
     this->sphere->SetPhiResolution(12);
     this->mapper->SetInputConnection(this->sphere->GetOutputPort());
     this->cursor->SetMapper(this->mapper);
     this->cursor->PickableOff();
   }
-  ~Hand() {
-    if (this->servo) {
+  ~Hand()
+  {
+    if (this->servo)
+    {
       this->servo->stop();
     }
-    if (this->renderer) {
+    if (this->renderer)
+    {
       this->renderer->RemoveActor(this->cursor);
     }
   }
-  void showCursor(vtkRenderer *r) {
-    if (r != this->renderer) {
-      if (this->renderer) {
+  void showCursor(vtkRenderer* r)
+  {
+    if (r != this->renderer)
+    {
+      if (this->renderer)
+      {
         this->renderer->RemoveActor(this->cursor);
       }
       this->renderer = r;
-      if (r) {
+      if (r)
+      {
         r->AddActor(this->cursor);
       }
     }
   }
 };
 
-pqHapticsInteractor::pqHapticsInteractor(QObject *parent) : QObject(parent) {
+pqHapticsInteractor::pqHapticsInteractor(QObject* parent)
+  : QObject(parent)
+{
   this->Timer.setInterval(16);
   this->Timer.setTimerType(Qt::PreciseTimer);
-  QObject::connect(&this->Timer, &QTimer::timeout, this,
-                   &pqHapticsInteractor::onFrame);
+  QObject::connect(&this->Timer, &QTimer::timeout, this, &pqHapticsInteractor::onFrame);
 }
 
-pqHapticsInteractor::~pqHapticsInteractor() { this->stop(); }
-
-bool pqHapticsInteractor::start(const std::array<HandSetup, 2> &setups,
-                                QString &error) {
+pqHapticsInteractor::~pqHapticsInteractor()
+{
   this->stop();
-  for (std::size_t i = 0; i < setups.size(); ++i) {
-    const HandSetup &setup = setups[i];
-    if (setup.device == NoDevice) {
+}
+
+bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString& error)
+{
+  this->stop();
+  for (std::size_t i = 0; i < setups.size(); ++i)
+  {
+    const HandSetup& setup = setups[i];
+    if (setup.device == NoDevice)
+    {
       continue;
     }
     auto hand = std::make_unique<Hand>();
     hand->kind = setup.device;
     hand->tool = setup.tool;
     hand->controller.set_tool(setup.tool);
-    if (setup.device != Mouse) {
-      const char *kinds[] = {"null", "replay", "simulated", "openhaptics"};
-      hand->device =
-          gh::make_device(kinds[setup.device], setup.file.toStdString());
+    if (setup.device != Mouse)
+    {
+      const char* kinds[] = { "null", "replay", "simulated", "openhaptics" };
+      hand->device = gh::make_device(kinds[setup.device], setup.file.toStdString());
       hand->servo = std::make_unique<gh::ServoLoop>(*hand->device);
-      if (!hand->servo->start()) {
-        error = QString("Hand %1: %2")
-                    .arg(i + 1)
-                    .arg(QString::fromStdString(hand->servo->error()));
+      if (!hand->servo->start())
+      {
+        error = QString("Hand %1: %2").arg(i + 1).arg(QString::fromStdString(hand->servo->error()));
         this->stop();
         return false;
       }
@@ -107,28 +120,35 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2> &setups,
   return true;
 }
 
-void pqHapticsInteractor::stop() {
+void pqHapticsInteractor::stop()
+{
   this->Timer.stop();
-  for (auto &hand : this->Hands) {
+  for (auto& hand : this->Hands)
+  {
     hand.reset();
   }
   this->Pipeline.render();
 }
 
-void pqHapticsInteractor::setTool(int hand, gi::Tool tool) {
-  if (hand >= 0 && hand < 2 && this->Hands[hand]) {
+void pqHapticsInteractor::setTool(int hand, gi::Tool tool)
+{
+  if (hand >= 0 && hand < 2 && this->Hands[hand])
+  {
     this->Hands[hand]->tool = tool;
-    this->apply(*this->Hands[hand],
-                this->Hands[hand]->controller.set_tool(tool));
+    this->apply(*this->Hands[hand], this->Hands[hand]->controller.set_tool(tool));
   }
 }
 
-bool pqHapticsInteractor::replaysFinished() const {
+bool pqHapticsInteractor::replaysFinished() const
+{
   bool any = false;
-  for (const auto &hand : this->Hands) {
-    if (hand && hand->device) {
-      auto *replay = dynamic_cast<const gh::ReplayDevice *>(hand->device.get());
-      if (!replay || !replay->finished()) {
+  for (const auto& hand : this->Hands)
+  {
+    if (hand && hand->device)
+    {
+      auto* replay = dynamic_cast<const gh::ReplayDevice*>(hand->device.get());
+      if (!replay || !replay->finished())
+      {
         return false;
       }
       any = true;
@@ -137,106 +157,115 @@ bool pqHapticsInteractor::replaysFinished() const {
   return any;
 }
 
-bool pqHapticsInteractor::stylusOf(Hand &hand,
-                                   const gi::WorkspaceMapping &mapping,
-                                   gi::StylusState &world) {
-  if (hand.kind == Mouse) {
+bool pqHapticsInteractor::stylusOf(
+  Hand& hand, const gi::WorkspaceMapping& mapping, gi::StylusState& world)
+{
+  if (hand.kind == Mouse)
+  {
     world = hand.mouse.state();
     return true;
   }
   hand.servo->poll_device(hand.latest);
-  if (!hand.controller.held()) {
+  if (!hand.controller.held())
+  {
     hand.mapping = mapping;
     this->Stats.sceneUnitsPerMetre = mapping.scale();
   }
-  const gh::DeviceSample &sample = hand.latest.sample;
+  const gh::DeviceSample& sample = hand.latest.sample;
   world.position = hand.mapping.to_scene(sample.position);
   world.orientation = hand.mapping.rotation_to_scene(sample.orientation);
   world.button = hand.latest.device_ok && (sample.buttons & 1u) != 0;
   return hand.latest.device_ok;
 }
 
-void pqHapticsInteractor::apply(Hand &hand, const gi::HandActions &actions) {
-  if (actions.grasp) {
+void pqHapticsInteractor::apply(Hand& hand, const gi::HandActions& actions)
+{
+  if (actions.grasp)
+  {
     this->Pipeline.grasp(actions.grasp_position);
     Eigen::Vector3d vertex = actions.grasp_position;
     double malleability = 0.5;
     this->Pipeline.graspedVertex(vertex, malleability);
-    if (hand.device) {
-      const Eigen::Vector3d world =
-          (this->Pipeline.objectMatrix() * actions.grasp_position.homogeneous())
-              .hnormalized();
+    if (hand.device)
+    {
+      const Eigen::Vector3d world = (this->Pipeline.objectMatrix() *
+        actions.grasp_position.homogeneous()).hnormalized();
       hand.anchor = hand.mapping.to_device(world);
-      hand.stiffness = gh::coupling_stiffness(malleability, gh::ForceParams(),
-                                              hand.device->limits());
+      hand.stiffness =
+        gh::coupling_stiffness(malleability, gh::ForceParams(), hand.device->limits());
     }
   }
-  if (actions.set_displacement) {
+  if (actions.set_displacement)
+  {
     this->Pipeline.setDisplacement(actions.displacement);
     this->LastDisplacement = actions.displacement;
   }
   this->Pipeline.appendDabs(actions.dabs);
-  if (actions.begin_hold) {
+  if (actions.begin_hold)
+  {
     this->HoldStart = this->Pipeline.objectMatrix();
   }
-  if (actions.set_motion) {
+  if (actions.set_motion)
+  {
     this->Pipeline.setObjectMatrix(actions.motion.matrix() * this->HoldStart);
   }
 }
 
-void pqHapticsInteractor::publishScene(Hand &hand) {
-  if (!hand.servo) {
+void pqHapticsInteractor::publishScene(Hand& hand)
+{
+  if (!hand.servo)
+  {
     return;
   }
-  gh::SceneSnapshot &scene = hand.servo->scene_back();
+  gh::SceneSnapshot& scene = hand.servo->scene_back();
   scene.stamp = gh::Clock::now();
   scene.sequence = ++this->Sequence;
-  scene.grasping =
-      hand.controller.held() && hand.controller.tool() == gi::Tool::deform;
+  scene.grasping = hand.controller.held() && hand.controller.tool() == gi::Tool::deform;
   scene.grasp_anchor = hand.anchor;
   scene.grasp_stiffness = hand.stiffness;
   scene.contact_triangles.clear();
   hand.servo->publish_scene();
 }
 
-void pqHapticsInteractor::onFrame() {
+void pqHapticsInteractor::onFrame()
+{
   this->Pipeline.refresh();
-  pqRenderView *view = this->Pipeline.view();
-  vtkSMRenderViewProxy *viewProxy = view ? view->getRenderViewProxy() : nullptr;
+  pqRenderView* view = this->Pipeline.view();
+  vtkSMRenderViewProxy* viewProxy = view ? view->getRenderViewProxy() : nullptr;
   const gi::CameraFrame camera = this->Pipeline.camera();
   const Eigen::Matrix4d object = this->Pipeline.objectMatrix();
   const Eigen::Matrix4d toObject = object.inverse();
-  for (auto &handPtr : this->Hands) {
-    if (!handPtr) {
+  for (auto& handPtr : this->Hands)
+  {
+    if (!handPtr)
+    {
       continue;
     }
-    Hand &hand = *handPtr;
-    const double radius =
-        hand.device ? hand.device->limits().workspace_radius : 0.08;
+    Hand& hand = *handPtr;
+    const double radius = hand.device ? hand.device->limits().workspace_radius : 0.08;
     const gi::WorkspaceMapping mapping(camera, radius);
     gi::StylusState world;
-    if (hand.kind == Mouse) {
+    if (hand.kind == Mouse)
+    {
       hand.mouse.attach(viewProxy);
     }
     this->stylusOf(hand, mapping, world);
     const bool mousePaints = hand.kind == Mouse && hand.mouse.paint();
-    this->apply(hand, hand.controller.set_tool(mousePaints ? gi::Tool::paint
-                                                           : hand.tool));
+    this->apply(hand, hand.controller.set_tool(mousePaints ? gi::Tool::paint : hand.tool));
 
     gi::StylusState local = world;
-    if (hand.controller.tool() != gi::Tool::hold_and_turn) {
+    if (hand.controller.tool() != gi::Tool::hold_and_turn)
+    {
       local.position = (toObject * world.position.homogeneous()).hnormalized();
     }
     this->apply(hand, hand.controller.update(local, this->Brush));
 
     const bool painting = hand.controller.tool() == gi::Tool::paint;
-    const Eigen::Vector3d color =
-        painting                 ? gi::malleability_color(this->Brush.value)
-        : hand.controller.held() ? Eigen::Vector3d(0.2, 1.0, 0.3)
-                                 : Eigen::Vector3d(0.2, 0.6, 1.0);
+    const Eigen::Vector3d color = painting ? gi::malleability_color(this->Brush.value)
+      : hand.controller.held()             ? Eigen::Vector3d(0.2, 1.0, 0.3)
+                                           : Eigen::Vector3d(0.2, 0.6, 1.0);
     hand.sphere->SetCenter(world.position.data());
-    hand.sphere->SetRadius(painting ? this->Brush.radius
-                                    : 0.004 * mapping.scale());
+    hand.sphere->SetRadius(painting ? this->Brush.radius : 0.004 * mapping.scale());
     hand.cursor->GetProperty()->SetColor(color.x(), color.y(), color.z());
     hand.cursor->SetVisibility(hand.kind != Mouse || world.button);
     hand.showCursor(viewProxy ? viewProxy->GetRenderer() : nullptr);
@@ -247,26 +276,28 @@ void pqHapticsInteractor::onFrame() {
   Q_EMIT this->frameDone();
 }
 
-void pqHapticsInteractor::updateFigures() {
+void pqHapticsInteractor::updateFigures()
+{
   ++this->Stats.frames;
   ++this->FramesSince;
   const auto now = std::chrono::steady_clock::now();
-  const double seconds =
-      std::chrono::duration<double>(now - this->FpsSince).count();
-  if (seconds < 0.5) {
+  const double seconds = std::chrono::duration<double>(now - this->FpsSince).count();
+  if (seconds < 0.5)
+  {
     return;
   }
   this->Stats.framesPerSecond = this->FramesSince / seconds;
   this->FramesSince = 0;
   this->FpsSince = now;
-  for (std::size_t i = 0; i < this->Hands.size(); ++i) {
-    const Hand *hand = this->Hands[i].get();
+  for (std::size_t i = 0; i < this->Hands.size(); ++i)
+  {
+    const Hand* hand = this->Hands[i].get();
     this->Stats.servoHz[i] =
-        hand && hand->servo ? hand->servo->period_summary().mean_rate_hz : 0.0;
+      hand && hand->servo ? hand->servo->period_summary().mean_rate_hz : 0.0;
   }
-  if (this->Pipeline.hasDeformation()) {
-    this->Stats.deformationMilliseconds =
-        this->Pipeline.lastDeformationMilliseconds();
+  if (this->Pipeline.hasDeformation())
+  {
+    this->Stats.deformationMilliseconds = this->Pipeline.lastDeformationMilliseconds();
     this->Stats.displacedPoints = this->Pipeline.numberOfDisplacedPoints();
   }
 }

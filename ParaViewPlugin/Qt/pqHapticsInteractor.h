@@ -1,11 +1,10 @@
 #pragma once
-// The haptic interactor: one hand per device (or the mouse), a timer on the GUI
-// thread at ~60 Hz that takes each device's latest snapshot from its servo
-// loop, maps it into the scene through the active view's camera, lets the
-// hand's controller decide, drives the proxies (pqHapticsPipeline), moves the
-// stylus cursors, renders, and publishes the scene snapshot (grasp anchor,
-// stiffness) back to the servo loop for the force. After ParaView's
-// CAVEInteraction plugin: device thread -> snapshot -> QTimer.
+// The haptic interactor: one hand per device (or the mouse), a timer on the GUI thread
+// at ~60 Hz that takes each device's latest snapshot from its servo loop, maps it into
+// the scene through the active view's camera, lets the hand's controller decide, drives
+// the proxies (pqHapticsPipeline), moves the stylus cursors, renders, and publishes the
+// scene snapshot (grasp anchor, stiffness) back to the servo loop for the force.
+// After ParaView's CAVEInteraction plugin: device thread -> snapshot -> QTimer.
 #include "HapticsControl.h"
 #include "pqHapticsPipeline.h"
 
@@ -17,47 +16,52 @@
 #include <chrono>
 #include <memory>
 
-class pqHapticsInteractor : public QObject {
+class pqHapticsInteractor : public QObject
+{
   Q_OBJECT
 
 public:
-  enum DeviceKind { NoDevice, ReplayFile, Simulated, OpenHaptics, Mouse };
-  struct HandSetup {
+  enum DeviceKind
+  {
+    NoDevice,
+    ReplayFile,
+    Simulated,
+    OpenHaptics,
+    Mouse
+  };
+  struct HandSetup
+  {
     DeviceKind device = NoDevice;
     QString file; // trace for ReplayFile, optional keyframes for Simulated
     geoshaping::interactor::Tool tool = geoshaping::interactor::Tool::deform;
   };
-  struct Figures {
-    std::array<double, 2> servoHz{{0.0, 0.0}};
+  struct Figures
+  {
+    std::array<double, 2> servoHz{ { 0.0, 0.0 } };
     double framesPerSecond = 0.0;
     double deformationMilliseconds = 0.0;
     long long displacedPoints = 0;
     int frames = 0;
-    double sceneUnitsPerMetre =
-        0.0; // the workspace mapping's scale, first device hand
+    double sceneUnitsPerMetre = 0.0; // the workspace mapping's scale, first device hand
   };
 
-  explicit pqHapticsInteractor(QObject *parent = nullptr);
+  explicit pqHapticsInteractor(QObject* parent = nullptr);
   ~pqHapticsInteractor() override;
 
-  // Opens the devices and starts their servo loops and the frame timer; false
-  // with `error` when a device does not open (nothing is left running then).
-  bool start(const std::array<HandSetup, 2> &hands, QString &error);
+  // Opens the devices and starts their servo loops and the frame timer; false with
+  // `error` when a device does not open (nothing is left running then).
+  bool start(const std::array<HandSetup, 2>& hands, QString& error);
   void stop();
   bool isRunning() const { return this->Timer.isActive(); }
 
   void setTool(int hand, geoshaping::interactor::Tool tool);
-  void setBrush(const geoshaping::interactor::Brush &brush) {
-    this->Brush = brush;
-  }
-  const geoshaping::interactor::Brush &brush() const { return this->Brush; }
-  const Figures &figures() const { return this->Stats; }
+  void setBrush(const geoshaping::interactor::Brush& brush) { this->Brush = brush; }
+  const geoshaping::interactor::Brush& brush() const { return this->Brush; }
+  const Figures& figures() const { return this->Stats; }
   // True when every device hand replays a trace and all of them are over.
   bool replaysFinished() const;
   // The Displacement last sent to the deformation (for the GUI test).
-  const Eigen::Vector3d &lastDisplacement() const {
-    return this->LastDisplacement;
-  }
+  const Eigen::Vector3d& lastDisplacement() const { return this->LastDisplacement; }
 
 Q_SIGNALS:
   void frameDone();
@@ -67,11 +71,10 @@ private Q_SLOTS:
 
 private:
   struct Hand;
-  bool stylusOf(Hand &hand,
-                const geoshaping::interactor::WorkspaceMapping &mapping,
-                geoshaping::interactor::StylusState &world);
-  void apply(Hand &hand, const geoshaping::interactor::HandActions &actions);
-  void publishScene(Hand &hand);
+  bool stylusOf(Hand& hand, const geoshaping::interactor::WorkspaceMapping& mapping,
+    geoshaping::interactor::StylusState& world);
+  void apply(Hand& hand, const geoshaping::interactor::HandActions& actions);
+  void publishScene(Hand& hand);
   void updateFigures();
 
   std::array<std::unique_ptr<Hand>, 2> Hands;

@@ -21,73 +21,87 @@
 
 #include <cstring>
 
-namespace {
-bool isA(pqPipelineSource *source, const char *xmlName) {
+namespace
+{
+bool isA(pqPipelineSource* source, const char* xmlName)
+{
   return source && source->getProxy() && source->getProxy()->GetXMLName() &&
-         std::strcmp(source->getProxy()->GetXMLName(), xmlName) == 0;
+    std::strcmp(source->getProxy()->GetXMLName(), xmlName) == 0;
 }
-} // namespace
+}
 
-pqPipelineSource *pqHapticsFindSource(const char *xmlName) {
-  auto *model = pqApplicationCore::instance()->getServerManagerModel();
-  for (pqPipelineSource *source : model->findItems<pqPipelineSource *>()) {
-    if (isA(source, xmlName)) {
+pqPipelineSource* pqHapticsFindSource(const char* xmlName)
+{
+  auto* model = pqApplicationCore::instance()->getServerManagerModel();
+  for (pqPipelineSource* source : model->findItems<pqPipelineSource*>())
+  {
+    if (isA(source, xmlName))
+    {
       return source;
     }
   }
   return nullptr;
 }
 
-namespace {
+namespace
+{
 // The MalleabilityPaint feeding `source`, following first inputs upstream.
-pqPipelineSource *paintUpstreamOf(pqPipelineSource *source) {
-  auto *model = pqApplicationCore::instance()->getServerManagerModel();
-  vtkSMProxy *proxy = source ? source->getProxy() : nullptr;
-  for (int depth = 0; proxy && depth < 64; ++depth) {
-    auto *item = model->findItem<pqPipelineSource *>(proxy);
-    if (isA(item, "MalleabilityPaint")) {
+pqPipelineSource* paintUpstreamOf(pqPipelineSource* source)
+{
+  auto* model = pqApplicationCore::instance()->getServerManagerModel();
+  vtkSMProxy* proxy = source ? source->getProxy() : nullptr;
+  for (int depth = 0; proxy && depth < 64; ++depth)
+  {
+    auto* item = model->findItem<pqPipelineSource*>(proxy);
+    if (isA(item, "MalleabilityPaint"))
+    {
       return item;
     }
-    proxy = proxy->GetProperty("Input")
-                ? vtkSMPropertyHelper(proxy, "Input").GetAsProxy(0)
-                : nullptr;
+    proxy = proxy->GetProperty("Input") ? vtkSMPropertyHelper(proxy, "Input").GetAsProxy(0)
+                                        : nullptr;
   }
   return nullptr;
 }
-} // namespace
+}
 
-void pqHapticsPipeline::refresh() {
-  auto &active = pqActiveObjects::instance();
-  this->View = qobject_cast<pqRenderView *>(active.activeView());
-  pqPipelineSource *deformation = active.activeSource();
-  if (!isA(deformation, "ChainMailDeformation")) {
+void pqHapticsPipeline::refresh()
+{
+  auto& active = pqActiveObjects::instance();
+  this->View = qobject_cast<pqRenderView*>(active.activeView());
+  pqPipelineSource* deformation = active.activeSource();
+  if (!isA(deformation, "ChainMailDeformation"))
+  {
     deformation = pqHapticsFindSource("ChainMailDeformation");
   }
-  if (deformation != this->Deformation) {
+  if (deformation != this->Deformation)
+  {
     this->Deformation = deformation;
     this->Paint = nullptr;
   }
-  if (!this->Paint) {
+  if (!this->Paint)
+  {
     this->Paint = paintUpstreamOf(deformation);
-    if (!this->Paint) {
+    if (!this->Paint)
+    {
       this->Paint = pqHapticsFindSource("MalleabilityPaint");
     }
     this->Dabs.clear();
-    if (this->Paint) {
-      this->Dabs =
-          vtkSMPropertyHelper(this->Paint->getProxy(), "Dabs").GetDoubleArray();
+    if (this->Paint)
+    {
+      this->Dabs = vtkSMPropertyHelper(this->Paint->getProxy(), "Dabs").GetDoubleArray();
     }
   }
 }
 
-geoshaping::interactor::CameraFrame pqHapticsPipeline::camera() const {
+geoshaping::interactor::CameraFrame pqHapticsPipeline::camera() const
+{
   geoshaping::interactor::CameraFrame frame;
-  auto *viewProxy = this->View ? this->View->getRenderViewProxy() : nullptr;
-  vtkCamera *camera = viewProxy ? viewProxy->GetActiveCamera() : nullptr;
-  if (camera) {
+  auto* viewProxy = this->View ? this->View->getRenderViewProxy() : nullptr;
+  vtkCamera* camera = viewProxy ? viewProxy->GetActiveCamera() : nullptr;
+  if (camera)
+  {
     frame.position = Eigen::Map<const Eigen::Vector3d>(camera->GetPosition());
-    frame.focal_point =
-        Eigen::Map<const Eigen::Vector3d>(camera->GetFocalPoint());
+    frame.focal_point = Eigen::Map<const Eigen::Vector3d>(camera->GetFocalPoint());
     frame.view_up = Eigen::Map<const Eigen::Vector3d>(camera->GetViewUp());
     frame.view_angle_deg = camera->GetViewAngle();
     frame.parallel = camera->GetParallelProjection() != 0;
@@ -96,16 +110,18 @@ geoshaping::interactor::CameraFrame pqHapticsPipeline::camera() const {
   return frame;
 }
 
-vtkSMProxy *pqHapticsPipeline::representation(pqPipelineSource *source) const {
-  pqDataRepresentation *repr =
-      source && this->View ? source->getRepresentation(this->View) : nullptr;
+vtkSMProxy* pqHapticsPipeline::representation(pqPipelineSource* source) const
+{
+  pqDataRepresentation* repr = source && this->View ? source->getRepresentation(this->View) : nullptr;
   return repr ? repr->getProxy() : nullptr;
 }
 
-Eigen::Matrix4d pqHapticsPipeline::objectMatrix() const {
+Eigen::Matrix4d pqHapticsPipeline::objectMatrix() const
+{
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-  vtkSMProxy *repr = this->representation(this->Deformation);
-  if (!repr || !repr->GetProperty("Position")) {
+  vtkSMProxy* repr = this->representation(this->Deformation);
+  if (!repr || !repr->GetProperty("Position"))
+  {
     return m;
   }
   double position[3], orientation[3], origin[3], scale[3];
@@ -121,19 +137,22 @@ Eigen::Matrix4d pqHapticsPipeline::objectMatrix() const {
   t->RotateY(orientation[1]);
   t->RotateX(orientation[0]);
   t->RotateZ(orientation[2]);
-  t->Translate(origin[0] + position[0], origin[1] + position[1],
-               origin[2] + position[2]);
-  for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 4; ++j) {
+  t->Translate(origin[0] + position[0], origin[1] + position[1], origin[2] + position[2]);
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
       m(i, j) = t->GetMatrix()->GetElement(i, j);
     }
   }
   return m;
 }
 
-void pqHapticsPipeline::setObjectMatrix(const Eigen::Matrix4d &m) {
-  vtkSMProxy *repr = this->representation(this->Deformation);
-  if (!repr || !repr->GetProperty("Position") || !m.allFinite()) {
+void pqHapticsPipeline::setObjectMatrix(const Eigen::Matrix4d& m)
+{
+  vtkSMProxy* repr = this->representation(this->Deformation);
+  if (!repr || !repr->GetProperty("Position") || !m.allFinite())
+  {
     return;
   }
   double origin[3], scale[3];
@@ -145,8 +164,10 @@ void pqHapticsPipeline::setObjectMatrix(const Eigen::Matrix4d &m) {
   const Eigen::Vector3d position = m.topRightCorner<3, 1>() + linear * o - o;
   vtkNew<vtkTransform> rotation;
   vtkNew<vtkMatrix4x4> r;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
       r->SetElement(i, j, scale[j] != 0.0 ? linear(i, j) / scale[j] : 0.0);
     }
   }
@@ -158,100 +179,104 @@ void pqHapticsPipeline::setObjectMatrix(const Eigen::Matrix4d &m) {
   this->RepresentationModified = true;
 }
 
-void pqHapticsPipeline::grasp(const Eigen::Vector3d &position) {
-  if (vtkSMProxy *proxy =
-          this->Deformation ? this->Deformation->getProxy() : nullptr) {
+void pqHapticsPipeline::grasp(const Eigen::Vector3d& position)
+{
+  if (vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr)
+  {
     vtkSMPropertyHelper(proxy, "GraspMode").Set(1); // Nearest To Position
     vtkSMPropertyHelper(proxy, "GraspPosition").Set(position.data(), 3);
-    const double zero[3] = {0.0, 0.0, 0.0};
+    const double zero[3] = { 0.0, 0.0, 0.0 };
     vtkSMPropertyHelper(proxy, "Displacement").Set(zero, 3);
     this->DeformationModified = true;
   }
 }
 
-void pqHapticsPipeline::setDisplacement(const Eigen::Vector3d &d) {
-  if (vtkSMProxy *proxy =
-          this->Deformation ? this->Deformation->getProxy() : nullptr) {
+void pqHapticsPipeline::setDisplacement(const Eigen::Vector3d& d)
+{
+  if (vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr)
+  {
     vtkSMPropertyHelper(proxy, "Displacement").Set(d.data(), 3);
     this->DeformationModified = true;
   }
 }
 
-void pqHapticsPipeline::appendDabs(
-    const std::vector<std::array<double, 6>> &dabs) {
-  vtkSMProxy *proxy = this->Paint ? this->Paint->getProxy() : nullptr;
-  if (!proxy || dabs.empty()) {
+void pqHapticsPipeline::appendDabs(const std::vector<std::array<double, 6>>& dabs)
+{
+  vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
+  if (!proxy || dabs.empty())
+  {
     return;
   }
-  for (const auto &dab : dabs) {
+  for (const auto& dab : dabs)
+  {
     this->Dabs.insert(this->Dabs.end(), dab.begin(), dab.end());
   }
-  vtkSMPropertyHelper(proxy, "Dabs")
-      .Set(this->Dabs.data(), static_cast<unsigned int>(this->Dabs.size()));
+  vtkSMPropertyHelper(proxy, "Dabs").Set(this->Dabs.data(), static_cast<unsigned int>(this->Dabs.size()));
   this->PaintModified = true;
 }
 
-void pqHapticsPipeline::render() {
-  if (this->PaintModified && this->Paint) {
+void pqHapticsPipeline::render()
+{
+  if (this->PaintModified && this->Paint)
+  {
     this->Paint->getProxy()->UpdateVTKObjects();
   }
-  if (this->DeformationModified && this->Deformation) {
+  if (this->DeformationModified && this->Deformation)
+  {
     this->Deformation->getProxy()->UpdateVTKObjects();
   }
-  if (this->RepresentationModified && this->Deformation) {
-    if (vtkSMProxy *repr = this->representation(this->Deformation)) {
+  if (this->RepresentationModified && this->Deformation)
+  {
+    if (vtkSMProxy* repr = this->representation(this->Deformation))
+    {
       repr->UpdateVTKObjects();
     }
   }
-  this->PaintModified = this->DeformationModified =
-      this->RepresentationModified = false;
-  if (this->View) {
+  this->PaintModified = this->DeformationModified = this->RepresentationModified = false;
+  if (this->View)
+  {
     this->View->getViewProxy()->StillRender();
   }
 }
 
-bool pqHapticsPipeline::graspedVertex(Eigen::Vector3d &position,
-                                      double &malleability) const {
-  vtkSMProxy *proxy =
-      this->Deformation ? this->Deformation->getProxy() : nullptr;
-  if (!proxy) {
+bool pqHapticsPipeline::graspedVertex(Eigen::Vector3d& position, double& malleability) const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (!proxy)
+  {
     return false;
   }
-  malleability =
-      vtkSMPropertyHelper(proxy, "DefaultMalleability").GetAsDouble();
-  auto *filter = vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject());
-  auto *input =
-      filter ? vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0))
-             : nullptr;
+  malleability = vtkSMPropertyHelper(proxy, "DefaultMalleability").GetAsDouble();
+  auto* filter = vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject());
+  auto* input = filter ? vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0)) : nullptr;
   const vtkIdType id = input ? input->FindPoint(position.data()) : -1;
-  if (id < 0) {
+  if (id < 0)
+  {
     return false;
   }
   input->GetPoint(id, position.data());
-  const char *name =
-      vtkSMPropertyHelper(proxy, "MalleabilityArray").GetAsString(4);
-  vtkDataArray *array = name ? input->GetPointData()->GetArray(name) : nullptr;
-  if (array) {
+  const char* name = vtkSMPropertyHelper(proxy, "MalleabilityArray").GetAsString(4);
+  vtkDataArray* array = name ? input->GetPointData()->GetArray(name) : nullptr;
+  if (array)
+  {
     malleability = array->GetComponent(id, 0);
   }
   return true;
 }
 
-double pqHapticsPipeline::lastDeformationMilliseconds() const {
-  vtkSMProxy *proxy =
-      this->Deformation ? this->Deformation->getProxy() : nullptr;
-  if (!proxy) {
+double pqHapticsPipeline::lastDeformationMilliseconds() const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (!proxy)
+  {
     return 0.0;
   }
   proxy->UpdatePropertyInformation();
-  return vtkSMPropertyHelper(proxy, "LastDeformationMilliseconds")
-      .GetAsDouble();
+  return vtkSMPropertyHelper(proxy, "LastDeformationMilliseconds").GetAsDouble();
 }
 
-long long pqHapticsPipeline::numberOfDisplacedPoints() const {
-  vtkSMProxy *proxy =
-      this->Deformation ? this->Deformation->getProxy() : nullptr;
-  return proxy ? vtkSMPropertyHelper(proxy, "NumberOfDisplacedPoints")
-                     .GetAsIdType()
-               : 0;
+long long pqHapticsPipeline::numberOfDisplacedPoints() const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  return proxy ? vtkSMPropertyHelper(proxy, "NumberOfDisplacedPoints").GetAsIdType() : 0;
 }

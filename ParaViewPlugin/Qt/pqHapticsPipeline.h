@@ -1,7 +1,7 @@
 #pragma once
-// The proxies the haptic interactor drives, and the few things it reads back.
-// All pipeline access of the interactor goes through here (vtkSMPropertyHelper
-// -> UpdateVTKObjects, as ParaView's CAVEInteraction plugin does).
+// The proxies the haptic interactor drives, and the few things it reads back. All
+// pipeline access of the interactor goes through here (vtkSMPropertyHelper ->
+// UpdateVTKObjects, as ParaView's CAVEInteraction plugin does).
 #include "HapticsControl.h"
 
 #include <pqPipelineSource.h>
@@ -14,43 +14,42 @@
 
 class vtkSMProxy;
 
-// The first pipeline source of the session whose proxy is `xmlName`, or
-// nullptr.
-pqPipelineSource *pqHapticsFindSource(const char *xmlName);
+// The first pipeline source of the session whose proxy is `xmlName`, or nullptr.
+pqPipelineSource* pqHapticsFindSource(const char* xmlName);
 
-class pqHapticsPipeline {
+class pqHapticsPipeline
+{
 public:
-  // Finds the targets: the active source if it is a ChainMailDeformation, else
-  // the first one in the session; the MalleabilityPaint upstream of it (or the
-  // first one); the active render view.
+  // Finds the targets: the active source if it is a ChainMailDeformation, else the
+  // first one in the session; the MalleabilityPaint upstream of it (or the first one);
+  // the active render view.
   void refresh();
-  pqRenderView *view() const { return this->View; }
+  pqRenderView* view() const { return this->View; }
   bool hasDeformation() const { return this->Deformation != nullptr; }
   bool hasPaint() const { return this->Paint != nullptr; }
 
   geoshaping::interactor::CameraFrame camera() const;
 
   // Scene (world) <-> the coordinates of the displayed deformation's data: the
-  // representation's Position/Orientation/Origin/Scale, as vtkProp3D composes
-  // them.
+  // representation's Position/Orientation/Origin/Scale, as vtkProp3D composes them.
   Eigen::Matrix4d objectMatrix() const;
-  void setObjectMatrix(const Eigen::Matrix4d &m);
+  void setObjectMatrix(const Eigen::Matrix4d& m);
 
-  void grasp(const Eigen::Vector3d &position);
-  void setDisplacement(const Eigen::Vector3d &d);
-  void appendDabs(const std::vector<std::array<double, 6>> &dabs);
+  void grasp(const Eigen::Vector3d& position);
+  void setDisplacement(const Eigen::Vector3d& d);
+  void appendDabs(const std::vector<std::array<double, 6>>& dabs);
   // Pushes the changed properties (UpdateVTKObjects) and renders the view.
   void render();
 
-  // The grasped vertex's rest position and malleability (builtin sessions read
-  // the filter's input; otherwise the press position and DefaultMalleability).
-  bool graspedVertex(Eigen::Vector3d &position, double &malleability) const;
+  // The grasped vertex's rest position and malleability (builtin sessions read the
+  // filter's input; otherwise the press position and DefaultMalleability).
+  bool graspedVertex(Eigen::Vector3d& position, double& malleability) const;
 
   double lastDeformationMilliseconds() const;
   long long numberOfDisplacedPoints() const;
 
 private:
-  vtkSMProxy *representation(pqPipelineSource *source) const;
+  vtkSMProxy* representation(pqPipelineSource* source) const;
 
   QPointer<pqRenderView> View;
   QPointer<pqPipelineSource> Deformation;

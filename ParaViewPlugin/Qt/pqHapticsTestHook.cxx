@@ -12,10 +12,10 @@
 #include <vtkAlgorithm.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
-#include <vtkPointSet.h>
 #include <vtkRenderWindowInteractor.h>
-#include <vtkSMProxy.h>
 #include <vtkSMRenderViewProxy.h>
+#include <vtkPointSet.h>
+#include <vtkSMProxy.h>
 
 #include <QCoreApplication>
 #include <QFile>
@@ -25,106 +25,123 @@
 
 #include <algorithm>
 
-void pqHapticsTestHook::installIfRequested(pqHapticsDockPanel *dock) {
+void pqHapticsTestHook::installIfRequested(pqHapticsDockPanel* dock)
+{
   const QString trace = qEnvironmentVariable("GEOSHAPING_HAPTICS_REPLAY");
-  if (!trace.isEmpty()) {
-    new pqHapticsTestHook(
-        dock, trace, qEnvironmentVariable("GEOSHAPING_HAPTICS_TEST_OUTPUT"));
+  if (!trace.isEmpty())
+  {
+    new pqHapticsTestHook(dock, trace, qEnvironmentVariable("GEOSHAPING_HAPTICS_TEST_OUTPUT"));
   }
 }
 
-pqHapticsTestHook::pqHapticsTestHook(pqHapticsDockPanel *dock,
-                                     const QString &trace,
-                                     const QString &output)
-    : QObject(dock), Dock(dock), Trace(trace), Output(output) {
-  auto *timer = new QTimer(this);
+pqHapticsTestHook::pqHapticsTestHook(
+  pqHapticsDockPanel* dock, const QString& trace, const QString& output)
+  : QObject(dock)
+  , Dock(dock)
+  , Trace(trace)
+  , Output(output)
+{
+  auto* timer = new QTimer(this);
   QObject::connect(timer, &QTimer::timeout, this, &pqHapticsTestHook::poll);
   timer->start(100);
 }
 
-void pqHapticsTestHook::poll() {
-  // A test must end: after 45 s write what there is (started/timed_out tell)
-  // and quit.
-  if (++this->Polls > 450 && !this->Output.isEmpty()) {
+void pqHapticsTestHook::poll()
+{
+  // A test must end: after 45 s write what there is (started/timed_out tell) and quit.
+  if (++this->Polls > 450 && !this->Output.isEmpty())
+  {
     this->TimedOut = true;
     this->writeResults();
     return;
   }
-  if (!this->Started) {
-    // Wait for the pipeline (the --script that builds it runs after the plugin
-    // loads), then one more second: the script's renders process events, so
-    // this timer can fire before the script has set the camera.
-    if (!pqHapticsFindSource("ChainMailDeformation") ||
-        !pqActiveObjects::instance().activeView()) {
+  if (!this->Started)
+  {
+    // Wait for the pipeline (the --script that builds it runs after the plugin loads),
+    // then one more second: the script's renders process events, so this timer can
+    // fire before the script has set the camera.
+    if (!pqHapticsFindSource("ChainMailDeformation") || !pqActiveObjects::instance().activeView())
+    {
       this->ReadyPolls = 0;
       return;
     }
-    if (++this->ReadyPolls < 10) {
+    if (++this->ReadyPolls < 10)
+    {
       return;
     }
     const bool mouse = this->Trace == "mouse";
-    this->Dock->setHand(
-        0, mouse ? pqHapticsInteractor::Mouse : pqHapticsInteractor::ReplayFile,
-        mouse ? QString() : this->Trace, geoshaping::interactor::Tool::deform);
+    this->Dock->setHand(0, mouse ? pqHapticsInteractor::Mouse : pqHapticsInteractor::ReplayFile,
+      mouse ? QString() : this->Trace, geoshaping::interactor::Tool::deform);
     this->Dock->setHand(1, pqHapticsInteractor::NoDevice, QString(),
-                        geoshaping::interactor::Tool::hold_and_turn);
+      geoshaping::interactor::Tool::hold_and_turn);
     this->Started = this->Dock->start();
-    if (!this->Started && !this->Output.isEmpty()) {
+    if (!this->Started && !this->Output.isEmpty())
+    {
       this->writeResults();
     }
     return;
   }
-  if (this->Trace == "mouse") {
+  if (this->Trace == "mouse")
+  {
     this->dragMouse();
     return;
   }
   // A few frames after the trace is over, so the last sample has been rendered.
-  if (this->Dock->interactor()->replaysFinished() &&
-      ++this->FinishedPolls >= 5) {
-    if (!this->Output.isEmpty()) {
+  if (this->Dock->interactor()->replaysFinished() && ++this->FinishedPolls >= 5)
+  {
+    if (!this->Output.isEmpty())
+    {
       this->writeResults();
     }
   }
 }
 
-void pqHapticsTestHook::dragMouse() {
-  // Press at 30 % of the width, half the height (on the horizon's upper side in
-  // the GUI test's camera), drag 60 pixels up in 6 steps, release; one step per
-  // poll.
-  auto *view =
-      qobject_cast<pqRenderView *>(pqActiveObjects::instance().activeView());
-  vtkRenderWindowInteractor *interactor =
-      view ? view->getRenderViewProxy()->GetInteractor() : nullptr;
-  if (!interactor) {
+void pqHapticsTestHook::dragMouse()
+{
+  // Press at 30 % of the width, half the height (on the horizon's upper side in the GUI
+  // test's camera), drag 60 pixels up in 6 steps, release; one step per poll.
+  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
+  vtkRenderWindowInteractor* interactor =
+    view ? view->getRenderViewProxy()->GetInteractor() : nullptr;
+  if (!interactor)
+  {
     return;
   }
   const int step = this->MouseSteps++;
-  const int *size = interactor->GetSize();
+  const int* size = interactor->GetSize();
   const int x = static_cast<int>(0.3 * size[0]);
   const int y = size[1] / 2 + 10 * std::min(std::max(step - 1, 0), 6);
   interactor->SetEventInformation(x, y, 0, 0);
-  if (step == 1) {
+  if (step == 1)
+  {
     interactor->InvokeEvent(vtkCommand::LeftButtonPressEvent);
-  } else if (step > 1 && step <= 7) {
+  }
+  else if (step > 1 && step <= 7)
+  {
     interactor->InvokeEvent(vtkCommand::MouseMoveEvent);
-  } else if (step == 10) {
+  }
+  else if (step == 10)
+  {
     interactor->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
-  } else if (step == 14 && !this->Output.isEmpty()) {
+  }
+  else if (step == 14 && !this->Output.isEmpty())
+  {
     this->writeResults();
   }
 }
 
-void pqHapticsTestHook::writeResults() {
+void pqHapticsTestHook::writeResults()
+{
   QFile file(this->Output + ".txt");
-  if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
-    qCritical("GeoShaping test hook: cannot write %s",
-              qPrintable(file.fileName()));
+  if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+  {
+    qCritical("GeoShaping test hook: cannot write %s", qPrintable(file.fileName()));
     QCoreApplication::exit(1);
     return;
   }
   QTextStream out(&file);
-  const pqHapticsInteractor *interactor = this->Dock->interactor();
-  const pqHapticsInteractor::Figures &f = interactor->figures();
+  const pqHapticsInteractor* interactor = this->Dock->interactor();
+  const pqHapticsInteractor::Figures& f = interactor->figures();
   out << "started = " << int(this->Started) << "\n";
   out << "timed_out = " << int(this->TimedOut) << "\n";
   out << "dock_visible = " << int(this->Dock->isVisible()) << "\n";
@@ -135,33 +152,27 @@ void pqHapticsTestHook::writeResults() {
   out << "scene_units_per_metre = " << f.sceneUnitsPerMetre << "\n";
   out << "deformation_ms = " << f.deformationMilliseconds << "\n";
   out << "displaced_points = " << f.displacedPoints << "\n";
-  const Eigen::Vector3d &d = interactor->lastDisplacement();
-  auto *view =
-      qobject_cast<pqRenderView *>(pqActiveObjects::instance().activeView());
-  if (vtkCamera *camera =
-          view ? view->getRenderViewProxy()->GetActiveCamera() : nullptr) {
-    const double *p = camera->GetPosition();
+  const Eigen::Vector3d& d = interactor->lastDisplacement();
+  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
+  if (vtkCamera* camera = view ? view->getRenderViewProxy()->GetActiveCamera() : nullptr)
+  {
+    const double* p = camera->GetPosition();
     out << "camera_position = " << p[0] << " " << p[1] << " " << p[2] << "\n";
   }
-  out << "last_displacement = " << d.x() << " " << d.y() << " " << d.z()
-      << "\n";
+  out << "last_displacement = " << d.x() << " " << d.y() << " " << d.z() << "\n";
 
   // The deformed output against its input (builtin session: the filter itself).
-  pqPipelineSource *source = pqHapticsFindSource("ChainMailDeformation");
-  auto *filter = source ? vtkAlgorithm::SafeDownCast(
-                              source->getProxy()->GetClientSideObject())
-                        : nullptr;
-  auto *input =
-      filter ? vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0))
-             : nullptr;
-  auto *output = filter
-                     ? vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0))
-                     : nullptr;
-  if (input && output &&
-      input->GetNumberOfPoints() == output->GetNumberOfPoints()) {
+  pqPipelineSource* source = pqHapticsFindSource("ChainMailDeformation");
+  auto* filter =
+    source ? vtkAlgorithm::SafeDownCast(source->getProxy()->GetClientSideObject()) : nullptr;
+  auto* input = filter ? vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0)) : nullptr;
+  auto* output = filter ? vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0)) : nullptr;
+  if (input && output && input->GetNumberOfPoints() == output->GetNumberOfPoints())
+  {
     long long moved = 0;
     Eigen::Vector3d largest = Eigen::Vector3d::Zero();
-    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i) {
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
       Eigen::Vector3d a, b;
       input->GetPoint(i, a.data());
       output->GetPoint(i, b.data());
@@ -171,12 +182,13 @@ void pqHapticsTestHook::writeResults() {
     }
     out << "output_points = " << output->GetNumberOfPoints() << "\n";
     out << "moved_points = " << moved << "\n";
-    out << "max_displacement = " << largest.x() << " " << largest.y() << " "
-        << largest.z() << "\n";
+    out << "max_displacement = " << largest.x() << " " << largest.y() << " " << largest.z()
+        << "\n";
   }
   out.flush();
   pqCoreUtilities::mainWidget()->grab().save(this->Output + ".png");
-  if (pqView *view = pqActiveObjects::instance().activeView()) {
+  if (pqView* view = pqActiveObjects::instance().activeView())
+  {
     view->widget()->grab().save(this->Output + "-view.png");
   }
   this->Dock->stop();

@@ -1,39 +1,33 @@
 #pragma once
-// A hook for the GUI test and the demo, off unless asked for by the
-// environment:
-//   GEOSHAPING_HAPTICS_REPLAY=<trace>       hand 1 replays the trace with the
-//   Deform tool,
-//                                           started once a ChainMailDeformation
-//                                           exists; "mouse": hand 1 is the
-//                                           mouse, and the hook drags it up on
-//                                           the surface (Deform);
-//   GEOSHAPING_HAPTICS_TEST_OUTPUT=<prefix> when the replay is over, write
-//   <prefix>.png
-//                                           (the main window),
-//                                           <prefix>-view.png (the render view)
-//                                           and <prefix>.txt (key = value
-//                                           figures and the deformed output),
-//                                           then quit.
+// A hook for the GUI test and the demo, off unless asked for by the environment:
+//   GEOSHAPING_HAPTICS_REPLAY=<trace>       hand 1 replays the trace with the Deform tool,
+//                                           started once a ChainMailDeformation exists;
+//                                           "mouse": hand 1 is the mouse, and the hook
+//                                           drags it up on the surface (Deform);
+//   GEOSHAPING_HAPTICS_TEST_OUTPUT=<prefix> when the replay is over, write <prefix>.png
+//                                           (the main window), <prefix>-view.png (the
+//                                           render view) and <prefix>.txt (key = value
+//                                           figures and the deformed output), then quit.
 #include <QObject>
 
 class pqHapticsDockPanel;
 
-class pqHapticsTestHook : public QObject {
+class pqHapticsTestHook : public QObject
+{
   Q_OBJECT
 
 public:
-  static void installIfRequested(pqHapticsDockPanel *dock);
+  static void installIfRequested(pqHapticsDockPanel* dock);
 
 private Q_SLOTS:
   void poll();
 
 private:
-  pqHapticsTestHook(pqHapticsDockPanel *dock, const QString &trace,
-                    const QString &output);
+  pqHapticsTestHook(pqHapticsDockPanel* dock, const QString& trace, const QString& output);
   void dragMouse();
   void writeResults();
 
-  pqHapticsDockPanel *Dock;
+  pqHapticsDockPanel* Dock;
   QString Trace;
   QString Output;
   bool Started = false;

@@ -1,5 +1,5 @@
-// The haptic interactor's Qt-free logic: workspace -> scene mapping and the
-// per-hand tool state machine (ParaViewPlugin/Qt/HapticsControl.h).
+// The haptic interactor's Qt-free logic: workspace -> scene mapping and the per-hand
+// tool state machine (ParaViewPlugin/Qt/HapticsControl.h).
 #include "HapticsControl.h"
 
 #include <gtest/gtest.h>
@@ -10,32 +10,35 @@
 using namespace geoshaping::interactor;
 using Eigen::Vector3d;
 
-namespace {
-// Looking down -z at the origin from 10 units, y up: screen axes are the scene
-// axes.
-CameraFrame topCamera() {
+namespace
+{
+// Looking down -z at the origin from 10 units, y up: screen axes are the scene axes.
+CameraFrame topCamera()
+{
   CameraFrame c;
   c.position = Vector3d(0, 0, 10);
   c.focal_point = Vector3d::Zero();
   c.view_up = Vector3d::UnitY();
-  c.view_angle_deg =
-      90.0; // half height at the focal point = 10 * tan(45 deg) = 10
+  c.view_angle_deg = 90.0; // half height at the focal point = 10 * tan(45 deg) = 10
   return c;
 }
 
-StylusState at(const Vector3d &p, bool button) {
+StylusState at(const Vector3d& p, bool button)
+{
   StylusState s;
   s.position = p;
   s.button = button;
   return s;
 }
 
-void expectNear(const Vector3d &a, const Vector3d &b, double tol = 1e-12) {
+void expectNear(const Vector3d& a, const Vector3d& b, double tol = 1e-12)
+{
   EXPECT_LE((a - b).norm(), tol) << a.transpose() << " vs " << b.transpose();
 }
-} // namespace
+}
 
-TEST(WorkspaceMapping, PutsTheWorkspaceCentreAtTheFocalPoint) {
+TEST(WorkspaceMapping, PutsTheWorkspaceCentreAtTheFocalPoint)
+{
   CameraFrame c = topCamera();
   c.focal_point = Vector3d(5e5, 4e6, 100);
   c.position = c.focal_point + Vector3d(0, 0, 10);
@@ -44,7 +47,8 @@ TEST(WorkspaceMapping, PutsTheWorkspaceCentreAtTheFocalPoint) {
   expectNear(m.to_scene(Vector3d::Zero()), c.focal_point);
 }
 
-TEST(WorkspaceMapping, WorkspaceRadiusSpansHalfTheViewHeight) {
+TEST(WorkspaceMapping, WorkspaceRadiusSpansHalfTheViewHeight)
+{
   const WorkspaceMapping m(topCamera(), 0.08);
   EXPECT_NEAR(m.scale(), 10.0 / 0.08, 1e-9);
   CameraFrame parallel = topCamera();
@@ -53,24 +57,22 @@ TEST(WorkspaceMapping, WorkspaceRadiusSpansHalfTheViewHeight) {
   EXPECT_NEAR(WorkspaceMapping(parallel, 0.1).scale(), 40.0, 1e-12);
 }
 
-TEST(WorkspaceMapping, StylusMovesWhereTheUserLooks) {
-  // Camera on +x looking at the origin, z up: screen right is +y, toward the
-  // viewer +x.
+TEST(WorkspaceMapping, StylusMovesWhereTheUserLooks)
+{
+  // Camera on +x looking at the origin, z up: screen right is +y, toward the viewer +x.
   CameraFrame c;
   c.position = Vector3d(10, 0, 0);
   c.view_up = Vector3d::UnitZ();
   c.view_angle_deg = 90.0;
   const WorkspaceMapping m(c, 0.1);
   const double s = m.scale();
-  expectNear(m.vector_to_scene(Vector3d(0.01, 0, 0)), Vector3d(0, 0.01 * s, 0),
-             1e-9);
-  expectNear(m.vector_to_scene(Vector3d(0, 0.01, 0)), Vector3d(0, 0, 0.01 * s),
-             1e-9);
-  expectNear(m.vector_to_scene(Vector3d(0, 0, 0.01)), Vector3d(0.01 * s, 0, 0),
-             1e-9);
+  expectNear(m.vector_to_scene(Vector3d(0.01, 0, 0)), Vector3d(0, 0.01 * s, 0), 1e-9);
+  expectNear(m.vector_to_scene(Vector3d(0, 0.01, 0)), Vector3d(0, 0, 0.01 * s), 1e-9);
+  expectNear(m.vector_to_scene(Vector3d(0, 0, 0.01)), Vector3d(0.01 * s, 0, 0), 1e-9);
 }
 
-TEST(WorkspaceMapping, DeviceToSceneAndBackIsTheIdentity) {
+TEST(WorkspaceMapping, DeviceToSceneAndBackIsTheIdentity)
+{
   CameraFrame c;
   c.position = Vector3d(3, -7, 12);
   c.focal_point = Vector3d(1, 2, 3);
@@ -80,19 +82,19 @@ TEST(WorkspaceMapping, DeviceToSceneAndBackIsTheIdentity) {
   expectNear(m.to_device(m.to_scene(p)), p, 1e-12);
 }
 
-TEST(WorkspaceMapping, RotationsFollowTheCamera) {
+TEST(WorkspaceMapping, RotationsFollowTheCamera)
+{
   CameraFrame c;
   c.position = Vector3d(10, 0, 0);
   c.view_up = Vector3d::UnitZ();
   const WorkspaceMapping m(c, 0.1);
-  // A quarter turn about the device's y (screen up) is a quarter turn about
-  // scene z.
+  // A quarter turn about the device's y (screen up) is a quarter turn about scene z.
   const Eigen::Quaterniond q(Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitY()));
-  expectNear(m.rotation_to_scene(q) * Vector3d::UnitX(), Vector3d(0, 1, 0),
-             1e-12);
+  expectNear(m.rotation_to_scene(q) * Vector3d::UnitX(), Vector3d(0, 1, 0), 1e-12);
 }
 
-TEST(WorkspaceMapping, DegenerateCameraIsInvalid) {
+TEST(WorkspaceMapping, DegenerateCameraIsInvalid)
+{
   CameraFrame c = topCamera();
   c.view_up = Vector3d::UnitZ(); // along the view direction
   EXPECT_FALSE(WorkspaceMapping(c, 0.08).valid());
@@ -102,7 +104,8 @@ TEST(WorkspaceMapping, DegenerateCameraIsInvalid) {
   EXPECT_FALSE(WorkspaceMapping(topCamera(), 0.0).valid());
 }
 
-TEST(HandController, DeformPressGraspsAndHoldingDragsByTheStylusMotion) {
+TEST(HandController, DeformPressGraspsAndHoldingDragsByTheStylusMotion)
+{
   HandController hand;
   const Brush brush;
   EXPECT_FALSE(hand.update(at(Vector3d(1, 2, 3), false), brush).grasp);
@@ -120,7 +123,8 @@ TEST(HandController, DeformPressGraspsAndHoldingDragsByTheStylusMotion) {
   EXPECT_FALSE(hand.held());
 }
 
-TEST(HandController, PaintDabsAtThePressAndEveryQuarterRadius) {
+TEST(HandController, PaintDabsAtThePressAndEveryQuarterRadius)
+{
   HandController hand;
   hand.set_tool(Tool::paint);
   Brush brush;
@@ -129,13 +133,14 @@ TEST(HandController, PaintDabsAtThePressAndEveryQuarterRadius) {
   brush.strength = 0.7;
   HandActions press = hand.update(at(Vector3d(0, 0, 0), true), brush);
   ASSERT_EQ(press.dabs.size(), 1u);
-  EXPECT_EQ(press.dabs[0], (std::array<double, 6>{0, 0, 0, 4.0, 0.2, 0.7}));
+  EXPECT_EQ(press.dabs[0], (std::array<double, 6>{ 0, 0, 0, 4.0, 0.2, 0.7 }));
   EXPECT_TRUE(hand.update(at(Vector3d(0.9, 0, 0), true), brush).dabs.empty());
   EXPECT_EQ(hand.update(at(Vector3d(1.0, 0, 0), true), brush).dabs.size(), 1u);
   EXPECT_TRUE(hand.update(at(Vector3d(5, 0, 0), false), brush).dabs.empty());
 }
 
-TEST(HandController, HoldAndTurnFollowsTheStylusInSixDegreesOfFreedom) {
+TEST(HandController, HoldAndTurnFollowsTheStylusInSixDegreesOfFreedom)
+{
   HandController hand;
   hand.set_tool(Tool::hold_and_turn);
   const Brush brush;
@@ -146,16 +151,14 @@ TEST(HandController, HoldAndTurnFollowsTheStylusInSixDegreesOfFreedom) {
   const HandActions turn = hand.update(s, brush);
   ASSERT_TRUE(turn.set_motion);
   const Eigen::Matrix4d m = turn.motion.matrix();
-  // About the press point (1, 0, 0): the origin goes to (1, -1, 0), then up
-  // by 2.
-  expectNear((m * Eigen::Vector4d(0, 0, 0, 1)).head<3>(), Vector3d(1, -1, 2),
-             1e-12);
-  expectNear((m * Eigen::Vector4d(1, 0, 0, 1)).head<3>(), Vector3d(1, 0, 2),
-             1e-12);
+  // About the press point (1, 0, 0): the origin goes to (1, -1, 0), then up by 2.
+  expectNear((m * Eigen::Vector4d(0, 0, 0, 1)).head<3>(), Vector3d(1, -1, 2), 1e-12);
+  expectNear((m * Eigen::Vector4d(1, 0, 0, 1)).head<3>(), Vector3d(1, 0, 2), 1e-12);
   EXPECT_TRUE(hand.update(at(s.position, false), brush).end_hold);
 }
 
-TEST(HandController, ChangingTheToolEndsWhatTheOldToolWasDoing) {
+TEST(HandController, ChangingTheToolEndsWhatTheOldToolWasDoing)
+{
   HandController hand;
   const Brush brush;
   hand.update(at(Vector3d::Zero(), true), brush);
@@ -166,7 +169,8 @@ TEST(HandController, ChangingTheToolEndsWhatTheOldToolWasDoing) {
   EXPECT_EQ(hand.update(at(Vector3d::Zero(), true), brush).dabs.size(), 1u);
 }
 
-TEST(HandController, NonFiniteStylusReleasesInsteadOfDragging) {
+TEST(HandController, NonFiniteStylusReleasesInsteadOfDragging)
+{
   HandController hand;
   const Brush brush;
   hand.update(at(Vector3d::Zero(), true), brush);
@@ -176,7 +180,8 @@ TEST(HandController, NonFiniteStylusReleasesInsteadOfDragging) {
   EXPECT_FALSE(a.set_displacement);
 }
 
-TEST(Palette, ColoursFollowTheBlackBodyPreset) {
+TEST(Palette, ColoursFollowTheBlackBodyPreset)
+{
   expectNear(malleability_color(0.0), Vector3d(0, 0, 0));
   expectNear(malleability_color(0.4), Vector3d(0.9, 0, 0));
   expectNear(malleability_color(0.6), Vector3d(1, 0.5, 0));
