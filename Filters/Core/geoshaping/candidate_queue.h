@@ -2,6 +2,7 @@
 // Structures holding the (candidate, sponsor) pairs awaiting analysis.
 #include "geoshaping/adjacency.h"
 
+#include <functional>
 #include <queue>
 #include <vector>
 
@@ -53,13 +54,13 @@ private:
   std::size_t head_ = 0;
 };
 
-// A binary heap on rank alone, like the paper's STL priority queue: entries of equal
-// rank come out in whatever order the heap leaves them (the "vein" artefact).
-class HeapPriorityQueue
+// A binary heap of candidates on one key: the top is the entry `Before` orders first;
+// entries with equal keys come out in whatever order the heap leaves them.
+template <class Key, class Before>
+class KeyedHeap
 {
 public:
-  static constexpr bool needs_violation = false;
-  void push(Candidate c, index_t rank, double) { heap_.push({ rank, c }); }
+  void push_keyed(Candidate c, Key key) { heap_.push({ key, c }); }
   bool pop(Candidate& out)
   {
     if (heap_.empty())
@@ -73,14 +74,23 @@ public:
 private:
   struct Item
   {
-    index_t rank;
+    Key key;
     Candidate c;
   };
-  struct Later
+  struct Later // std::priority_queue puts the "largest" on top: invert Before
   {
-    bool operator()(const Item& a, const Item& b) const { return a.rank > b.rank; }
+    bool operator()(const Item& a, const Item& b) const { return Before()(b.key, a.key); }
   };
   std::priority_queue<Item, std::vector<Item>, Later> heap_;
+};
+
+// Like the paper's STL priority queue: lowest rank first, equal ranks in heap order
+// (the "vein" artefact).
+class HeapPriorityQueue : public KeyedHeap<index_t, std::less<index_t>>
+{
+public:
+  static constexpr bool needs_violation = false;
+  void push(Candidate c, index_t rank, double) { push_keyed(c, rank); }
 };
 
 // FIFO-preserving priority queue. One FIFO per distinct malleability value (bucket
@@ -146,32 +156,11 @@ private:
 
 // Enhanced ChainMail order: the candidate whose rest position lies farthest outside its
 // valid region (at the time it is queued) comes out first; ties in heap order.
-class MaxViolationQueue
+class MaxViolationQueue : public KeyedHeap<double, std::greater<double>>
 {
 public:
   static constexpr bool needs_violation = true;
-  void push(Candidate c, index_t, double violation) { heap_.push({ violation, c }); }
-  bool pop(Candidate& out)
-  {
-    if (heap_.empty())
-      return false;
-    out = heap_.top().c;
-    heap_.pop();
-    return true;
-  }
-  void clear() { heap_ = {}; }
-
-private:
-  struct Item
-  {
-    double violation;
-    Candidate c;
-  };
-  struct Smaller
-  {
-    bool operator()(const Item& a, const Item& b) const { return a.violation < b.violation; }
-  };
-  std::priority_queue<Item, std::vector<Item>, Smaller> heap_;
+  void push(Candidate c, index_t, double violation) { push_keyed(c, violation); }
 };
 
 } // namespace geoshaping
