@@ -108,6 +108,9 @@ public:
   HandActions set_tool(Tool tool);
   HandActions update(const StylusState& stylus, const Brush& brush);
   bool held() const { return held_; }
+  // Forget the press without any action (an undo during a drag): a button still held
+  // counts as a new press at the next update.
+  void cancel() { held_ = false; }
   const Eigen::Vector3d& press_position() const { return press_position_; }
 
 private:

@@ -2,6 +2,8 @@
 
 #include "pqHapticsTestHook.h"
 
+#include <pqCoreUtilities.h>
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
@@ -11,6 +13,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QShortcut>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -52,6 +55,8 @@ pqHapticsDockPanel::pqHapticsDockPanel(QWidget* parent)
   this->build();
   QObject::connect(
     this->Interactor, &pqHapticsInteractor::frameDone, this, &pqHapticsDockPanel::onFrame);
+  QObject::connect(this->Interactor, &pqHapticsInteractor::editsChanged, this,
+    &pqHapticsDockPanel::onEditsChanged);
   pqHapticsTestHook::installIfRequested(this);
 }
 
@@ -72,6 +77,7 @@ void pqHapticsDockPanel::build()
   brush->addRow("Brush radius", this->Radius);
   layout->addLayout(brush);
   layout->addWidget(this->buildPalette());
+  layout->addWidget(this->buildEdits());
   this->StartStop = new QPushButton("Start", body);
   this->StartStop->setObjectName("StartStop");
   layout->addWidget(this->StartStop);
@@ -166,6 +172,79 @@ QWidget* pqHapticsDockPanel::buildPalette()
   return box;
 }
 
+QWidget* pqHapticsDockPanel::buildEdits()
+{
+  auto* box = new QWidget(this);
+  auto* grid = new QGridLayout(box);
+  grid->setContentsMargins(0, 0, 0, 0);
+  struct
+  {
+    QPushButton** button;
+    const char* text;
+    const char* name;
+    gi::EditCommand command;
+    const char* tip;
+  } buttons[] = {
+    { &this->Undo, "Undo", "UndoEdit", gi::EditCommand::undo,
+      "Undo the last committed edit (Alt+Z while the interactor runs)" },
+    { &this->Redo, "Redo", "RedoEdit", gi::EditCommand::redo,
+      "Redo the last undone edit (Alt+Shift+Z or Alt+Y while the interactor runs)" },
+    { &this->Reset, "Reset", "ResetEdits", gi::EditCommand::reset,
+      "Back to the original surface; every edit stays redoable" },
+  };
+  int column = 0;
+  for (const auto& b : buttons)
+  {
+    *b.button = new QPushButton(b.text, box);
+    (*b.button)->setObjectName(b.name);
+    (*b.button)->setToolTip(b.tip);
+    const int command = int(b.command);
+    QObject::connect(
+      *b.button, &QPushButton::clicked, this, [this, command]() { this->runEdit(command); });
+    grid->addWidget(*b.button, 0, column++);
+  }
+  this->Edits = new QLabel("Edits: 0", box);
+  this->Edits->setObjectName("Edits");
+  grid->addWidget(this->Edits, 1, 0, 1, 3);
+
+  // Alt, not Ctrl: ParaView's own undo stack owns Ctrl+Z / Ctrl+Y (Edit menu). Enabled
+  // only while the interactor runs, so they never shadow anything otherwise.
+  QWidget* window = pqCoreUtilities::mainWidget();
+  const std::pair<const char*, gi::EditCommand> keys[] = {
+    { "Alt+Z", gi::EditCommand::undo },
+    { "Alt+Shift+Z", gi::EditCommand::redo },
+    { "Alt+Y", gi::EditCommand::redo },
+  };
+  for (const auto& key : keys)
+  {
+    auto* shortcut = new QShortcut(QKeySequence(key.first), window ? window : this);
+    shortcut->setContext(Qt::ApplicationShortcut);
+    shortcut->setEnabled(false);
+    const int command = int(key.second);
+    QObject::connect(
+      shortcut, &QShortcut::activated, this, [this, command]() { this->runEdit(command); });
+    QObject::connect(this, &QObject::destroyed, shortcut, &QObject::deleteLater);
+    this->Shortcuts.append(shortcut);
+  }
+  return box;
+}
+
+void pqHapticsDockPanel::runEdit(int command)
+{
+  this->Interactor->runEdit(gi::EditCommand(command));
+}
+
+void pqHapticsDockPanel::onEditsChanged()
+{
+  const gi::EditResult& r = this->Interactor->lastEditResult();
+  QString text = QString("Edits: %1, redoable %2").arg(r.edits).arg(r.redoable);
+  if (!r.message.empty())
+  {
+    text += QString(" (%1)").arg(QString::fromStdString(r.message));
+  }
+  this->Edits->setText(text);
+}
+
 void pqHapticsDockPanel::setPaintValue(double value)
 {
   gi::Brush b = this->Interactor->brush();
@@ -201,6 +280,10 @@ bool pqHapticsDockPanel::start()
   const bool started = this->Interactor->start(setups, error);
   this->Status->setText(started ? QString() : error);
   this->StartStop->setText(started ? "Stop" : "Start");
+  for (QShortcut* shortcut : this->Shortcuts)
+  {
+    shortcut->setEnabled(started);
+  }
   for (const HandWidgets& w : this->Hands)
   {
     w.device->setEnabled(!started);
@@ -213,6 +296,10 @@ void pqHapticsDockPanel::stop()
 {
   this->Interactor->stop();
   this->StartStop->setText("Start");
+  for (QShortcut* shortcut : this->Shortcuts)
+  {
+    shortcut->setEnabled(false);
+  }
   for (const HandWidgets& w : this->Hands)
   {
     w.device->setEnabled(true);

@@ -11,6 +11,7 @@ class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QShortcut;
 class QToolButton;
 
 class pqHapticsDockPanel : public QDockWidget
@@ -32,6 +33,8 @@ private Q_SLOTS:
   void onStartStop();
   void onFrame();
   void setPaintValue(double value);
+  void runEdit(int command);
+  void onEditsChanged();
 
 private:
   struct HandWidgets
@@ -43,6 +46,7 @@ private:
   void build();
   QWidget* buildHand(int hand);
   QWidget* buildPalette();
+  QWidget* buildEdits();
 
   pqHapticsInteractor* Interactor = nullptr;
   HandWidgets Hands[2];
@@ -52,4 +56,9 @@ private:
   QPushButton* StartStop = nullptr;
   QLabel* Figures = nullptr;
   QLabel* Status = nullptr;
+  QPushButton* Undo = nullptr;
+  QPushButton* Redo = nullptr;
+  QPushButton* Reset = nullptr;
+  QLabel* Edits = nullptr;
+  QList<QShortcut*> Shortcuts;
 };

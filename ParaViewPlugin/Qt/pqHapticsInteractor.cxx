@@ -200,7 +200,28 @@ void pqHapticsInteractor::apply(Hand& hand, const gi::HandActions& actions)
     this->Pipeline.setDisplacement(actions.displacement);
     this->LastDisplacement = actions.displacement;
   }
-  this->Pipeline.appendDabs(actions.dabs);
+  if (actions.release)
+  {
+    // Releasing the Deform tool commits: the shape the user sees becomes the rest shape
+    // of the next grasp, and EditHistory gets its record.
+    this->Pipeline.lastDeformationMilliseconds(); // updates the information properties
+    this->Stats.displacedAtRelease = this->Pipeline.numberOfDisplacedPoints();
+    this->LastEdit = this->Pipeline.runEdit(gi::EditCommand::commit);
+    this->ReleaseCommits += this->LastEdit.changed ? 1 : 0;
+    Q_EMIT this->editsChanged();
+  }
+  if (!actions.dabs.empty())
+  {
+    // Dabs land on the surface the user sees: while a hand drags, or once edits are
+    // committed, it is not the paint filter's input.
+    bool dragging = false;
+    for (const auto& other : this->Hands)
+    {
+      dragging = dragging ||
+        (other && other->controller.held() && other->controller.tool() == gi::Tool::deform);
+    }
+    this->Pipeline.appendDabs(actions.dabs, dragging || this->Pipeline.numberOfEdits() > 0);
+  }
   if (actions.begin_hold)
   {
     this->HoldStart = this->Pipeline.objectMatrix();
@@ -209,6 +230,24 @@ void pqHapticsInteractor::apply(Hand& hand, const gi::HandActions& actions)
   {
     this->Pipeline.setObjectMatrix(actions.motion.matrix() * this->HoldStart);
   }
+}
+
+gi::EditResult pqHapticsInteractor::runEdit(gi::EditCommand command)
+{
+  this->Pipeline.refresh();
+  for (auto& hand : this->Hands)
+  {
+    // An undo/redo/reset ends a drag without committing it.
+    if (hand && hand->controller.held() && hand->controller.tool() == gi::Tool::deform &&
+      command != gi::EditCommand::commit)
+    {
+      hand->controller.cancel();
+    }
+  }
+  this->LastEdit = this->Pipeline.runEdit(command);
+  this->Pipeline.render();
+  Q_EMIT this->editsChanged();
+  return this->LastEdit;
 }
 
 void pqHapticsInteractor::publishScene(Hand& hand)

@@ -41,6 +41,7 @@ public:
     double framesPerSecond = 0.0;
     double deformationMilliseconds = 0.0;
     long long displacedPoints = 0;
+    long long displacedAtRelease = 0; // NumberOfDisplacedPoints of the last committed drag
     int frames = 0;
     double sceneUnitsPerMetre = 0.0; // the workspace mapping's scale, first device hand
   };
@@ -63,8 +64,19 @@ public:
   // The Displacement last sent to the deformation (for the GUI test).
   const Eigen::Vector3d& lastDisplacement() const { return this->LastDisplacement; }
 
+  // Commit / undo / redo / reset on the target ChainMailDeformation, keeping its
+  // EditHistory in step (docs/editing.md), then render. Works running or not. A Deform
+  // hand's release commits the same way.
+  geoshaping::interactor::EditResult runEdit(geoshaping::interactor::EditCommand command);
+  const geoshaping::interactor::EditResult& lastEditResult() const { return this->LastEdit; }
+  int numberOfEdits() { return this->Pipeline.numberOfEdits(); }
+  // Commits made by releases since start (for the GUI test).
+  int releaseCommits() const { return this->ReleaseCommits; }
+  pqHapticsPipeline& pipeline() { return this->Pipeline; }
+
 Q_SIGNALS:
   void frameDone();
+  void editsChanged();
 
 private Q_SLOTS:
   void onFrame();
@@ -87,4 +99,6 @@ private:
   std::chrono::steady_clock::time_point FpsSince;
   int FramesSince = 0;
   std::uint64_t Sequence = 0;
+  geoshaping::interactor::EditResult LastEdit;
+  int ReleaseCommits = 0;
 };

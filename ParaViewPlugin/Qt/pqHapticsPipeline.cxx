@@ -10,6 +10,10 @@
 #include <vtkAlgorithm.h>
 #include <vtkCamera.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdList.h>
+#include <vtkPoints.h>
+#include <vtkMath.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -19,7 +23,10 @@
 #include <vtkSMSourceProxy.h>
 #include <vtkTransform.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <string>
 
 namespace
 {
@@ -86,9 +93,15 @@ void pqHapticsPipeline::refresh()
       this->Paint = pqHapticsFindSource("MalleabilityPaint");
     }
     this->Dabs.clear();
+    this->PointDabs.clear();
     if (this->Paint)
     {
       this->Dabs = vtkSMPropertyHelper(this->Paint->getProxy(), "Dabs").GetDoubleArray();
+      if (this->Paint->getProxy()->GetProperty("PointDabs"))
+      {
+        this->PointDabs =
+          vtkSMPropertyHelper(this->Paint->getProxy(), "PointDabs").GetDoubleArray();
+      }
     }
   }
 }
@@ -181,14 +194,66 @@ void pqHapticsPipeline::setObjectMatrix(const Eigen::Matrix4d& m)
 
 void pqHapticsPipeline::grasp(const Eigen::Vector3d& position)
 {
-  if (vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr)
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (!proxy)
+  {
+    return;
+  }
+  const double zero[3] = { 0.0, 0.0, 0.0 };
+  vtkSMPropertyHelper(proxy, "Displacement").Set(zero, 3);
+  vtkStaticPointLocator* locator = this->shownLocator();
+  const vtkIdType id = locator ? locator->FindClosestPoint(position.data()) : -1;
+  if (id >= 0)
+  {
+    // The vertex the user sees nearest (after committed edits it is not the nearest
+    // input vertex the filter's own Nearest To Position mode would take).
+    vtkSMPropertyHelper(proxy, "GraspMode").Set(0); // Point Id
+    vtkSMPropertyHelper(proxy, "GraspPointId").Set(static_cast<vtkIdType>(id));
+  }
+  else
   {
     vtkSMPropertyHelper(proxy, "GraspMode").Set(1); // Nearest To Position
     vtkSMPropertyHelper(proxy, "GraspPosition").Set(position.data(), 3);
-    const double zero[3] = { 0.0, 0.0, 0.0 };
-    vtkSMPropertyHelper(proxy, "Displacement").Set(zero, 3);
-    this->DeformationModified = true;
   }
+  this->DeformationModified = true;
+}
+
+vtkPointSet* pqHapticsPipeline::shownSurface() const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  auto* filter = proxy ? vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject()) : nullptr;
+  auto* output = filter ? vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0)) : nullptr;
+  return output && output->GetNumberOfPoints() > 0 ? output : nullptr;
+}
+
+vtkPointSet* pqHapticsPipeline::restSurface() const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  auto* filter = proxy ? vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject()) : nullptr;
+  return filter ? vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0)) : nullptr;
+}
+
+vtkStaticPointLocator* pqHapticsPipeline::shownLocator()
+{
+  vtkPointSet* shown = this->shownSurface();
+  if (!shown || !shown->GetPoints())
+  {
+    this->Locator = nullptr;
+    this->LocatorData = nullptr;
+    return nullptr;
+  }
+  const vtkMTimeType time = std::max(shown->GetMTime(), shown->GetPoints()->GetMTime());
+  if (!this->Locator || this->LocatorData != shown || this->LocatorTime != time)
+  {
+    // A static locator over ~10^4 points builds in well under a millisecond; the points
+    // change every frame of a drag, so it is rebuilt only when a dab or grasp needs it.
+    this->Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+    this->Locator->SetDataSet(shown);
+    this->Locator->BuildLocator();
+    this->LocatorData = shown;
+    this->LocatorTime = time;
+  }
+  return this->Locator;
 }
 
 void pqHapticsPipeline::setDisplacement(const Eigen::Vector3d& d)
@@ -200,19 +265,135 @@ void pqHapticsPipeline::setDisplacement(const Eigen::Vector3d& d)
   }
 }
 
-void pqHapticsPipeline::appendDabs(const std::vector<std::array<double, 6>>& dabs)
+void pqHapticsPipeline::appendDabs(const std::vector<std::array<double, 6>>& dabs, bool onShown)
 {
   vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
   if (!proxy || dabs.empty())
   {
     return;
   }
-  for (const auto& dab : dabs)
+  vtkStaticPointLocator* locator =
+    onShown && proxy->GetProperty("PointDabs") ? this->shownLocator() : nullptr;
+  if (locator)
   {
-    this->Dabs.insert(this->Dabs.end(), dab.begin(), dab.end());
+    vtkPointSet* shown = this->shownSurface();
+    const int falloff = vtkSMPropertyHelper(proxy, "Falloff").GetAsInt();
+    vtkNew<vtkIdList> found;
+    std::vector<long long> ids;
+    std::vector<double> distances;
+    for (const auto& dab : dabs)
+    {
+      const double centre[3] = { dab[0], dab[1], dab[2] };
+      locator->FindPointsWithinRadius(dab[3], centre, found);
+      ids.clear();
+      distances.clear();
+      for (vtkIdType k = 0; k < found->GetNumberOfIds(); ++k)
+      {
+        const vtkIdType id = found->GetId(k);
+        double p[3];
+        shown->GetPoint(id, p);
+        ids.push_back(id);
+        distances.push_back(std::sqrt(vtkMath::Distance2BetweenPoints(p, centre)));
+      }
+      geoshaping::interactor::append_point_dabs(
+        ids, distances, dab[3], dab[4], dab[5], falloff, this->PointDabs);
+    }
+    vtkSMPropertyHelper(proxy, "PointDabs")
+      .Set(this->PointDabs.data(), static_cast<unsigned int>(this->PointDabs.size()));
   }
-  vtkSMPropertyHelper(proxy, "Dabs").Set(this->Dabs.data(), static_cast<unsigned int>(this->Dabs.size()));
+  else
+  {
+    for (const auto& dab : dabs)
+    {
+      this->Dabs.insert(this->Dabs.end(), dab.begin(), dab.end());
+    }
+    vtkSMPropertyHelper(proxy, "Dabs")
+      .Set(this->Dabs.data(), static_cast<unsigned int>(this->Dabs.size()));
+  }
   this->PaintModified = true;
+}
+
+namespace
+{
+// EditProxy over the ChainMailDeformation's server-manager proxy.
+class SMEditProxy : public geoshaping::interactor::EditProxy
+{
+public:
+  explicit SMEditProxy(vtkSMProxy* proxy)
+    : Proxy(proxy)
+  {
+  }
+  void invoke(const char* command) override { this->Proxy->InvokeCommand(command); }
+  void update_information() override { this->Proxy->UpdatePropertyInformation(); }
+  std::string last_edit() override
+  {
+    const char* s = vtkSMPropertyHelper(this->Proxy, "LastEdit").GetAsString();
+    return s ? s : "";
+  }
+  int number_of_edits() override
+  {
+    return vtkSMPropertyHelper(this->Proxy, "NumberOfEdits").GetAsInt();
+  }
+  int number_of_redoable_edits() override
+  {
+    return vtkSMPropertyHelper(this->Proxy, "NumberOfRedoableEdits").GetAsInt();
+  }
+  std::vector<std::string> history() override
+  {
+    vtkSMPropertyHelper helper(this->Proxy, "EditHistory");
+    std::vector<std::string> records;
+    for (unsigned int i = 0; i < helper.GetNumberOfElements(); ++i)
+    {
+      const char* s = helper.GetAsString(i);
+      records.emplace_back(s ? s : "");
+    }
+    return records;
+  }
+  void set_history(const std::vector<std::string>& records) override
+  {
+    vtkSMPropertyHelper helper(this->Proxy, "EditHistory");
+    helper.SetNumberOfElements(static_cast<unsigned int>(records.size()));
+    for (std::size_t i = 0; i < records.size(); ++i)
+    {
+      helper.Set(static_cast<unsigned int>(i), records[i].c_str());
+    }
+  }
+  void release() override
+  {
+    vtkSMPropertyHelper(this->Proxy, "GraspMode").Set(0); // Point Id
+    vtkSMPropertyHelper(this->Proxy, "GraspPointId").Set(static_cast<vtkIdType>(-1));
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    vtkSMPropertyHelper(this->Proxy, "Displacement").Set(zero, 3);
+  }
+  void push() override { this->Proxy->UpdateVTKObjects(); }
+
+private:
+  vtkSMProxy* Proxy;
+};
+}
+
+geoshaping::interactor::EditResult pqHapticsPipeline::runEdit(
+  geoshaping::interactor::EditCommand command)
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (!proxy || !proxy->GetProperty("EditHistory"))
+  {
+    geoshaping::interactor::EditResult none;
+    none.message = "no ChainMailDeformation";
+    return none;
+  }
+  // CommitEdit commits the shape of the filter's last update: the one rendered last
+  // frame, which is what the user saw at the release.
+  SMEditProxy edits(proxy);
+  return geoshaping::interactor::run_edit(command, edits);
+}
+
+int pqHapticsPipeline::numberOfEdits() const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  return proxy && proxy->GetProperty("EditHistory")
+    ? static_cast<int>(vtkSMPropertyHelper(proxy, "EditHistory").GetNumberOfElements())
+    : 0;
 }
 
 void pqHapticsPipeline::render()
@@ -249,8 +430,16 @@ bool pqHapticsPipeline::graspedVertex(Eigen::Vector3d& position, double& malleab
   malleability = vtkSMPropertyHelper(proxy, "DefaultMalleability").GetAsDouble();
   auto* filter = vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject());
   auto* input = filter ? vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0)) : nullptr;
-  const vtkIdType id = input ? input->FindPoint(position.data()) : -1;
-  if (id < 0)
+  vtkIdType id = -1;
+  if (vtkSMPropertyHelper(proxy, "GraspMode").GetAsInt() == 0)
+  {
+    id = vtkSMPropertyHelper(proxy, "GraspPointId").GetAsIdType();
+  }
+  else if (input)
+  {
+    id = input->FindPoint(position.data());
+  }
+  if (!input || id < 0 || id >= input->GetNumberOfPoints())
   {
     return false;
   }

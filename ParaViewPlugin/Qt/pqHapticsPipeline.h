@@ -2,6 +2,7 @@
 // The proxies the haptic interactor drives, and the few things it reads back. All
 // pipeline access of the interactor goes through here (vtkSMPropertyHelper ->
 // UpdateVTKObjects, as ParaView's CAVEInteraction plugin does).
+#include "EditControl.h"
 #include "HapticsControl.h"
 
 #include <pqPipelineSource.h>
@@ -9,9 +10,14 @@
 
 #include <QPointer>
 
+#include <vtkSmartPointer.h>
+#include <vtkStaticPointLocator.h>
+#include <vtkType.h>
+
 #include <array>
 #include <vector>
 
+class vtkPointSet;
 class vtkSMProxy;
 
 // The first pipeline source of the session whose proxy is `xmlName`, or nullptr.
@@ -35,9 +41,25 @@ public:
   Eigen::Matrix4d objectMatrix() const;
   void setObjectMatrix(const Eigen::Matrix4d& m);
 
+  // Grasps the vertex of the shown (deformed) surface nearest to `position`: in a builtin
+  // session by GraspPointId from a locator on the deformation's client-side output,
+  // otherwise GraspMode = Nearest To Position (the filter's nearest *input* vertex).
   void grasp(const Eigen::Vector3d& position);
   void setDisplacement(const Eigen::Vector3d& d);
-  void appendDabs(const std::vector<std::array<double, 6>>& dabs);
+  // Dabs `x y z radius value strength`. When the shown surface differs from the paint's
+  // input (`onShown`: a drag is held or edits are committed) and the session is builtin,
+  // each dab becomes PointDabs on the vertices within its radius on the deformation's
+  // output (the surface the user sees); otherwise positional Dabs.
+  void appendDabs(const std::vector<std::array<double, 6>>& dabs, bool onShown);
+  // Commit / undo / redo / reset, keeping the client's EditHistory in step
+  // (docs/editing.md); pushes the proxy. Render afterwards.
+  geoshaping::interactor::EditResult runEdit(geoshaping::interactor::EditCommand command);
+  // Records in the client's EditHistory (0 without a deformation).
+  int numberOfEdits() const;
+  // The deformation's client-side output (builtin sessions), else nullptr.
+  vtkPointSet* shownSurface() const;
+  // The deformation's client-side input (builtin sessions), else nullptr.
+  vtkPointSet* restSurface() const;
   // Pushes the changed properties (UpdateVTKObjects) and renders the view.
   void render();
 
@@ -54,7 +76,13 @@ private:
   QPointer<pqRenderView> View;
   QPointer<pqPipelineSource> Deformation;
   QPointer<pqPipelineSource> Paint;
+  // A locator on the shown surface, rebuilt when its points change.
+  vtkStaticPointLocator* shownLocator();
   std::vector<double> Dabs;
+  std::vector<double> PointDabs;
+  vtkSmartPointer<vtkStaticPointLocator> Locator;
+  vtkMTimeType LocatorTime = 0;
+  vtkPointSet* LocatorData = nullptr;
   bool DeformationModified = false;
   bool PaintModified = false;
   bool RepresentationModified = false;

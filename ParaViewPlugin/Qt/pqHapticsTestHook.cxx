@@ -15,15 +15,19 @@
 #include <vtkRenderWindowInteractor.h>
 #include <vtkSMRenderViewProxy.h>
 #include <vtkPointSet.h>
+#include <vtkPoints.h>
+#include <vtkSMPropertyHelper.h>
 #include <vtkSMProxy.h>
 
 #include <QCoreApplication>
 #include <QFile>
 #include <QPixmap>
+#include <QPushButton>
 #include <QTextStream>
 #include <QTimer>
 
 #include <algorithm>
+#include <vector>
 
 void pqHapticsTestHook::installIfRequested(pqHapticsDockPanel* dock)
 {
@@ -130,6 +134,57 @@ void pqHapticsTestHook::dragMouse()
   }
 }
 
+namespace
+{
+std::vector<double> pointsOf(vtkPointSet* data)
+{
+  std::vector<double> xyz(3 * data->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    data->GetPoint(i, &xyz[3 * i]);
+  }
+  return xyz;
+}
+}
+
+void pqHapticsTestHook::checkEdits(QTextStream& out, vtkPointSet* input, vtkPointSet* output)
+{
+  // The release committed (docs/editing.md): one record in the client's EditHistory,
+  // the proxy released, and the output stays deformed. Then the dock's Undo button must
+  // give back the input bit for bit, and Redo the released shape bit for bit.
+  pqPipelineSource* source = pqHapticsFindSource("ChainMailDeformation");
+  vtkSMProxy* proxy = source->getProxy();
+  auto* filter = vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject());
+  auto shown = [filter, output]() {
+    auto* now = filter ? vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0)) : nullptr;
+    return now ? now : output;
+  };
+  out << "edit_history = " << vtkSMPropertyHelper(proxy, "EditHistory").GetNumberOfElements()
+      << "\n";
+  out << "release_commits = " << this->Dock->interactor()->releaseCommits() << "\n";
+  out << "grasp_point_id_after_release = "
+      << vtkSMPropertyHelper(proxy, "GraspPointId").GetAsIdType() << "\n";
+  const std::vector<double> rest = pointsOf(input);
+  const std::vector<double> released = pointsOf(output);
+  out << "released_differs_from_rest = " << int(released != rest) << "\n";
+  auto* undo = this->Dock->findChild<QPushButton*>("UndoEdit");
+  auto* redo = this->Dock->findChild<QPushButton*>("RedoEdit");
+  if (!undo || !redo)
+  {
+    out << "edit_buttons = 0\n";
+    return;
+  }
+  out << "edit_buttons = 1\n";
+  undo->click();
+  out << "edit_history_after_undo = "
+      << vtkSMPropertyHelper(proxy, "EditHistory").GetNumberOfElements() << "\n";
+  out << "undo_equals_rest = " << int(pointsOf(shown()) == rest) << "\n";
+  redo->click();
+  out << "edit_history_after_redo = "
+      << vtkSMPropertyHelper(proxy, "EditHistory").GetNumberOfElements() << "\n";
+  out << "redo_equals_released = " << int(pointsOf(shown()) == released) << "\n";
+}
+
 void pqHapticsTestHook::writeResults()
 {
   QFile file(this->Output + ".txt");
@@ -152,6 +207,7 @@ void pqHapticsTestHook::writeResults()
   out << "scene_units_per_metre = " << f.sceneUnitsPerMetre << "\n";
   out << "deformation_ms = " << f.deformationMilliseconds << "\n";
   out << "displaced_points = " << f.displacedPoints << "\n";
+  out << "displaced_at_release = " << f.displacedAtRelease << "\n";
   const Eigen::Vector3d& d = interactor->lastDisplacement();
   auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
   if (vtkCamera* camera = view ? view->getRenderViewProxy()->GetActiveCamera() : nullptr)
@@ -184,6 +240,10 @@ void pqHapticsTestHook::writeResults()
     out << "moved_points = " << moved << "\n";
     out << "max_displacement = " << largest.x() << " " << largest.y() << " " << largest.z()
         << "\n";
+  }
+  if (!this->TimedOut && this->Started && input && output)
+  {
+    this->checkEdits(out, input, output);
   }
   out.flush();
   pqCoreUtilities::mainWidget()->grab().save(this->Output + ".png");

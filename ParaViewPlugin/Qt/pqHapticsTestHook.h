@@ -11,6 +11,8 @@
 #include <QObject>
 
 class pqHapticsDockPanel;
+class QTextStream;
+class vtkPointSet;
 
 class pqHapticsTestHook : public QObject
 {
@@ -26,6 +28,7 @@ private:
   pqHapticsTestHook(pqHapticsDockPanel* dock, const QString& trace, const QString& output);
   void dragMouse();
   void writeResults();
+  void checkEdits(QTextStream& out, vtkPointSet* input, vtkPointSet* output);
 
   pqHapticsDockPanel* Dock;
   QString Trace;

@@ -1,0 +1,239 @@
+// The client side of the edit history (ParaViewPlugin/Qt/EditControl.h) against a model
+// of vtkChainMailDeformationFilter's commands (docs/editing.md), and the point dabs.
+#include "EditControl.h"
+
+#include "geoshaping/brush.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace gi = geoshaping::interactor;
+
+namespace
+{
+// The filter's command semantics (EditRecords, History with its redo tail, LastEdit)
+// and the client proxy's properties.
+class FakeFilter : public gi::EditProxy
+{
+public:
+  // Server side.
+  std::vector<std::string> records; // EditRecords
+  std::vector<std::string> all; // History (applied + redo tail)
+  std::string last;
+  bool deformed = false; // the last update had a grasp
+  int next = 0;
+  // Client proxy.
+  std::vector<std::string> client;
+  long long grasp_point_id = 7;
+  double displacement = 1.0;
+  int pushes = 0;
+  std::vector<std::string> invoked;
+  // Information as last fetched.
+  int info_edits = -1, info_redoable = -1;
+  std::string info_last;
+
+  void grasp() { deformed = true; }
+
+  void invoke(const char* command) override
+  {
+    invoked.emplace_back(command);
+    const std::string c = command;
+    if (c == "CommitEdit")
+    {
+      if (!deformed)
+        return; // "nothing to commit"
+      all.resize(records.size());
+      last = "GSE1 edit" + std::to_string(next++);
+      all.push_back(last);
+      records.push_back(last);
+      deformed = false;
+    }
+    else if (c == "UndoEdit" && !records.empty())
+      records.pop_back();
+    else if (c == "RedoEdit" && all.size() > records.size())
+    {
+      last = all[records.size()];
+      records.push_back(last);
+    }
+    else if (c == "ResetEdits")
+      records.clear();
+  }
+  void update_information() override
+  {
+    info_edits = int(records.size());
+    info_redoable = int(all.size() - records.size());
+    info_last = last;
+  }
+  std::string last_edit() override { return info_last; }
+  int number_of_edits() override { return info_edits; }
+  int number_of_redoable_edits() override { return info_redoable; }
+  std::vector<std::string> history() override { return client; }
+  void set_history(const std::vector<std::string>& r) override { client = r; }
+  void release() override
+  {
+    grasp_point_id = -1;
+    displacement = 0.0;
+  }
+  void push() override
+  {
+    ++pushes;
+    // RemoveAllEdits + AddEdit...; synchronize keeps a redo tail the list is a prefix of.
+    records = client;
+    const bool prefix = client.size() <= all.size() &&
+      std::equal(client.begin(), client.end(), all.begin());
+    if (!prefix)
+      all = client;
+  }
+};
+}
+
+TEST(EditControl, CommandProperties)
+{
+  EXPECT_STREQ(gi::command_property(gi::EditCommand::commit), "CommitEdit");
+  EXPECT_STREQ(gi::command_property(gi::EditCommand::undo), "UndoEdit");
+  EXPECT_STREQ(gi::command_property(gi::EditCommand::redo), "RedoEdit");
+  EXPECT_STREQ(gi::command_property(gi::EditCommand::reset), "ResetEdits");
+}
+
+TEST(EditControl, CommitAppendsLastEditAndReleases)
+{
+  FakeFilter f;
+  f.grasp();
+  const gi::EditResult r = gi::run_edit(gi::EditCommand::commit, f);
+  EXPECT_TRUE(r.changed);
+  EXPECT_EQ(r.edits, 1u);
+  EXPECT_EQ(r.redoable, 0);
+  EXPECT_TRUE(r.message.empty()) << r.message;
+  ASSERT_EQ(f.client.size(), 1u);
+  EXPECT_EQ(f.client[0], "GSE1 edit0");
+  EXPECT_EQ(f.records, f.client);
+  EXPECT_EQ(f.grasp_point_id, -1);
+  EXPECT_EQ(f.displacement, 0.0);
+  EXPECT_EQ(f.pushes, 1);
+}
+
+TEST(EditControl, CommitWithNothingToCommitDoesNotDuplicateTheLastRecord)
+{
+  FakeFilter f;
+  f.grasp();
+  gi::run_edit(gi::EditCommand::commit, f);
+  // Press and release without a deformation: LastEdit is still the first edit.
+  const gi::EditResult r = gi::run_edit(gi::EditCommand::commit, f);
+  EXPECT_FALSE(r.changed);
+  EXPECT_EQ(r.message, "nothing to commit");
+  EXPECT_EQ(f.client.size(), 1u);
+  EXPECT_EQ(f.grasp_point_id, -1);
+}
+
+TEST(EditControl, UndoRedoResetKeepTheClientListInStep)
+{
+  FakeFilter f;
+  for (int i = 0; i < 3; ++i)
+  {
+    f.grasp();
+    gi::run_edit(gi::EditCommand::commit, f);
+  }
+  const std::vector<std::string> all = f.client;
+  ASSERT_EQ(all.size(), 3u);
+
+  gi::EditResult r = gi::run_edit(gi::EditCommand::undo, f);
+  EXPECT_TRUE(r.changed);
+  EXPECT_EQ(f.client, std::vector<std::string>(all.begin(), all.begin() + 2));
+  EXPECT_EQ(r.redoable, 1);
+  r = gi::run_edit(gi::EditCommand::undo, f);
+  EXPECT_EQ(f.client, std::vector<std::string>(all.begin(), all.begin() + 1));
+  EXPECT_EQ(r.redoable, 2);
+
+  r = gi::run_edit(gi::EditCommand::redo, f);
+  EXPECT_TRUE(r.changed);
+  EXPECT_EQ(f.client, std::vector<std::string>(all.begin(), all.begin() + 2));
+  EXPECT_EQ(r.redoable, 1);
+
+  r = gi::run_edit(gi::EditCommand::reset, f);
+  EXPECT_TRUE(r.changed);
+  EXPECT_TRUE(f.client.empty());
+  EXPECT_EQ(r.redoable, 3);
+
+  for (int i = 0; i < 3; ++i)
+    gi::run_edit(gi::EditCommand::redo, f);
+  EXPECT_EQ(f.client, all);
+  r = gi::run_edit(gi::EditCommand::redo, f);
+  EXPECT_FALSE(r.changed);
+  EXPECT_EQ(r.message, "nothing to redo");
+  EXPECT_EQ(f.client, all);
+}
+
+TEST(EditControl, UndoOnAnEmptyListSendsNothing)
+{
+  FakeFilter f;
+  const gi::EditResult r = gi::run_edit(gi::EditCommand::undo, f);
+  EXPECT_FALSE(r.changed);
+  EXPECT_EQ(r.message, "nothing to undo");
+  EXPECT_TRUE(f.invoked.empty());
+}
+
+TEST(EditControl, CommitAfterUndoDropsTheRedoTail)
+{
+  FakeFilter f;
+  f.grasp();
+  gi::run_edit(gi::EditCommand::commit, f);
+  f.grasp();
+  gi::run_edit(gi::EditCommand::commit, f);
+  gi::run_edit(gi::EditCommand::undo, f);
+  f.grasp();
+  const gi::EditResult r = gi::run_edit(gi::EditCommand::commit, f);
+  EXPECT_EQ(r.edits, 2u);
+  EXPECT_EQ(r.redoable, 0);
+  EXPECT_EQ(f.client.back(), "GSE1 edit2");
+}
+
+TEST(EditControl, ServerOutOfStepIsReportedAndTheClientListWins)
+{
+  FakeFilter f;
+  f.grasp();
+  gi::run_edit(gi::EditCommand::commit, f);
+  f.invoke("UndoEdit"); // a panel button: the server changed, the client list did not
+  f.grasp();
+  const gi::EditResult r = gi::run_edit(gi::EditCommand::commit, f);
+  EXPECT_NE(r.message.find("the server had 0 edits"), std::string::npos) << r.message;
+  EXPECT_TRUE(r.changed);
+  EXPECT_EQ(f.client.size(), 2u);
+  EXPECT_EQ(f.records, f.client);
+}
+
+TEST(PointDabs, FalloffMatchesTheCore)
+{
+  const geoshaping::Falloff kinds[] = { geoshaping::Falloff::constant,
+    geoshaping::Falloff::linear, geoshaping::Falloff::smooth, geoshaping::Falloff::gaussian };
+  for (int k = 0; k < 4; ++k)
+  {
+    for (double r = -0.5; r <= 1.5; r += 0.01)
+    {
+      EXPECT_DOUBLE_EQ(gi::falloff_weight(k, r), geoshaping::falloff_weight(kinds[k], r))
+        << k << " " << r;
+    }
+  }
+}
+
+TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)
+{
+  std::vector<double> triples = { 99.0, 0.1, 0.2 }; // earlier dabs are kept
+  gi::append_point_dabs({ 4, 8, 15 }, { 0.0, 1.0, 2.0 }, 2.0, 0.8, 0.5, /*linear*/ 1, triples);
+  // The rim (weight 0) is left out.
+  const std::vector<double> expected = { 99.0, 0.1, 0.2, 4.0, 0.8, 0.5, 8.0, 0.8, 0.25 };
+  EXPECT_EQ(triples, expected);
+
+  std::vector<double> clamped;
+  gi::append_point_dabs({ 1 }, { 0.0 }, 1.0, 7.0, -1.0, 0, clamped);
+  EXPECT_TRUE(clamped.empty()); // strength clamped to 0: nothing painted
+  gi::append_point_dabs({ 1 }, { 0.0 }, 1.0, 7.0, 2.0, 0, clamped);
+  EXPECT_EQ(clamped, (std::vector<double>{ 1.0, 1.0, 1.0 }));
+
+  std::vector<double> none;
+  gi::append_point_dabs({ 1 }, { 0.0 }, 0.0, 0.5, 0.5, 0, none); // zero radius
+  gi::append_point_dabs({ 1, 2 }, { 0.0 }, 1.0, 0.5, 0.5, 0, none); // size mismatch
+  gi::append_point_dabs({ -1 }, { 0.0 }, 1.0, 0.5, 0.5, 0, none); // bad id
+  EXPECT_TRUE(none.empty());
+}
