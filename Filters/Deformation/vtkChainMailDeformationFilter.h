@@ -52,6 +52,7 @@
 #include "vtkPointSetAlgorithm.h"
 
 #include <memory> // For std::unique_ptr
+#include <vector> // For std::vector
 
 class vtkPiecewiseFunction;
 
@@ -263,6 +264,13 @@ private:
 
   // The refinement pass after a successful frame grasping `grasp`.
   void Refine(vtkIdType grasp);
+  // The stages of RequestData (vtkChainMailDeformationFilterUpdate.cxx).
+  bool UpdateGeometry(vtkPointSet* input);
+  void UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
+  std::vector<int> UpdateEdits(std::vector<int>& stale);
+  void Deform(vtkPointSet* input);
+  void WriteOutput(vtkPointSet* input, vtkPointSet* output, const std::vector<int>& stale,
+    const std::vector<int>& touched);
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

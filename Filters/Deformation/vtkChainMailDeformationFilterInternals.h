@@ -1,0 +1,144 @@
+// Private to the GeoShaping::FiltersDeformation module: the filter's cached core state
+// and small helpers shared by its implementation files.
+#ifndef vtkChainMailDeformationFilterInternals_h
+#define vtkChainMailDeformationFilterInternals_h
+
+#include "vtkChainMailDeformationFilter.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkGeoShapingAdapter.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkInformationStringKey.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
+#include "vtkStaticPointLocator.h"
+
+#include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/edit_history.h"
+#include "geoshaping/link_projection.h"
+
+#include <chrono>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+
+struct vtkChainMailDeformationFilter::vtkInternals
+{
+  geoshaping::ChainMailDeformer Deformer;
+  geoshaping::Curve StretchCurve, CompressionCurve, ShearCurve; // only .points used
+
+  // What the cached core state was built from.
+  vtkPoints* GeometryPoints = nullptr;
+  vtkIdType GeometrySize = -1;
+  vtkMTimeType GeometryTime = 0;
+  int GeometryPrecision = -1;
+  bool GeometryValid = false;
+  vtkDataArray* MalleabilitySource = nullptr;
+  vtkMTimeType MalleabilityTime = 0;
+  double MalleabilityDefault = -1.0;
+  vtkDataArray* PinSource = nullptr;
+  vtkMTimeType PinTime = 0;
+
+  // The refinement pass: per-vertex link data (rebuilt when the geometry, malleability,
+  // pins or curves change), the projector's scratch, and the vertices the last pass
+  // moved off the ChainMail result (restored to rest next update, with the moved ones).
+  geoshaping::LinkMesh Links;
+  std::unique_ptr<geoshaping::LinkProjector> Projector;
+  geoshaping::TransferFunction LinksTransfer;
+  std::vector<geoshaping::index_t> Refined;
+  bool Refining = false; // the last update wrote the projector's result
+
+  // Editing: the applied edits' records (the EditHistory property), the history that
+  // applies them (with the undone tail kept for redo), and the last frame's recipe.
+  std::vector<std::string> EditRecords;
+  bool EditsDirty = false;
+  geoshaping::EditHistory History;
+  geoshaping::EditRecipe FrameRecipe;
+  std::string LastEdit;
+
+  // Displacement of v from its rest position in the last frame (refined or not).
+  const Eigen::Vector3d& FinalDisplacement(geoshaping::index_t v) const
+  {
+    return this->Refining ? this->Projector->displacement(v) : this->Deformer.displacement(v);
+  }
+
+  vtkSmartPointer<vtkPoints> OutputPoints;
+  vtkSmartPointer<vtkStaticPointLocator> Locator;
+  bool WarnedParallel = false;
+};
+
+namespace vtkChainMailDeformationFilterDetail
+{
+inline void SetCurvePoints(geoshaping::Curve& curve, vtkPiecewiseFunction* f)
+{
+  curve.points.clear();
+  if (!f)
+    return;
+  double node[4];
+  for (int i = 0; i < f->GetSize(); ++i)
+  {
+    f->GetNodeValue(i, node);
+    curve.points.emplace_back(node[0], node[1]);
+  }
+}
+
+using IdList = std::vector<geoshaping::index_t>;
+using IdLists = std::initializer_list<const IdList*>;
+
+inline bool SameCurve(const geoshaping::Curve& a, const geoshaping::Curve& b)
+{
+  return a.at_rigid == b.at_rigid && a.at_soft == b.at_soft && a.shape == b.shape &&
+    a.threshold == b.threshold && a.points == b.points;
+}
+
+inline bool SameTransfer(const geoshaping::TransferFunction& a, const geoshaping::TransferFunction& b)
+{
+  return SameCurve(a.stretch, b.stretch) && SameCurve(a.compression, b.compression) &&
+    SameCurve(a.shear, b.shear) && a.exact_rigid_at_zero == b.exact_rigid_at_zero;
+}
+
+inline geoshaping::EditRecipe Recipe(vtkChainMailDeformationFilter* self, vtkIdType grasp)
+{
+  geoshaping::EditRecipe r;
+  r.grasp = geoshaping::index_t(grasp);
+  r.displacement = Eigen::Vector3d(self->GetDisplacement());
+  r.queue = self->GetCandidateQueue();
+  self->GetStretchRange(r.stretch);
+  self->GetCompressionRange(r.compression);
+  self->GetShearRange(r.shear);
+  r.curve_shape = self->GetTransferCurveShape();
+  r.step_threshold = self->GetStepThreshold();
+  r.refinement_iterations = self->GetRefinementIterations();
+  return r;
+}
+
+inline geoshaping::Curve MakeCurve(const double range[2], int shape, double threshold,
+  const geoshaping::Curve& userPoints)
+{
+  geoshaping::Curve c;
+  c.at_rigid = range[0];
+  c.at_soft = range[1];
+  c.threshold = threshold;
+  c.shape = shape == vtkChainMailDeformationFilter::SMOOTH ? geoshaping::CurveShape::smooth
+    : shape == vtkChainMailDeformationFilter::STEP         ? geoshaping::CurveShape::step
+                                                           : geoshaping::CurveShape::linear;
+  if (!userPoints.points.empty())
+  {
+    c.shape = geoshaping::CurveShape::piecewise;
+    c.points = userPoints.points;
+  }
+  return c;
+}
+} // namespace vtkChainMailDeformationFilterDetail
+
+#endif

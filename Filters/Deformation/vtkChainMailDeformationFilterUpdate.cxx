@@ -1,0 +1,285 @@
+// The stages of vtkChainMailDeformationFilter::RequestData.
+#include "vtkChainMailDeformationFilterInternals.h"
+
+using namespace vtkChainMailDeformationFilterDetail;
+
+bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
+{
+  vtkInternals& in = *this->Internals;
+  vtkPoints* inPoints = input->GetPoints();
+  const vtkIdType n = input->GetNumberOfPoints();
+  // 1. Geometry and topology: rebuilt only when they change.
+  const vtkMTimeType geometryTime = vtkGeoShapingAdapter::GeometryTime(input);
+  if (!in.GeometryValid || in.GeometryPoints != inPoints || in.GeometrySize != n ||
+    in.GeometryTime != geometryTime || in.GeometryPrecision != this->OutputPointsPrecision)
+  {
+    in.GeometryValid = false;
+    in.GeometryPoints = inPoints;
+    in.GeometrySize = n;
+    in.GeometryTime = geometryTime;
+    in.GeometryPrecision = this->OutputPointsPrecision;
+    in.MalleabilitySource = nullptr;
+    in.PinSource = nullptr;
+    in.MalleabilityDefault = -1.0;
+    in.Locator = nullptr;
+    in.Projector.reset();
+    in.Refined.clear();
+    in.Refining = false;
+    in.History.clear();
+    in.EditsDirty = true;
+
+    std::vector<double> xyz;
+    vtkIdType firstBad;
+    const vtkIdType bad = vtkGeoShapingAdapter::PointsAsDouble(inPoints, xyz, firstBad);
+    if (bad > 0)
+    {
+      vtkErrorMacro("Input has " << bad << " non-finite point coordinates (first at point "
+                                 << firstBad << "); output is the undeformed input.");
+      return false;
+    }
+    vtkIdType skipped = 0;
+    geoshaping::Adjacency adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
+    if (skipped > 0)
+    {
+      vtkWarningMacro(<< skipped
+                      << " cells are of an unsupported type (higher-order or polyhedral) or "
+                         "have invalid point ids; their edges do not propagate deformation.");
+    }
+    in.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
+
+    in.OutputPoints = vtkSmartPointer<vtkPoints>::New();
+    const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION
+      ? VTK_FLOAT
+      : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION ? VTK_DOUBLE
+                                                                      : inPoints->GetDataType();
+    in.OutputPoints->SetDataType(precision);
+    in.OutputPoints->DeepCopy(inPoints);
+    if (in.OutputPoints->GetDataType() != precision)
+    {
+      vtkNew<vtkPoints> converted;
+      converted->SetDataType(precision);
+      converted->SetNumberOfPoints(n);
+      for (vtkIdType i = 0; i < n; ++i)
+        converted->SetPoint(i, xyz.data() + 3 * i);
+      in.OutputPoints = converted;
+    }
+    in.GeometryValid = true;
+    ++this->NumberOfRebuilds;
+  }
+
+  return in.GeometryValid;
+}
+
+void vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
+  vtkInformationVector** inputVector, vtkIdType n)
+{
+  vtkInternals& in = *this->Internals;
+  // 2. Malleability and pins: copied only when their array changes.
+  vtkDataArray* malleability = this->GetInputArrayToProcess(0, inputVector);
+  if (malleability && malleability->GetNumberOfComponents() != 1)
+  {
+    vtkWarningMacro("Malleability array '" << malleability->GetName()
+                                           << "' must have one component; using DefaultMalleability.");
+    malleability = nullptr;
+  }
+  if (malleability != in.MalleabilitySource ||
+    (malleability && malleability->GetMTime() != in.MalleabilityTime) ||
+    (!malleability && in.MalleabilityDefault != this->DefaultMalleability))
+  {
+    if (malleability)
+    {
+      std::vector<double> m(static_cast<std::size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+        m[i] = malleability->GetComponent(i, 0);
+      const std::size_t bad = in.Deformer.set_malleability(m.data());
+      if (bad > 0)
+      {
+        vtkWarningMacro(<< bad << " malleability values are outside [0, 1] or NaN; they were "
+                                  "clamped (NaN counts as 0, rigid).");
+      }
+      in.MalleabilityTime = malleability->GetMTime();
+    }
+    else
+    {
+      in.Deformer.set_uniform_malleability(this->DefaultMalleability);
+    }
+    in.MalleabilitySource = malleability;
+    in.MalleabilityDefault = this->DefaultMalleability;
+    in.Projector.reset();
+  }
+  // The pin array is optional: ask for it only when one was named.
+  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
+  vtkDataArray* pins = arrays && arrays->GetNumberOfInformationObjects() > 1 &&
+      arrays->GetInformationObject(1)->Get(vtkDataObject::FIELD_NAME())
+    ? this->GetInputArrayToProcess(1, inputVector)
+    : nullptr;
+  if (pins != in.PinSource || (pins && pins->GetMTime() != in.PinTime))
+  {
+    if (pins)
+    {
+      std::vector<std::uint8_t> mask(static_cast<std::size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+        mask[i] = pins->GetComponent(i, 0) != 0.0;
+      in.Deformer.set_pinned(mask.data());
+      in.PinTime = pins->GetMTime();
+    }
+    else
+    {
+      in.Deformer.set_pinned(nullptr);
+    }
+    in.PinSource = pins;
+    in.Projector.reset();
+  }
+
+}
+
+std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& stale)
+{
+  vtkInternals& in = *this->Internals;
+  // 3. Committed edits: replayed when the list or the geometry changed.
+  if (in.EditsDirty)
+  {
+    stale = in.Deformer.moved();
+    std::string error;
+    if (!in.History.synchronize(in.Deformer, in.EditRecords, error))
+    {
+      vtkErrorMacro("EditHistory: " << error << "; the edits before it are applied.");
+    }
+    in.EditsDirty = false;
+  }
+  IdList touched = in.History.take_touched();
+  if (!touched.empty())
+  {
+    in.Projector.reset(); // its links were built from the old rest shape
+  }
+
+  return touched;
+}
+
+void vtkChainMailDeformationFilter::Deform(vtkPointSet* input)
+{
+  vtkInternals& in = *this->Internals;
+  const vtkIdType n = input->GetNumberOfPoints();
+  // 4. Transfer function and queue, cheap to set every time.
+  geoshaping::TransferFunction tf;
+  tf.stretch = MakeCurve(this->StretchRange, this->TransferCurveShape, this->StepThreshold,
+    in.StretchCurve);
+  tf.compression = MakeCurve(this->CompressionRange, this->TransferCurveShape,
+    this->StepThreshold, in.CompressionCurve);
+  tf.shear =
+    MakeCurve(this->ShearRange, this->TransferCurveShape, this->StepThreshold, in.ShearCurve);
+  tf.exact_rigid_at_zero = this->ExactRigidAtZero;
+  if (*tf.validate())
+  {
+    vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");
+    in.Deformer.reset();
+  }
+  else
+  {
+    in.Deformer.set_transfer_function(tf);
+    in.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
+
+    // 5. Grasp and deform.
+    vtkIdType grasp = this->GraspPointId;
+    if (this->GraspMode == GRASP_NEAREST_TO_POSITION)
+    {
+      if (!in.Locator)
+      {
+        in.Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+        in.Locator->SetDataSet(input);
+        in.Locator->BuildLocator();
+      }
+      grasp = in.Locator->FindClosestPoint(this->GraspPosition);
+    }
+    if (grasp < 0 && this->GraspMode == GRASP_POINT_ID)
+    {
+      in.Deformer.reset(); // no grasp: the rest shape
+    }
+    else if (grasp >= n)
+    {
+      // Checked here: the core's 32-bit ids would wrap a 64-bit id into range.
+      vtkErrorMacro("No deformation: grasp vertex " << grasp << " is outside [0, " << n
+                                                    << "); output is the undeformed input.");
+      in.Deformer.reset();
+    }
+    else
+    {
+      const auto start = std::chrono::steady_clock::now();
+      const geoshaping::FrameResult r = in.Deformer.deform(geoshaping::index_t(grasp),
+        Eigen::Vector3d(this->Displacement[0], this->Displacement[1], this->Displacement[2]));
+      this->LastDeformationMilliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+          .count();
+      if (!r.ok)
+      {
+        vtkErrorMacro("No deformation: " << r.message << "; output is the undeformed input.");
+      }
+      this->NumberOfDisplacedPoints = vtkIdType(r.moved);
+      this->NumberOfExaminedCandidates = vtkIdType(r.examined);
+      this->LastGraspPointId = r.ok ? grasp : -1;
+      in.FrameRecipe = Recipe(this, grasp);
+      if (r.ok && this->RefinementIterations > 0)
+      {
+        this->Refine(grasp);
+      }
+    }
+  }
+
+}
+
+void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet* output,
+  const std::vector<int>& stale, const std::vector<int>& touched)
+{
+  vtkInternals& in = *this->Internals;
+  vtkPoints* inPoints = input->GetPoints();
+  const vtkIdType n = input->GetNumberOfPoints();
+  // 6. Rewrite only the vertices that moved now or last time (the moved and the refined)
+  // and those an edit changed, as input + offset so unedited vertices stay the input's.
+  vtkPoints* outPoints = in.OutputPoints;
+  double p[3];
+  for (const IdList* restore : IdLists{ &in.Deformer.previously_moved(), &in.Refined, &stale, &touched })
+    for (geoshaping::index_t v : *restore)
+    {
+      inPoints->GetPoint(v, p);
+      const Eigen::Vector3d& c = in.Deformer.committed_offset(v);
+      outPoints->SetPoint(v, p[0] + c.x(), p[1] + c.y(), p[2] + c.z());
+    }
+  in.Refined.clear();
+  if (in.Refining)
+  {
+    in.Refined = in.Projector->changed();
+  }
+  for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined })
+    for (geoshaping::index_t v : *write)
+    {
+      inPoints->GetPoint(v, p);
+      const Eigen::Vector3d u = in.Deformer.committed_offset(v) + in.FinalDisplacement(v);
+      outPoints->SetPoint(v, p[0] + u.x(), p[1] + u.y(), p[2] + u.z());
+    }
+  outPoints->Modified();
+  output->SetPoints(outPoints);
+
+  if (this->GenerateDiagnostics)
+  {
+    vtkNew<vtkDoubleArray> displacement;
+    displacement->SetName("ChainMailDisplacement");
+    displacement->SetNumberOfComponents(3);
+    displacement->SetNumberOfTuples(n);
+    displacement->Fill(0.0);
+    vtkNew<vtkIdTypeArray> sponsor;
+    sponsor->SetName("ChainMailSponsor");
+    sponsor->SetNumberOfTuples(n);
+    sponsor->Fill(-1);
+    for (geoshaping::index_t v : in.Deformer.moved())
+    {
+      sponsor->SetValue(v, in.Deformer.sponsor(v));
+    }
+    for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined })
+      for (geoshaping::index_t v : *write)
+      {
+        displacement->SetTuple(v, in.FinalDisplacement(v).data());
+      }
+    output->GetPointData()->AddArray(displacement);
+    output->GetPointData()->AddArray(sponsor);
+  }
+}
