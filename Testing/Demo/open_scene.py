@@ -1,0 +1,61 @@
+"""Opens the demo scene in the ParaView GUI with the GeoShaping plugin loaded:
+the Jacksboro DEM and the fault-step horizon painted from the stored dabs, each with a
+ChainMailDeformation ready to grasp (use the Haptics dock or the filter's properties).
+
+    Testing/Demo/open-in-paraview.sh        (runs: paraview --script=<this file>)
+"""
+import json
+import os
+import sys
+
+# paraview --script runs this file without __file__: open-in-paraview.sh passes the root.
+ROOT = os.environ["GEOSHAPING_SOURCE_DIR"]
+HERE = os.path.join(ROOT, "Testing", "Demo")
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(ROOT, "ParaViewPlugin", "Python"))
+
+from paraview.simple import *  # noqa: E402,F401,F403
+
+import demo_metrics  # noqa: E402
+import geoshaping_demo as demo  # noqa: E402
+import geoshaping_presets  # noqa: E402
+import jacksboro  # noqa: E402
+
+LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], remote=False, ns=globals())
+config = json.load(open(os.path.join(ROOT, "Data", "Demo", "demo_scene.json")))
+view = GetActiveViewOrCreate("RenderView")
+
+
+def painted(source, cfg, to_xyz, name):
+    paint = MalleabilityPaint(registrationName=name + " paint", Input=source)  # noqa: F405
+    paint.InitialMalleability = cfg["initial_malleability"]
+    paint.Falloff = cfg["falloff"]
+    paint.DistanceMode = cfg["distance_mode"]
+    paint.Dabs = demo.dabs_along(cfg["dab_lines"], to_xyz)
+    paint.UpdatePipeline()
+    chain = ChainMailDeformation(registrationName=name + " deform", Input=paint)  # noqa: F405
+    chain.MalleabilityArray = ["POINTS", "Malleability"]
+    chain.PinnedArray = ["POINTS", "None"]
+    display = Show(chain, view)
+    display.Scale = [1.0, 1.0, cfg["z_exaggeration"]]
+    geoshaping_presets.show_malleability(display)
+    return chain
+
+
+dem = TrivialProducer(registrationName="Jacksboro DEM")
+data = jacksboro.jacksboro_polydata()
+dem.GetClientSideObject().SetOutput(data)
+height = demo_metrics.SurfaceHeight(data)
+
+
+def jack_xyz(lonlat):
+    x, y = demo.lonlat_to_scene(*lonlat)
+    return (x, y, height.height(x, y))
+
+
+painted(dem, config["jacksboro"], jack_xyz, "Jacksboro")
+step = FaultStepHorizon(registrationName="Fault step", **config["fault_step"]["source"])  # noqa: F405
+chain = painted(step, config["fault_step"], tuple, "Fault step")
+Hide(chain, view)  # both scenes are in the pipeline browser; the DEM is shown
+ResetCamera(view)
+Render(view)
