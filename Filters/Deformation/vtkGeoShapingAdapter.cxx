@@ -4,6 +4,9 @@
 #include "vtkCellIterator.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
 #include "vtkIdList.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -111,6 +114,32 @@ vtkIdType vtkGeoShapingAdapter::PointsAsDouble(
     }
   }
   return bad;
+}
+
+vtkSmartPointer<vtkPoints> vtkGeoShapingAdapter::MakePoints(const std::vector<double>& xyz)
+{
+  vtkNew<vtkDoubleArray> data;
+  data->SetNumberOfComponents(3);
+  data->SetNumberOfTuples(vtkIdType(xyz.size() / 3));
+  std::copy(xyz.begin(), xyz.end(), data->GetPointer(0));
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetData(data);
+  return points;
+}
+
+vtkSmartPointer<vtkCellArray> vtkGeoShapingAdapter::MakeCells(
+  const std::vector<geoshaping::index_t>& connectivity, int cellSize)
+{
+  const vtkIdType numCells = cellSize > 0 ? vtkIdType(connectivity.size()) / cellSize : 0;
+  vtkNew<vtkIdTypeArray> offsets, ids;
+  offsets->SetNumberOfTuples(numCells + 1);
+  for (vtkIdType c = 0; c <= numCells; ++c)
+    offsets->SetValue(c, c * cellSize);
+  ids->SetNumberOfTuples(vtkIdType(connectivity.size()));
+  std::copy(connectivity.begin(), connectivity.end(), ids->GetPointer(0));
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, ids);
+  return cells;
 }
 
 vtkMTimeType vtkGeoShapingAdapter::GeometryTime(vtkPointSet* input)

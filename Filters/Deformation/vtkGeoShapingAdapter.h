@@ -10,12 +10,14 @@
 #define vtkGeoShapingAdapter_h
 
 #include "GeoShapingFiltersDeformationModule.h" // For export macro
+#include "vtkSmartPointer.h" // For vtkSmartPointer
 #include "vtkType.h"
 
 #include "geoshaping/adjacency.h" // For Adjacency
 
 #include <vector>
 
+class vtkCellArray;
 class vtkDataArray;
 class vtkDataSet;
 class vtkPointSet;
@@ -35,6 +37,12 @@ public:
   /// Copies points into xyz (3 doubles each). Returns the number of non-finite
   /// coordinates; `firstBad` is the id of the first point holding one (or -1).
   static vtkIdType PointsAsDouble(vtkPoints* points, std::vector<double>& xyz, vtkIdType& firstBad);
+
+  /// Double-precision points from xyz (3 doubles each) and a cell array of cells of
+  /// `cellSize` ids each, for the sample scenes of the core.
+  static vtkSmartPointer<vtkPoints> MakePoints(const std::vector<double>& xyz);
+  static vtkSmartPointer<vtkCellArray> MakeCells(
+    const std::vector<geoshaping::index_t>& connectivity, int cellSize);
 
   /// Modification time of the geometry and connectivity (points and cells), ignoring
   /// point and cell data so that repainting an array does not rebuild adjacency.

@@ -1,5 +1,7 @@
 #include "vtkFaultStepHorizonSource.h"
 
+#include "vtkGeoShapingAdapter.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDataObject.h"
@@ -86,21 +88,9 @@ int vtkFaultStepHorizonSource::RequestData(
   const geoshaping::SampleMesh mesh =
     slab ? geoshaping::fault_step_slab(p) : geoshaping::fault_step_horizon(p);
 
-  vtkNew<vtkDoubleArray> xyz;
-  xyz->SetNumberOfComponents(3);
-  xyz->SetNumberOfTuples(mesh.num_points());
-  std::copy(mesh.xyz.begin(), mesh.xyz.end(), xyz->GetPointer(0));
-  vtkNew<vtkPoints> points;
-  points->SetData(xyz);
-
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(vtkIdType(mesh.num_cells()) + 1);
-  for (vtkIdType c = 0; c <= vtkIdType(mesh.num_cells()); ++c)
-    offsets->SetValue(c, c * mesh.cell_size);
-  connectivity->SetNumberOfTuples(vtkIdType(mesh.connectivity.size()));
-  std::copy(mesh.connectivity.begin(), mesh.connectivity.end(), connectivity->GetPointer(0));
-  vtkNew<vtkCellArray> cells;
-  cells->SetData(offsets, connectivity);
+  vtkSmartPointer<vtkPoints> points = vtkGeoShapingAdapter::MakePoints(mesh.xyz);
+  vtkSmartPointer<vtkCellArray> cells =
+    vtkGeoShapingAdapter::MakeCells(mesh.connectivity, mesh.cell_size);
 
   vtkNew<vtkPolyData> surface;
   vtkNew<vtkUnstructuredGrid> volume;
