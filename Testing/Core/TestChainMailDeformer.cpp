@@ -112,19 +112,14 @@ TEST(ChainMailDeformer, ZeroMalleabilityTranslatesEveryConnectedVertexExactly)
 
 namespace
 {
-// A soft 31x31 grid with a rigid 7x7 island off the grasp, pulled at the centre.
+// The Figure 6 scene of test_meshes.h (a rigid island in a soft grid) under queue q.
 ChainMailDeformer rigid_island_frame(QueueKind q)
 {
-  const index_t n = 31;
-  const auto mesh = geoshaping::testing::triangle_grid(n, n, 1.0);
-  ChainMailDeformer d = make(mesh);
-  std::vector<float> m(std::size_t(mesh.size()), 1.0f);
-  for (index_t j = 18; j < 25; ++j)
-    for (index_t i = 12; i < 19; ++i)
-      m[grid_id(n, i, j)] = 0.0f;
-  d.set_malleability(m.data());
+  const auto scene = geoshaping::testing::rigid_island();
+  ChainMailDeformer d = make(scene.mesh);
+  d.set_malleability(scene.malleability.data());
   d.set_queue(q);
-  EXPECT_TRUE(d.deform(grid_id(n, 15, 12), { 4.0, 3.0, 12.0 }).ok);
+  EXPECT_TRUE(d.deform(scene.grasp, Eigen::Vector3d(scene.pull)).ok);
   return d;
 }
 } // namespace

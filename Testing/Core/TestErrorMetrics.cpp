@@ -112,19 +112,15 @@ TEST(ErrorMetrics, ChainMailChainSatisfiesEveryLink)
 
 namespace
 {
-// A soft 31x31 triangle grid with a rigid 7x7 island, pulled at (15, 12).
+// The Figure 6 scene of test_meshes.h under queue q (`mesh` must be its mesh).
 ChainMailDeformer island_frame(const geoshaping::testing::Mesh& mesh, QueueKind q)
 {
-  const index_t n = 31;
+  const auto scene = geoshaping::testing::rigid_island();
   ChainMailDeformer d;
   d.set_mesh(mesh.xyz.data(), mesh.size(), mesh.adjacency);
-  std::vector<float> m(std::size_t(mesh.size()), 1.0f);
-  for (index_t j = 18; j < 25; ++j)
-    for (index_t i = 12; i < 19; ++i)
-      m[grid_id(n, i, j)] = 0.0f;
-  d.set_malleability(m.data());
+  d.set_malleability(scene.malleability.data());
   d.set_queue(q);
-  EXPECT_TRUE(d.deform(grid_id(n, 15, 12), { 4.0, 3.0, 12.0 }).ok);
+  EXPECT_TRUE(d.deform(scene.grasp, Eigen::Vector3d(scene.pull)).ok);
   return d;
 }
 } // namespace

@@ -51,6 +51,17 @@ Mesh grid(index_t nx, index_t ny, double h, bool triangles)
 }
 } // namespace
 
+IslandScene rigid_island()
+{
+  const index_t n = 31;
+  IslandScene s{ triangle_grid(n, n, 1.0), {}, grid_id(n, 15, 12), { 4.0, 3.0, 12.0 } };
+  s.malleability.assign(std::size_t(s.mesh.size()), 1.0f);
+  for (index_t j = 18; j < 25; ++j)
+    for (index_t i = 12; i < 19; ++i)
+      s.malleability[grid_id(n, i, j)] = 0.0f;
+  return s;
+}
+
 Mesh quad_grid(index_t nx, index_t ny, double h) { return grid(nx, ny, h, false); }
 Mesh triangle_grid(index_t nx, index_t ny, double h) { return grid(nx, ny, h, true); }
 

@@ -24,4 +24,15 @@ Mesh triangle_grid(index_t nx, index_t ny, double h);
 
 inline index_t grid_id(index_t nx, index_t i, index_t j) { return j * nx + i; }
 
+// The paper's Figure 6 scene: a soft (malleability 1) 31 x 31 triangle grid with a
+// rigid (0) 7 x 7 island, grasped at (15, 12) and pulled by (4, 3, 12).
+struct IslandScene
+{
+  Mesh mesh;
+  std::vector<float> malleability;
+  index_t grasp;
+  double pull[3];
+};
+IslandScene rigid_island();
+
 } // namespace geoshaping::testing
