@@ -3,6 +3,7 @@
 // the same (adjacency and rest state cached, only moved vertices rewritten).
 #include "bench_scenes.h"
 #include "vtkChainMailDeformationFilter.h"
+#include "vtk_test_meshes.h"
 
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
@@ -16,29 +17,10 @@
 
 namespace
 {
-// The same triangulation as geoshaping::testing::triangle_grid, as vtkPolyData.
+// The same triangulation as geoshaping::testing::triangle_grid, float points.
 vtkSmartPointer<vtkPolyData> Grid(vtkIdType n)
 {
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> pts;
-  pts->SetDataType(VTK_FLOAT);
-  pts->SetNumberOfPoints(n * n);
-  for (vtkIdType j = 0; j < n; ++j)
-    for (vtkIdType i = 0; i < n; ++i)
-      pts->SetPoint(j * n + i, double(i), double(j), 0.0);
-  vtkNew<vtkCellArray> tris;
-  tris->AllocateExact(2 * (n - 1) * (n - 1), 6 * (n - 1) * (n - 1));
-  for (vtkIdType j = 0; j + 1 < n; ++j)
-    for (vtkIdType i = 0; i + 1 < n; ++i)
-    {
-      const vtkIdType a = j * n + i, c = a + 1, d = a + n + 1, e = a + n;
-      const vtkIdType t0[3] = { a, c, d }, t1[3] = { a, d, e };
-      tris->InsertNextCell(3, t0);
-      tris->InsertNextCell(3, t1);
-    }
-  pd->SetPoints(pts);
-  pd->SetPolys(tris);
-  return pd;
+  return geoshaping::testing::TriangleGridPolyData(int(n), int(n), 1.0, nullptr, VTK_FLOAT);
 }
 
 double PullForThousand()

@@ -4,6 +4,7 @@
 #include "geoshaping/chainmail_deformer.h"
 #include "geoshaping/error_metrics.h"
 #include "test_meshes.h"
+#include "vtk_test_meshes.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
@@ -27,36 +28,11 @@
 
 namespace
 {
-// nx * ny triangle grid with spacing h at z = 0, optional float points and a
-// "Malleability" array filled by `m(i, j)`.
 template <class F>
-vtkSmartPointer<vtkPolyData> TriangleGrid(int nx, int ny, double h, F m, int type = VTK_DOUBLE,
-  double x0 = 0.0, double y0 = 0.0)
+vtkSmartPointer<vtkPolyData> TriangleGrid(
+  int nx, int ny, double h, F m, int type = VTK_DOUBLE, double x0 = 0.0, double y0 = 0.0)
 {
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> pts;
-  pts->SetDataType(type);
-  vtkNew<vtkFloatArray> mal;
-  mal->SetName("Malleability");
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-    {
-      pts->InsertNextPoint(x0 + i * h, y0 + j * h, 0.0);
-      mal->InsertNextValue(float(m(i, j)));
-    }
-  vtkNew<vtkCellArray> tris;
-  for (int j = 0; j + 1 < ny; ++j)
-    for (int i = 0; i + 1 < nx; ++i)
-    {
-      const vtkIdType a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
-      const vtkIdType t0[3] = { a, b, c }, t1[3] = { a, c, d };
-      tris->InsertNextCell(3, t0);
-      tris->InsertNextCell(3, t1);
-    }
-  pd->SetPoints(pts);
-  pd->SetPolys(tris);
-  pd->GetPointData()->AddArray(mal);
-  return pd;
+  return geoshaping::testing::TriangleGridPolyData(nx, ny, h, m, type, x0, y0);
 }
 
 vtkSmartPointer<vtkPolyData> UniformGrid(int nx, int ny, double h, double m)

@@ -1,6 +1,7 @@
 #include "StabilityHarness.h"
 
 #include "vtkGeoShapingAdapter.h"
+#include "vtk_test_meshes.h"
 
 #include "geoshaping/error_metrics.h"
 
@@ -22,29 +23,8 @@ namespace stability
 
 vtkSmartPointer<vtkPolyData> Grid(int nx, int ny, double h, double m, int type, double x0, double y0)
 {
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> pts;
-  pts->SetDataType(type);
-  vtkNew<vtkFloatArray> mal;
-  mal->SetName("Malleability");
-  vtkNew<vtkCellArray> tris;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-    {
-      pts->InsertNextPoint(x0 + i * h, y0 + j * h, 0.0);
-      mal->InsertNextValue(float(m));
-      if (i + 1 < nx && j + 1 < ny)
-      {
-        const vtkIdType a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
-        const vtkIdType t0[3] = { a, b, c }, t1[3] = { a, c, d };
-        tris->InsertNextCell(3, t0);
-        tris->InsertNextCell(3, t1);
-      }
-    }
-  pd->SetPoints(pts);
-  pd->SetPolys(tris);
-  pd->GetPointData()->AddArray(mal);
-  return pd;
+  return geoshaping::testing::TriangleGridPolyData(
+    nx, ny, h, [m](int, int) { return m; }, type, x0, y0);
 }
 
 vtkSmartPointer<vtkUnstructuredGrid> Slab(int nx, int ny, int nz, double h, double m)
