@@ -46,14 +46,6 @@ def read_trace(path):
     return samples
 
 
-def lonlat_to_scene(lon, lat):
-    import math
-    lat0, lon0 = 0.5 * (36.73291667 + 36.44625), 0.5 * (-84.41375 + -84.07791667)
-    return (jacksboro.CENTRE_EN[0] + math.radians(lon - lon0) * jacksboro.EARTH_RADIUS
-            * math.cos(math.radians(lat0)),
-            jacksboro.CENTRE_EN[1] + math.radians(lat - lat0) * jacksboro.EARTH_RADIUS)
-
-
 def dabs_along(lines, to_xyz):
     dabs = []
     for seg in lines:
@@ -63,6 +55,30 @@ def dabs_along(lines, to_xyz):
             c = a + (b - a) * k / count
             dabs += [c[0], c[1], c[2], seg["radius"], seg["value"], seg["strength"]]
     return dabs
+
+
+def painted_scene(source, cfg, to_xyz, name):
+    """MalleabilityPaint with the scene's stored dabs, and a ChainMailDeformation on it."""
+    paint = MalleabilityPaint(registrationName=name + " paint", Input=source)  # noqa: F405
+    paint.InitialMalleability = cfg["initial_malleability"]
+    paint.Falloff = cfg["falloff"]
+    paint.DistanceMode = cfg["distance_mode"]
+    paint.Dabs = dabs_along(cfg["dab_lines"], to_xyz)
+    paint.UpdatePipeline()
+    chain = ChainMailDeformation(registrationName=name + " deform", Input=paint)  # noqa: F405
+    chain.MalleabilityArray = ["POINTS", "Malleability"]
+    chain.PinnedArray = ["POINTS", "None"]
+    return paint, chain
+
+
+def jacksboro_xyz(dem_data):
+    """Maps [lon, lat] to a point on the DEM surface (for dabs and grasps given on a map)."""
+    height = demo_metrics.SurfaceHeight(dem_data)
+
+    def to_xyz(lonlat):
+        x, y = jacksboro.lonlat_to_scene(*lonlat)
+        return (float(x), float(y), height.height(float(x), float(y)))
+    return to_xyz
 
 
 def output_of(proxy):
@@ -129,11 +145,7 @@ def picture(proxy, path, title, z_exaggeration, camera=None):
 
 def run_scene(name, cfg, source, to_xyz, grasp, trace, args, out):
     print("[%s] %s" % (name, cfg["title"]), flush=True)
-    paint = MalleabilityPaint(Input=source)  # noqa: F405 (plugin proxy)
-    paint.InitialMalleability = cfg["initial_malleability"]
-    paint.Falloff = cfg["falloff"]
-    paint.DistanceMode = cfg["distance_mode"]
-    paint.Dabs = dabs_along(cfg["dab_lines"], to_xyz)
+    paint, chain = painted_scene(source, cfg, to_xyz, name)
     rest_data = output_of(paint)
     n = rest_data.GetNumberOfPoints()
     print("[%s] %d vertices, %d triangles, %d dabs painted" % (
@@ -142,9 +154,6 @@ def run_scene(name, cfg, source, to_xyz, grasp, trace, args, out):
     malleability = vtk_to_numpy(rest_data.GetPointData().GetArray("Malleability")).astype(float).copy()
     edges = demo_metrics.edges(rest_data)
 
-    chain = ChainMailDeformation(Input=paint)  # noqa: F405
-    chain.MalleabilityArray = ["POINTS", "Malleability"]
-    chain.PinnedArray = ["POINTS", "None"]
     results = {}
     for queue in QUEUES:
         chain.CandidateQueue = queue
@@ -218,12 +227,7 @@ def main():
     dem = TrivialProducer(registrationName="Jacksboro")
     dem_data = jacksboro.jacksboro_polydata(stride=2 if args.quick else 1)
     dem.GetClientSideObject().SetOutput(dem_data)
-    locator = demo_metrics.SurfaceHeight(dem_data)
-
-    def jack_xyz(lonlat):
-        x, y = lonlat_to_scene(*lonlat)
-        return (x, y, locator.height(x, y))
-
+    jack_xyz = jacksboro_xyz(dem_data)
     scenes["jacksboro"] = run_scene("jacksboro", j, dem, jack_xyz, jack_xyz(j["grasp_lonlat"]),
                                     trace, args, out)
 

@@ -40,16 +40,26 @@ def find_dem():
     raise FileNotFoundError("jacksboro_fault_dem.npz not found: install python-matplotlib-data")
 
 
+def lonlat_to_scene(lon, lat, path=None):
+    """Scene metres (x east, y north) of lon/lat degrees (scalars or numpy arrays), in the
+    projection about the centre of the full DEM (whatever stride the surface uses)."""
+    dem = np.load(path or find_dem())
+    lon0 = 0.5 * (float(dem["xmin"]) + float(dem["xmax"]))
+    lat0 = 0.5 * (float(dem["ymin"]) + float(dem["ymax"]))
+    x = CENTRE_EN[0] + np.radians(np.asarray(lon) - lon0) * EARTH_RADIUS * math.cos(math.radians(lat0))
+    y = CENTRE_EN[1] + np.radians(np.asarray(lat) - lat0) * EARTH_RADIUS
+    return x, y
+
+
 def jacksboro_polydata(path=None, stride=1):
     """The DEM as vtkPolyData triangles, points in double precision metres."""
-    dem = np.load(path or find_dem())
+    path = path or find_dem()
+    dem = np.load(path)
     z = dem["elevation"][::stride, ::stride].astype(np.float64)
     rows, cols = z.shape
     lon = np.linspace(float(dem["xmin"]), float(dem["xmax"]), dem["elevation"].shape[1])[::stride]
     lat = np.linspace(float(dem["ymin"]), float(dem["ymax"]), dem["elevation"].shape[0])[::stride]
-    lon0, lat0 = 0.5 * (lon[0] + lon[-1]), 0.5 * (lat[0] + lat[-1])
-    x = CENTRE_EN[0] + np.radians(lon - lon0) * EARTH_RADIUS * math.cos(math.radians(lat0))
-    y = CENTRE_EN[1] + np.radians(lat - lat0) * EARTH_RADIUS
+    x, y = lonlat_to_scene(lon, lat, path)
     xx, yy = np.meshgrid(x, y)
     xyz = np.column_stack([xx.ravel(), yy.ravel(), z.ravel()])
 

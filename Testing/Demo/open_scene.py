@@ -16,26 +16,17 @@ sys.path.insert(0, os.path.join(ROOT, "ParaViewPlugin", "Python"))
 
 from paraview.simple import *  # noqa: E402,F401,F403
 
-import demo_metrics  # noqa: E402
 import geoshaping_demo as demo  # noqa: E402
 import geoshaping_presets  # noqa: E402
-import jacksboro  # noqa: E402
 
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], remote=False, ns=globals())
+LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], remote=False, ns=vars(demo))  # its proxies too
 config = json.load(open(os.path.join(ROOT, "Data", "Demo", "demo_scene.json")))
 view = GetActiveViewOrCreate("RenderView")
 
 
-def painted(source, cfg, to_xyz, name):
-    paint = MalleabilityPaint(registrationName=name + " paint", Input=source)  # noqa: F405
-    paint.InitialMalleability = cfg["initial_malleability"]
-    paint.Falloff = cfg["falloff"]
-    paint.DistanceMode = cfg["distance_mode"]
-    paint.Dabs = demo.dabs_along(cfg["dab_lines"], to_xyz)
-    paint.UpdatePipeline()
-    chain = ChainMailDeformation(registrationName=name + " deform", Input=paint)  # noqa: F405
-    chain.MalleabilityArray = ["POINTS", "Malleability"]
-    chain.PinnedArray = ["POINTS", "None"]
+def shown(source, cfg, to_xyz, name):
+    chain = demo.painted_scene(source, cfg, to_xyz, name)[1]
     display = Show(chain, view)
     display.Scale = [1.0, 1.0, cfg["z_exaggeration"]]
     geoshaping_presets.show_malleability(display)
@@ -43,19 +34,11 @@ def painted(source, cfg, to_xyz, name):
 
 
 dem = TrivialProducer(registrationName="Jacksboro DEM")
-data = jacksboro.jacksboro_polydata()
+data = demo.jacksboro.jacksboro_polydata()
 dem.GetClientSideObject().SetOutput(data)
-height = demo_metrics.SurfaceHeight(data)
-
-
-def jack_xyz(lonlat):
-    x, y = demo.lonlat_to_scene(*lonlat)
-    return (x, y, height.height(x, y))
-
-
-painted(dem, config["jacksboro"], jack_xyz, "Jacksboro")
+shown(dem, config["jacksboro"], demo.jacksboro_xyz(data), "Jacksboro")
 step = FaultStepHorizon(registrationName="Fault step", **config["fault_step"]["source"])  # noqa: F405
-chain = painted(step, config["fault_step"], tuple, "Fault step")
+chain = shown(step, config["fault_step"], tuple, "Fault step")
 Hide(chain, view)  # both scenes are in the pipeline browser; the DEM is shown
 ResetCamera(view)
 Render(view)
