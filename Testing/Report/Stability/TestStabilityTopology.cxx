@@ -301,7 +301,9 @@ TEST(Topology, EveryVertexPinnedButTheGraspMovesOnlyTheGrasp)
 }
 
 // A 4,000,000-vertex mesh through the core (building it through VTK would double the
-// test's time without testing anything more): memory per vertex and time per frame.
+// test's time without testing anything more): memory per vertex, and the work of a frame
+// (candidates examined) bounded by the displaced region, not the mesh. The printed times
+// are for the log only; timing claims come from the benchmarks.
 TEST(Scale, FourMillionVertexMeshFramesCostTheDisplacedRegionOnly)
 {
   using clock = std::chrono::steady_clock;
@@ -322,6 +324,9 @@ TEST(Scale, FourMillionVertexMeshFramesCostTheDisplacedRegionOnly)
     worst_ms = std::max(worst_ms, std::chrono::duration<double, std::milli>(clock::now() - t).count());
     ASSERT_TRUE(r.ok);
     moved = r.moved;
+    // each moved vertex offers its 6 neighbours at most once per sponsor
+    EXPECT_LE(r.examined, 7 * r.moved) << "frame " << k;
+    EXPECT_LT(r.moved, std::size_t(100000)) << "frame " << k;
     for (geoshaping::index_t v : d.moved())
       ASSERT_TRUE(d.displacement(v).allFinite());
   }
@@ -332,6 +337,5 @@ TEST(Scale, FourMillionVertexMeshFramesCostTheDisplacedRegionOnly)
               "displaced; whole-mesh frame (pull 1e9) %.0f ms for %zu displaced\n",
     build_s, bytes, worst_ms, moved, huge_ms, huge.moved);
   EXPECT_LE(bytes, 100.0);
-  EXPECT_LT(worst_ms, 200.0);
   EXPECT_EQ(huge.moved, std::size_t(4000000));
 }
