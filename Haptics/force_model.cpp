@@ -68,15 +68,8 @@ ForceResult zero(ForceStatus why)
   return r;
 }
 
-struct Contact
-{
-  bool found = false;
-  double depth = 0.0;
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-};
+} // namespace
 
-// The nearest triangle decides: summing over all triangles would push twice at a
-// shared edge. Degenerate and non-finite triangles are skipped.
 Contact nearest_contact(
   const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup, double shell)
 {
@@ -112,8 +105,6 @@ Contact nearest_contact(
   }
   return c;
 }
-
-} // namespace
 
 ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   const ForceParams& params, const DeviceLimits& limits)

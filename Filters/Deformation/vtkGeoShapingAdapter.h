@@ -17,6 +17,7 @@
 
 #include <vector>
 
+class vtkAbstractCellLocator;
 class vtkCellArray;
 class vtkDataArray;
 class vtkDataSet;
@@ -47,6 +48,14 @@ public:
   /// Modification time of the geometry and connectivity (points and cells), ignoring
   /// point and cell data so that repainting an array does not rebuild adjacency.
   static vtkMTimeType GeometryTime(vtkPointSet* input);
+
+  /// Appends to `xyz` (9 doubles per triangle) the triangles of the surface cells of
+  /// `surface` that `locator` (built on it) finds in the box of half-size `radius`
+  /// around `center`: triangles, quads, pixels, polygons (as fans) and strips; other
+  /// cells (lines, volumes) are skipped. For the haptic contact patch (docs/haptics.md).
+  /// Returns the number of triangles appended.
+  static vtkIdType AppendTrianglesNear(vtkDataSet* surface, vtkAbstractCellLocator* locator,
+    const double center[3], double radius, std::vector<double>& xyz);
 };
 
 #endif

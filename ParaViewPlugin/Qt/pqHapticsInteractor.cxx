@@ -2,6 +2,7 @@
 
 #include "pqHapticsMouse.h"
 
+#include "geoshaping/haptics/contact_patch.h"
 #include "geoshaping/haptics/replay_device.h"
 #include "geoshaping/haptics/servo_loop.h"
 
@@ -16,6 +17,8 @@
 #include <vtkSphereSource.h>
 #include <vtkWeakPointer.h>
 
+#include <algorithm>
+
 namespace gi = geoshaping::interactor;
 namespace gh = geoshaping::haptics;
 
@@ -29,6 +32,8 @@ struct pqHapticsInteractor::Hand
   gi::HandController controller;
   gh::DeviceSnapshot latest;
   gi::WorkspaceMapping mapping; // frozen while the button is held
+  gh::FreeSide freeSide;        // where the stylus was last out of contact (device frame)
+  gh::SceneSnapshot sent;       // a copy of the last scene published to the servo loop
   Eigen::Vector3d anchor = Eigen::Vector3d::Zero(); // device frame
   double stiffness = 0.0;
   vtkNew<vtkSphereSource> sphere;
@@ -188,8 +193,8 @@ void pqHapticsInteractor::apply(Hand& hand, const gi::HandActions& actions)
     this->Pipeline.graspedVertex(vertex, malleability);
     if (hand.device)
     {
-      const Eigen::Vector3d world = (this->Pipeline.objectMatrix() *
-        actions.grasp_position.homogeneous()).hnormalized();
+      const Eigen::Vector3d world =
+        (this->Pipeline.objectMatrix() * actions.grasp_position.homogeneous()).hnormalized();
       hand.anchor = hand.mapping.to_device(world);
       hand.stiffness =
         gh::coupling_stiffness(malleability, gh::ForceParams(), hand.device->limits());
@@ -214,13 +219,8 @@ void pqHapticsInteractor::apply(Hand& hand, const gi::HandActions& actions)
   {
     // Dabs land on the surface the user sees: while a hand drags, or once edits are
     // committed, it is not the paint filter's input.
-    bool dragging = false;
-    for (const auto& other : this->Hands)
-    {
-      dragging = dragging ||
-        (other && other->controller.held() && other->controller.tool() == gi::Tool::deform);
-    }
-    this->Pipeline.appendDabs(actions.dabs, dragging || this->Pipeline.numberOfEdits() > 0);
+    this->Pipeline.appendDabs(
+      actions.dabs, this->anyHandDragging() || this->Pipeline.numberOfEdits() > 0);
   }
   if (actions.begin_hold)
   {
@@ -232,6 +232,28 @@ void pqHapticsInteractor::apply(Hand& hand, const gi::HandActions& actions)
   }
 }
 
+bool pqHapticsInteractor::forceFromLastScene(int index, gh::ForceResult& result) const
+{
+  const Hand* hand = index >= 0 && index < 2 ? this->Hands[index].get() : nullptr;
+  if (!hand || !hand->device)
+  {
+    return false;
+  }
+  gh::ForceInput in;
+  in.position = hand->latest.sample.position;
+  in.device_ok = hand->latest.device_ok;
+  in.now = hand->sent.stamp;
+  result = gh::compute_force(in, hand->sent, gh::ForceParams(), hand->device->limits());
+  return true;
+}
+
+bool pqHapticsInteractor::anyHandDragging() const
+{
+  return std::any_of(this->Hands.begin(), this->Hands.end(),
+    [](const auto& hand)
+    { return hand && hand->controller.held() && hand->controller.tool() == gi::Tool::deform; });
+}
+
 gi::EditResult pqHapticsInteractor::runEdit(gi::EditCommand command)
 {
   this->Pipeline.refresh();
@@ -239,7 +261,7 @@ gi::EditResult pqHapticsInteractor::runEdit(gi::EditCommand command)
   {
     // An undo/redo/reset ends a drag without committing it.
     if (hand && hand->controller.held() && hand->controller.tool() == gi::Tool::deform &&
-      command != gi::EditCommand::commit)
+        command != gi::EditCommand::commit)
     {
       hand->controller.cancel();
     }
@@ -250,7 +272,7 @@ gi::EditResult pqHapticsInteractor::runEdit(gi::EditCommand command)
   return this->LastEdit;
 }
 
-void pqHapticsInteractor::publishScene(Hand& hand)
+void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus, bool anyDragging)
 {
   if (!hand.servo)
   {
@@ -262,7 +284,28 @@ void pqHapticsInteractor::publishScene(Hand& hand)
   scene.grasping = hand.controller.held() && hand.controller.tool() == gi::Tool::deform;
   scene.grasp_anchor = hand.anchor;
   scene.grasp_stiffness = hand.stiffness;
+  // Contact: the surfaces near the stylus, in the device frame, each triangle facing the
+  // side the stylus came from. The shape being dragged is left out while any hand drags
+  // it (the stylus would fight its own grasp, and its locator would be rebuilt every
+  // frame); otherwise the stylus feels it too, e.g. while painting or before a grasp.
   scene.contact_triangles.clear();
+  const gh::DeviceSample& sample = hand.latest.sample;
+  hand.freeSide.update(
+    sample.position, hand.sent.contact_triangles, gh::ForceParams().contact_shell);
+  if (hand.latest.device_ok && hand.freeSide.known())
+  {
+    this->Pipeline.contactTriangles(
+      stylus, ContactReachMetres * hand.mapping.scale(), !anyDragging, scene.contact_triangles);
+    for (Eigen::Vector3d& p : scene.contact_triangles)
+    {
+      p = hand.mapping.to_device(p);
+    }
+    gh::orient_toward(scene.contact_triangles, hand.freeSide.point());
+    gh::keep_nearest(scene.contact_triangles, sample.position, MaxContactTriangles);
+  }
+  this->Stats.contactTriangles += (long long)(scene.contact_triangles.size() / 3);
+  this->Stats.contactTicks += hand.latest.in_contact ? 1 : 0;
+  hand.sent = scene;
   hand.servo->publish_scene();
 }
 
@@ -274,6 +317,7 @@ void pqHapticsInteractor::onFrame()
   const gi::CameraFrame camera = this->Pipeline.camera();
   const Eigen::Matrix4d object = this->Pipeline.objectMatrix();
   const Eigen::Matrix4d toObject = object.inverse();
+  this->Stats.contactTriangles = 0;
   for (auto& handPtr : this->Hands)
   {
     if (!handPtr)
@@ -301,15 +345,26 @@ void pqHapticsInteractor::onFrame()
 
     const bool painting = hand.controller.tool() == gi::Tool::paint;
     const Eigen::Vector3d color = painting ? gi::malleability_color(this->Brush.value)
-      : hand.controller.held()             ? Eigen::Vector3d(0.2, 1.0, 0.3)
-                                           : Eigen::Vector3d(0.2, 0.6, 1.0);
+                                  : hand.controller.held() ? Eigen::Vector3d(0.2, 1.0, 0.3)
+                                                           : Eigen::Vector3d(0.2, 0.6, 1.0);
     hand.sphere->SetCenter(world.position.data());
     hand.sphere->SetRadius(painting ? this->Brush.radius : 0.004 * mapping.scale());
     hand.cursor->GetProperty()->SetColor(color.x(), color.y(), color.z());
     hand.cursor->SetVisibility(hand.kind != Mouse || world.button);
     hand.showCursor(viewProxy ? viewProxy->GetRenderer() : nullptr);
-    this->publishScene(hand);
   }
+  // After every hand has acted, so that a grasp made this frame counts as dragging.
+  const bool anyDragging = this->anyHandDragging();
+  for (auto& hand : this->Hands)
+  {
+    if (hand && hand->device)
+    {
+      const gh::DeviceSample& sample = hand->latest.sample;
+      this->publishScene(*hand, hand->mapping.to_scene(sample.position), anyDragging);
+    }
+  }
+  this->Stats.maxContactTriangles =
+    std::max(this->Stats.maxContactTriangles, this->Stats.contactTriangles);
   this->Pipeline.render();
   this->updateFigures();
   Q_EMIT this->frameDone();
@@ -331,8 +386,7 @@ void pqHapticsInteractor::updateFigures()
   for (std::size_t i = 0; i < this->Hands.size(); ++i)
   {
     const Hand* hand = this->Hands[i].get();
-    this->Stats.servoHz[i] =
-      hand && hand->servo ? hand->servo->period_summary().mean_rate_hz : 0.0;
+    this->Stats.servoHz[i] = hand && hand->servo ? hand->servo->period_summary().mean_rate_hz : 0.0;
   }
   if (this->Pipeline.hasDeformation())
   {

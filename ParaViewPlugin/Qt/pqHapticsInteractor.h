@@ -6,6 +6,7 @@
 // scene snapshot (grasp anchor, stiffness) back to the servo loop for the force.
 // After ParaView's CAVEInteraction plugin: device thread -> snapshot -> QTimer.
 #include "HapticsControl.h"
+#include "geoshaping/haptics/force_model.h"
 #include "pqHapticsPipeline.h"
 
 #include <QObject>
@@ -44,7 +45,15 @@ public:
     long long displacedAtRelease = 0; // NumberOfDisplacedPoints of the last committed drag
     int frames = 0;
     double sceneUnitsPerMetre = 0.0; // the workspace mapping's scale, first device hand
+    long long contactTriangles = 0; // sent to the servo loop in the last frame (all hands)
+    long long maxContactTriangles = 0; // the most sent in one frame since start
+    long long contactTicks = 0; // device snapshots taken in contact since start
   };
+
+  // Contact patch sent to each servo loop: the triangles within this distance of the
+  // stylus (device metres; one frame of fast hand motion), at most this many.
+  static constexpr double ContactReachMetres = 0.02;
+  static constexpr std::size_t MaxContactTriangles = 256;
 
   explicit pqHapticsInteractor(QObject* parent = nullptr);
   ~pqHapticsInteractor() override;
@@ -73,6 +82,11 @@ public:
   // Commits made by releases since start (for the GUI test).
   int releaseCommits() const { return this->ReleaseCommits; }
   pqHapticsPipeline& pipeline() { return this->Pipeline; }
+  // The force the servo loop renders from the scene last published for device hand
+  // `hand` (0 or 1) at the stylus position of that frame, at rest, as if fresh: what
+  // the graphics side asks the servo to render, independent of its timing. False for a
+  // hand without a device.
+  bool forceFromLastScene(int hand, geoshaping::haptics::ForceResult& result) const;
 
 Q_SIGNALS:
   void frameDone();
@@ -86,8 +100,9 @@ private:
   bool stylusOf(Hand& hand, const geoshaping::interactor::WorkspaceMapping& mapping,
     geoshaping::interactor::StylusState& world);
   void apply(Hand& hand, const geoshaping::interactor::HandActions& actions);
-  void publishScene(Hand& hand);
+  void publishScene(Hand& hand, const Eigen::Vector3d& stylus, bool anyDragging);
   void updateFigures();
+  bool anyHandDragging() const;
 
   std::array<std::unique_ptr<Hand>, 2> Hands;
   pqHapticsPipeline Pipeline;

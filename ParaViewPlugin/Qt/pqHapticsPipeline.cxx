@@ -3,21 +3,24 @@
 #include <pqActiveObjects.h>
 #include <pqApplicationCore.h>
 #include <pqDataRepresentation.h>
+#include <pqOutputPort.h>
 #include <pqPipelineSource.h>
 #include <pqRenderView.h>
 #include <pqServerManagerModel.h>
+
+#include "vtkGeoShapingAdapter.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCamera.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdList.h>
-#include <vtkPoints.h>
 #include <vtkMath.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
+#include <vtkPoints.h>
 #include <vtkSMPropertyHelper.h>
 #include <vtkSMRenderViewProxy.h>
 #include <vtkSMSourceProxy.h>
@@ -33,7 +36,7 @@ namespace
 bool isA(pqPipelineSource* source, const char* xmlName)
 {
   return source && source->getProxy() && source->getProxy()->GetXMLName() &&
-    std::strcmp(source->getProxy()->GetXMLName(), xmlName) == 0;
+         std::strcmp(source->getProxy()->GetXMLName(), xmlName) == 0;
 }
 }
 
@@ -64,8 +67,8 @@ pqPipelineSource* paintUpstreamOf(pqPipelineSource* source)
     {
       return item;
     }
-    proxy = proxy->GetProperty("Input") ? vtkSMPropertyHelper(proxy, "Input").GetAsProxy(0)
-                                        : nullptr;
+    proxy =
+      proxy->GetProperty("Input") ? vtkSMPropertyHelper(proxy, "Input").GetAsProxy(0) : nullptr;
   }
   return nullptr;
 }
@@ -125,14 +128,17 @@ geoshaping::interactor::CameraFrame pqHapticsPipeline::camera() const
 
 vtkSMProxy* pqHapticsPipeline::representation(pqPipelineSource* source) const
 {
-  pqDataRepresentation* repr = source && this->View ? source->getRepresentation(this->View) : nullptr;
+  pqDataRepresentation* repr =
+    source && this->View ? source->getRepresentation(this->View) : nullptr;
   return repr ? repr->getProxy() : nullptr;
 }
 
-Eigen::Matrix4d pqHapticsPipeline::objectMatrix() const
+namespace
+{
+// The matrix of a representation's Position/Orientation/Origin/Scale.
+Eigen::Matrix4d matrixOf(vtkSMProxy* repr)
 {
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-  vtkSMProxy* repr = this->representation(this->Deformation);
   if (!repr || !repr->GetProperty("Position"))
   {
     return m;
@@ -159,6 +165,12 @@ Eigen::Matrix4d pqHapticsPipeline::objectMatrix() const
     }
   }
   return m;
+}
+}
+
+Eigen::Matrix4d pqHapticsPipeline::objectMatrix() const
+{
+  return matrixOf(this->representation(this->Deformation));
 }
 
 void pqHapticsPipeline::setObjectMatrix(const Eigen::Matrix4d& m)
@@ -224,6 +236,86 @@ vtkPointSet* pqHapticsPipeline::shownSurface() const
   auto* filter = proxy ? vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject()) : nullptr;
   auto* output = filter ? vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0)) : nullptr;
   return output && output->GetNumberOfPoints() > 0 ? output : nullptr;
+}
+
+vtkStaticCellLocator* pqHapticsPipeline::cellLocator(vtkDataSet* data)
+{
+  this->CellLocators.erase(std::remove_if(this->CellLocators.begin(), this->CellLocators.end(),
+                             [](const CellLocatorEntry& e) { return !e.data; }),
+    this->CellLocators.end());
+  auto* pointSet = vtkPointSet::SafeDownCast(data);
+  const vtkMTimeType time =
+    pointSet ? vtkGeoShapingAdapter::GeometryTime(pointSet) : data->GetMTime();
+  auto entry = std::find_if(this->CellLocators.begin(), this->CellLocators.end(),
+    [data](const CellLocatorEntry& e) { return e.data == data; });
+  if (entry == this->CellLocators.end())
+  {
+    entry = this->CellLocators.insert(this->CellLocators.end(), CellLocatorEntry());
+    entry->data = data;
+  }
+  if (!entry->locator || entry->time != time)
+  {
+    entry->locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+    entry->locator->SetDataSet(data);
+    entry->locator->BuildLocator();
+    entry->time = time;
+  }
+  return entry->locator;
+}
+
+void pqHapticsPipeline::contactTriangles(
+  const Eigen::Vector3d& world, double radius, bool withShown, std::vector<Eigen::Vector3d>& out)
+{
+  if (!this->View || !world.allFinite() || !(radius > 0.0))
+  {
+    return;
+  }
+  // The deformation's upstream: the same surface before the deformation.
+  std::vector<vtkSMProxy*> upstream;
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  for (int depth = 0; proxy && depth < 64; ++depth)
+  {
+    proxy =
+      proxy->GetProperty("Input") ? vtkSMPropertyHelper(proxy, "Input").GetAsProxy(0) : nullptr;
+    upstream.push_back(proxy);
+  }
+  std::vector<double> xyz;
+  for (pqRepresentation* item : this->View->getRepresentations())
+  {
+    auto* repr = qobject_cast<pqDataRepresentation*>(item);
+    pqPipelineSource* source = repr ? repr->getInput() : nullptr;
+    if (!repr || !repr->isVisible() || !source ||
+        std::find(upstream.begin(), upstream.end(), source->getProxy()) != upstream.end() ||
+        (!withShown && source == this->Deformation))
+    {
+      continue;
+    }
+    auto* algorithm = vtkAlgorithm::SafeDownCast(source->getProxy()->GetClientSideObject());
+    const int port = repr->getOutputPortFromInput()->getPortNumber();
+    auto* data = algorithm && port < algorithm->GetNumberOfOutputPorts()
+                   ? vtkDataSet::SafeDownCast(algorithm->GetOutputDataObject(port))
+                   : nullptr;
+    if (!data || data->GetNumberOfCells() == 0)
+    {
+      continue;
+    }
+    const Eigen::Matrix4d m = matrixOf(repr->getProxy());
+    const Eigen::Matrix4d inverse = m.inverse();
+    if (!inverse.allFinite())
+    {
+      continue;
+    }
+    const Eigen::Vector3d centre = (inverse * world.homogeneous()).hnormalized();
+    // The Frobenius norm bounds the inverse's largest stretch: a box that holds the ball.
+    const double local = radius * inverse.topLeftCorner<3, 3>().norm();
+    xyz.clear();
+    vtkGeoShapingAdapter::AppendTrianglesNear(
+      data, this->cellLocator(data), centre.data(), local, xyz);
+    for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+    {
+      out.push_back((m * Eigen::Vector4d(xyz[i], xyz[i + 1], xyz[i + 2], 1.0)).hnormalized());
+    }
+  }
 }
 
 vtkPointSet* pqHapticsPipeline::restSurface() const
@@ -392,8 +484,8 @@ int pqHapticsPipeline::numberOfEdits() const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
   return proxy && proxy->GetProperty("EditHistory")
-    ? static_cast<int>(vtkSMPropertyHelper(proxy, "EditHistory").GetNumberOfElements())
-    : 0;
+           ? static_cast<int>(vtkSMPropertyHelper(proxy, "EditHistory").GetNumberOfElements())
+           : 0;
 }
 
 void pqHapticsPipeline::render()

@@ -11,12 +11,15 @@
 #include <QPointer>
 
 #include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
 #include <vtkStaticPointLocator.h>
+#include <vtkWeakPointer.h>
 #include <vtkType.h>
 
 #include <array>
 #include <vector>
 
+class vtkDataSet;
 class vtkPointSet;
 class vtkSMProxy;
 
@@ -67,11 +70,23 @@ public:
   // filter's input; otherwise the press position and DefaultMalleability).
   bool graspedVertex(Eigen::Vector3d& position, double& malleability) const;
 
+  // Contact triangles for the haptic force (docs/interactor.md, Forces): the triangles of
+  // the surfaces shown in the view within the box of half-size `radius` around `world`
+  // (both scene coordinates), appended to `out` in scene coordinates, 3 vertices each.
+  // Every visible representation counts, each through its own Position/Orientation/
+  // Scale, except the deformation's upstream (the same surface, undeformed) and, unless
+  // `withShown`, the deformation's own output. Builtin sessions only: against a remote
+  // server the client holds no data and nothing is appended. Cell locators are cached
+  // per dataset and rebuilt when its geometry changes.
+  void contactTriangles(const Eigen::Vector3d& world, double radius, bool withShown,
+    std::vector<Eigen::Vector3d>& out);
+
   double lastDeformationMilliseconds() const;
   long long numberOfDisplacedPoints() const;
 
 private:
   vtkSMProxy* representation(pqPipelineSource* source) const;
+  vtkStaticCellLocator* cellLocator(vtkDataSet* data);
 
   QPointer<pqRenderView> View;
   QPointer<pqPipelineSource> Deformation;
@@ -83,6 +98,13 @@ private:
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   vtkMTimeType LocatorTime = 0;
   vtkPointSet* LocatorData = nullptr;
+  struct CellLocatorEntry
+  {
+    vtkWeakPointer<vtkDataSet> data;
+    vtkSmartPointer<vtkStaticCellLocator> locator;
+    vtkMTimeType time = 0;
+  };
+  std::vector<CellLocatorEntry> CellLocators;
   bool DeformationModified = false;
   bool PaintModified = false;
   bool RepresentationModified = false;

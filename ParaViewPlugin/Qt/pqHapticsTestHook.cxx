@@ -208,6 +208,16 @@ void pqHapticsTestHook::writeResults()
   out << "deformation_ms = " << f.deformationMilliseconds << "\n";
   out << "displaced_points = " << f.displacedPoints << "\n";
   out << "displaced_at_release = " << f.displacedAtRelease << "\n";
+  out << "max_contact_triangles = " << f.maxContactTriangles << "\n";
+  out << "contact_ticks = " << f.contactTicks << "\n";
+  geoshaping::haptics::ForceResult force;
+  if (interactor->forceFromLastScene(0, force))
+  {
+    out << "force_from_last_scene = " << force.force.x() << " " << force.force.y() << " "
+        << force.force.z() << "\n";
+    out << "force_status = " << geoshaping::haptics::to_string(force.status) << "\n";
+    out << "in_contact_last_scene = " << int(force.in_contact) << "\n";
+  }
   const Eigen::Vector3d& d = interactor->lastDisplacement();
   auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
   if (vtkCamera* camera = view ? view->getRenderViewProxy()->GetActiveCamera() : nullptr)

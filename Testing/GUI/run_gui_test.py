@@ -25,13 +25,9 @@ def read_trace(path):
     return [(float(r[0]), [float(v) for v in r[1:4]], int(r[8])) for r in rows]
 
 
-def expected_drag(trace_path):
-    """The trace's motion from press to release, device frame -> scene (the mapping of
-    HapticsControl.h, computed independently)."""
-    samples = read_trace(trace_path)
-    held = [s for s in samples if s[2] & 1]
-    press, last = held[0][1], held[-1][1]
-    d = [b - a for a, b in zip(press, last)]
+def device_axes():
+    """The workspace -> scene mapping of HapticsControl.h, computed independently:
+    scene = focal + scale * (x p_x + y p_y + z p_z)."""
     pos, foc, up = CAMERA["position"], CAMERA["focal_point"], CAMERA["view_up"]
     z = [p - f for p, f in zip(pos, foc)]
     dist = math.sqrt(sum(c * c for c in z))
@@ -41,7 +37,54 @@ def expected_drag(trace_path):
     x = [c / n for c in x]
     y = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]]
     scale = dist * math.tan(math.radians(CAMERA["view_angle"] / 2)) / WORKSPACE_RADIUS
+    return x, y, z, scale
+
+
+def expected_drag(trace_path):
+    """The trace's motion from press to release, device frame -> scene."""
+    samples = read_trace(trace_path)
+    held = [s for s in samples if s[2] & 1]
+    press, last = held[0][1], held[-1][1]
+    d = [b - a for a, b in zip(press, last)]
+    x, y, z, scale = device_axes()
     return [scale * (d[0] * x[i] + d[1] * y[i] + d[2] * z[i]) for i in range(3)]
+
+
+# The touch test: a point of the horizon's upper plateau (the fault-step horizon is
+# z = throw = 20 for x < 47) and its normal, the scene's +z.
+PLATEAU_POINT = [20.0, 30.0, 20.0]
+DEPTH = 0.002  # m, how far the stylus ends below the surface (device frame)
+
+
+def write_touch_trace(path):
+    """No button: the stylus rests 1 cm above the plateau (along the surface normal in
+    the device frame), goes 2 mm below it in 1 s and rests there. Returns the device-frame
+    normal."""
+    x, y, z, scale = device_axes()
+    rel = [(p - f) / scale for p, f in zip(PLATEAU_POINT, CAMERA["focal_point"])]
+    point = [sum(a[i] * rel[i] for i in range(3)) for a in (x, y, z)]
+    normal = [a[2] for a in (x, y, z)]  # A^T e_z
+    with open(path, "w") as f:
+        f.write("# t x y z qw qx qy qz buttons: touch the plateau of the fault step\n")
+        for k in range(int(4.0 * 60) + 1):
+            t = k / 60.0
+            h = 0.01 if t < 1.0 else (0.01 - (0.01 + DEPTH) * min(1.0, t - 1.0))
+            p = [c + h * n for c, n in zip(point, normal)]
+            f.write("%.6f %.9f %.9f %.9f 1 0 0 0 0\n" % (t, p[0], p[1], p[2]))
+    return normal
+
+
+def check_touch(results, normal):
+    """At rest 2 mm into the plateau, the force asked of the servo loop is the penalty
+    contact k_c d = 800 N/m * 2 mm = 1.6 N along the surface's normal (device frame)."""
+    force = [float(v) for v in results["force_from_last_scene"].split()]
+    expected = [800.0 * DEPTH * n for n in normal]
+    print("touch force", force, "expected", expected, "triangles sent (max)",
+          results["max_contact_triangles"])
+    assert results["force_status"] == "ok" and results["in_contact_last_scene"] == "1", results
+    assert all(abs(a - b) < 1e-3 for a, b in zip(force, expected)), (force, expected)
+    assert 0 < int(results["max_contact_triangles"]) <= 256, results
+    assert int(results["moved_points"]) == 0, "touching must not deform"
 
 
 def read_results(path):
@@ -105,6 +148,9 @@ def main():
         if os.path.exists(out + suffix):
             os.remove(out + suffix)
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
+    if mode == "touch":
+        env["GEOSHAPING_HAPTICS_REPLAY"] = out + ".trace"
+        normal = write_touch_trace(out + ".trace")
     command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24", os.environ["PARAVIEW"],
                "--dr", "--script=" + os.environ["GEOSHAPING_GUI_SETUP"]]
     run = subprocess.run(command, env=env, timeout=90, stdout=subprocess.PIPE,
@@ -116,6 +162,10 @@ def main():
     assert results["started"] == "1" and results["timed_out"] == "0", results
     assert results["dock_visible"] == "1" and results["dock_title"] == "Haptics", results
     assert int(results["frames"]) >= 5, "too few interactor frames"
+    if mode == "touch":
+        check_touch(results, normal)
+        print("GUI touch test passed")
+        return
     check_edits(results)
     if mode == "mouse":
         check_mouse(results)

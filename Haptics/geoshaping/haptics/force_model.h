@@ -35,6 +35,19 @@ double coupling_stiffness(
 Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
   const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
+// Penalty contact with a triangle soup (counter-clockwise seen from the free side): the
+// triangle nearest to x decides (summing over all would push twice at a shared edge);
+// with its unit normal n and nearest point q the depth is d = -(x - q).n, and contact
+// holds when 0 < d <= shell. Degenerate and non-finite triangles are skipped.
+struct Contact
+{
+  bool found = false;
+  double depth = 0.0;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+};
+Contact nearest_contact(
+  const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup, double shell);
+
 struct ForceInput
 {
   Eigen::Vector3d position = Eigen::Vector3d::Zero(); // m, device frame

@@ -1,0 +1,133 @@
+// vtkGeoShapingAdapter::AppendTrianglesNear (the haptic contact patch) against a
+// brute-force scan of every cell's bounds.
+#include "vtkGeoShapingAdapter.h"
+
+#include "vtk_test_meshes.h"
+
+#include "vtkBoundingBox.h"
+#include "vtkCellArray.h"
+#include "vtkCellType.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace
+{
+// Triangles a cell of this type with n points gives, the way the adapter cuts it.
+int trianglesOf(int type, vtkIdType n)
+{
+  switch (type)
+  {
+    case VTK_TRIANGLE:
+    case VTK_QUAD:
+    case VTK_POLYGON:
+    case VTK_TRIANGLE_STRIP:
+      return int(n - 2);
+    case VTK_PIXEL:
+      return 2;
+    default:
+      return 0;
+  }
+}
+
+vtkIdType bruteForce(vtkDataSet* data, const double c[3], double r)
+{
+  const vtkBoundingBox query(c[0] - r, c[0] + r, c[1] - r, c[1] + r, c[2] - r, c[2] + r);
+  vtkIdType count = 0;
+  for (vtkIdType cell = 0; cell < data->GetNumberOfCells(); ++cell)
+  {
+    double b[6];
+    data->GetCellBounds(cell, b);
+    if (query.Intersects(vtkBoundingBox(b)))
+    {
+      count += trianglesOf(data->GetCellType(cell), data->GetCell(cell)->GetNumberOfPoints());
+    }
+  }
+  return count;
+}
+} // namespace
+
+TEST(GeoShapingAdapter, TrianglesNearAPointAreThoseABruteForceScanFinds)
+{
+  // A 40 x 30 triangle grid plus, beside it, a quad, a pentagon, a pixel, a strip of
+  // 5 points and a line (skipped).
+  auto grid = geoshaping::testing::TriangleGridPolyData(40, 30, 1.0, {});
+  vtkPoints* points = grid->GetPoints();
+  auto add = [&](std::initializer_list<std::array<double, 3>> ps)
+  {
+    std::vector<vtkIdType> ids;
+    for (const auto& p : ps)
+      ids.push_back(points->InsertNextPoint(p.data()));
+    return ids;
+  };
+  vtkNew<vtkCellArray> polys, strips, lines;
+  polys->DeepCopy(grid->GetPolys());
+  auto quad = add({ { 41, 0, 0 }, { 42, 0, 0 }, { 42, 1, 0 }, { 41, 1, 0 } });
+  polys->InsertNextCell(4, quad.data());
+  auto pentagon = add({ { 41, 2, 0 }, { 42, 2, 0 }, { 42.5, 3, 0 }, { 41.5, 4, 0 }, { 41, 3, 0 } });
+  polys->InsertNextCell(5, pentagon.data());
+  auto strip = add({ { 41, 5, 0 }, { 41, 6, 0 }, { 42, 5, 0 }, { 42, 6, 0 }, { 43, 5, 0 } });
+  strips->InsertNextCell(5, strip.data());
+  auto line = add({ { 41, 8, 0 }, { 43, 8, 0 } });
+  lines->InsertNextCell(2, line.data());
+  grid->SetPolys(polys);
+  grid->SetStrips(strips);
+  grid->SetLines(lines);
+
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(grid);
+  locator->BuildLocator();
+  for (const auto& query : std::vector<std::array<double, 4>>{ { 10.2, 10.7, 0.0, 2.5 },
+         { 41.5, 4.0, 0.3, 2.0 }, { 41.5, 7.5, 0.0, 1.0 }, { 0.0, 0.0, 0.0, 0.4 },
+         { 100.0, 100.0, 0.0, 3.0 }, { 20.0, 15.0, 5.0, 4.0 } })
+  {
+    std::vector<double> xyz = { 1.0, 2.0 }; // appended to, not replaced
+    const vtkIdType n =
+      vtkGeoShapingAdapter::AppendTrianglesNear(grid, locator, query.data(), query[3], xyz);
+    EXPECT_EQ(n, bruteForce(grid, query.data(), query[3])) << query[0] << " " << query[1];
+    ASSERT_EQ(xyz.size(), 2 + 9 * std::size_t(n));
+    EXPECT_EQ(xyz[0], 1.0);
+    for (std::size_t t = 0; t < std::size_t(n); ++t)
+    {
+      // every triangle is a real one: non-degenerate, its corners near the query box
+      const double* a = &xyz[2 + 9 * t];
+      const double e1[2] = { a[3] - a[0], a[4] - a[1] }, e2[2] = { a[6] - a[0], a[7] - a[1] };
+      EXPECT_GT(std::abs(e1[0] * e2[1] - e1[1] * e2[0]), 0.1) << t;
+    }
+  }
+  const double c[3] = { 10.2, 10.7, 0.0 };
+  std::vector<double> xyz;
+  // 2.5 around (10.2, 10.7) on a unit grid: 6 x 6 squares (x 8..13, y 8..13 once
+  // bounds touching the box count), 2 triangles each
+  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(grid, locator, c, 2.5, xyz), 2 * 6 * 6);
+  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(grid, locator, c, std::nan(""), xyz), 0);
+  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(grid, locator, c, -1.0, xyz), 0);
+  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(nullptr, locator, c, 1.0, xyz), 0);
+}
+
+TEST(GeoShapingAdapter, VolumeCellsGiveNoContactTriangles)
+{
+  vtkNew<vtkPoints> p;
+  p->InsertNextPoint(0, 0, 0);
+  p->InsertNextPoint(1, 0, 0);
+  p->InsertNextPoint(0, 1, 0);
+  p->InsertNextPoint(0, 0, 1);
+  vtkNew<vtkUnstructuredGrid> ug;
+  ug->SetPoints(p);
+  const vtkIdType tet[4] = { 0, 1, 2, 3 };
+  ug->InsertNextCell(VTK_TETRA, 4, tet);
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(ug);
+  locator->BuildLocator();
+  const double c[3] = { 0.2, 0.2, 0.2 };
+  std::vector<double> xyz;
+  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(ug, locator, c, 1.0, xyz), 0);
+  EXPECT_TRUE(xyz.empty());
+}
