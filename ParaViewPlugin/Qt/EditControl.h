@@ -30,23 +30,23 @@ class EditProxy
 {
 public:
   virtual ~EditProxy() = default;
-  virtual void invoke(const char* command) = 0; // vtkSMProxy::InvokeCommand
-  virtual void update_information() = 0; // vtkSMProxy::UpdatePropertyInformation
-  virtual std::string last_edit() = 0; // information property LastEdit
-  virtual int number_of_edits() = 0; // information property NumberOfEdits (server)
-  virtual int number_of_redoable_edits() = 0; // information NumberOfRedoableEdits
+  virtual void invoke(const char* command) = 0;   // vtkSMProxy::InvokeCommand
+  virtual void update_information() = 0;          // vtkSMProxy::UpdatePropertyInformation
+  virtual std::string last_edit() = 0;            // information property LastEdit
+  virtual int number_of_edits() = 0;              // information property NumberOfEdits (server)
+  virtual int number_of_redoable_edits() = 0;     // information NumberOfRedoableEdits
   virtual std::vector<std::string> history() = 0; // the client's EditHistory
   virtual void set_history(const std::vector<std::string>& records) = 0;
   virtual void release() = 0; // GraspMode Point Id, GraspPointId -1, Displacement 0
-  virtual void push() = 0; // vtkSMProxy::UpdateVTKObjects
+  virtual void push() = 0;    // vtkSMProxy::UpdateVTKObjects
 };
 
 struct EditResult
 {
-  bool changed = false; // the list (and so the shape) changed
+  bool changed = false;  // the list (and so the shape) changed
   std::size_t edits = 0; // records in EditHistory afterwards
-  int redoable = 0; // what RedoEdit can still re-apply
-  std::string message; // why nothing changed, empty otherwise
+  int redoable = 0;      // what RedoEdit can still re-apply
+  std::string message;   // why nothing changed, empty otherwise
 };
 
 // Runs one command and keeps the client's list in step, as docs/editing.md's Python

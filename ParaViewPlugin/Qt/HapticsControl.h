@@ -67,8 +67,8 @@ struct StylusState
 
 struct Brush
 {
-  double radius = 5.0; // scene units
-  double value = 1.0; // malleability painted, [0, 1]
+  double radius = 5.0;   // scene units
+  double value = 1.0;    // malleability painted, [0, 1]
   double strength = 0.5; // per dab, [0, 1]
 };
 
@@ -88,10 +88,10 @@ struct HandActions
   Eigen::Vector3d grasp_position = Eigen::Vector3d::Zero();
   bool set_displacement = false; // Deform held: the grasped vertex's displacement
   Eigen::Vector3d displacement = Eigen::Vector3d::Zero();
-  bool release = false; // Deform released (the shape stays as it is)
+  bool release = false;                    // Deform released (the shape stays as it is)
   std::vector<std::array<double, 6>> dabs; // Paint: x y z radius value strength
-  bool begin_hold = false; // Hold-and-turn press: remember the object's pose
-  bool set_motion = false; // Hold-and-turn held: motion since the press
+  bool begin_hold = false;                 // Hold-and-turn press: remember the object's pose
+  bool set_motion = false;                 // Hold-and-turn held: motion since the press
   RigidMotion motion;
   bool end_hold = false;
 };

@@ -5,8 +5,10 @@
 #include <pqCoreUtilities.h>
 
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -75,7 +77,28 @@ void pqHapticsDockPanel::build()
   this->Radius->setValue(this->Interactor->brush().radius);
   this->Radius->setToolTip("Brush radius in scene units (the Dabs radius of MalleabilityPaint).");
   brush->addRow("Brush radius", this->Radius);
+  this->Record = new QLineEdit(body);
+  this->Record->setObjectName("Record");
+  this->Record->setPlaceholderText("none");
+  this->Record->setToolTip("Records each hand's stylus (device frame) while running, to replay "
+                           "it later as a Replay file; hand 2 gets \"-hand2\" in its name.");
+  auto* recordBrowse = new QToolButton(body);
+  recordBrowse->setText("…");
+  auto* recordRow = new QHBoxLayout();
+  recordRow->addWidget(this->Record);
+  recordRow->addWidget(recordBrowse);
+  brush->addRow("Record traces to", recordRow);
   layout->addLayout(brush);
+  QObject::connect(recordBrowse, &QToolButton::clicked, this,
+    [this]()
+    {
+      const QString path = QFileDialog::getSaveFileName(
+        this, "Record stylus trace", QString(), "Stylus traces (*.trace *.txt);;All files (*)");
+      if (!path.isEmpty())
+      {
+        this->Record->setText(path);
+      }
+    });
   layout->addWidget(this->buildPalette());
   layout->addWidget(this->buildEdits());
   this->StartStop = new QPushButton("Start", body);
@@ -93,7 +116,8 @@ void pqHapticsDockPanel::build()
 
   QObject::connect(this->StartStop, &QPushButton::clicked, this, &pqHapticsDockPanel::onStartStop);
   QObject::connect(this->Radius, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-    [this](double radius) {
+    [this](double radius)
+    {
       gi::Brush b = this->Interactor->brush();
       b.radius = radius;
       this->Interactor->setBrush(b);
@@ -133,18 +157,19 @@ QWidget* pqHapticsDockPanel::buildHand(int hand)
   form->addRow("Trace", fileRow);
   form->addRow("Tool", w.tool);
 
-  QObject::connect(browse, &QToolButton::clicked, this, [this, hand]() {
-    const QString path = QFileDialog::getOpenFileName(this, "Stylus trace", QString(),
-      "Stylus traces (*.trace *.txt);;All files (*)");
-    if (!path.isEmpty())
+  QObject::connect(browse, &QToolButton::clicked, this,
+    [this, hand]()
     {
-      this->Hands[hand].file->setText(path);
-    }
-  });
-  QObject::connect(w.tool, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
-    [this, hand]() {
-      this->Interactor->setTool(hand, gi::Tool(this->Hands[hand].tool->currentData().toInt()));
+      const QString path = QFileDialog::getOpenFileName(
+        this, "Stylus trace", QString(), "Stylus traces (*.trace *.txt);;All files (*)");
+      if (!path.isEmpty())
+      {
+        this->Hands[hand].file->setText(path);
+      }
     });
+  QObject::connect(w.tool, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+    [this, hand]()
+    { this->Interactor->setTool(hand, gi::Tool(this->Hands[hand].tool->currentData().toInt())); });
   return box;
 }
 
@@ -163,7 +188,8 @@ QWidget* pqHapticsDockPanel::buildPalette()
     swatch->setFixedSize(22, 22);
     swatch->setToolTip(QString("Paint malleability %1").arg(value, 0, 'f', 1));
     swatch->setProperty("malleability", value);
-    QObject::connect(swatch, &QToolButton::clicked, this, [this, value]() { this->setPaintValue(value); });
+    QObject::connect(
+      swatch, &QToolButton::clicked, this, [this, value]() { this->setPaintValue(value); });
     grid->addWidget(swatch, 1, i);
     this->Swatches.append(swatch);
   }
@@ -267,14 +293,28 @@ void pqHapticsDockPanel::setHand(
   w.tool->setCurrentIndex(w.tool->findData(int(tool)));
 }
 
+void pqHapticsDockPanel::setRecordPath(const QString& path)
+{
+  this->Record->setText(path);
+}
+
 bool pqHapticsDockPanel::start()
 {
   std::array<pqHapticsInteractor::HandSetup, 2> setups;
+  const QString record = this->Record->text().trimmed();
+  const QFileInfo info(record);
   for (int i = 0; i < 2; ++i)
   {
     setups[i].device = Kind(this->Hands[i].device->currentData().toInt());
     setups[i].file = this->Hands[i].file->text();
     setups[i].tool = gi::Tool(this->Hands[i].tool->currentData().toInt());
+    if (!record.isEmpty())
+    {
+      setups[i].record =
+        i == 0 ? record
+               : info.dir().filePath(info.completeBaseName() + "-hand2" +
+                                     (info.suffix().isEmpty() ? "" : "." + info.suffix()));
+    }
   }
   QString error;
   const bool started = this->Interactor->start(setups, error);
@@ -289,6 +329,7 @@ bool pqHapticsDockPanel::start()
     w.device->setEnabled(!started);
     w.file->setEnabled(!started);
   }
+  this->Record->setEnabled(!started);
   return started;
 }
 
@@ -304,6 +345,13 @@ void pqHapticsDockPanel::stop()
   {
     w.device->setEnabled(true);
     w.file->setEnabled(true);
+  }
+  this->Record->setEnabled(true);
+  const auto& recorded = this->Interactor->figures().recordedSamples;
+  if (recorded[0] + recorded[1] > 0)
+  {
+    this->Status->setText(
+      QString("Recorded %1 + %2 stylus samples").arg(recorded[0]).arg(recorded[1]));
   }
 }
 

@@ -26,6 +26,9 @@ public:
   // Chooses a hand's device (as the combo boxes would) and starts.
   void setHand(int hand, pqHapticsInteractor::DeviceKind device, const QString& file,
     geoshaping::interactor::Tool tool);
+  // The trace file hand 1 records to (empty: no recording); hand 2 records next to it
+  // with "-hand2" before the extension.
+  void setRecordPath(const QString& path);
   bool start();
   void stop();
 
@@ -51,6 +54,7 @@ private:
   pqHapticsInteractor* Interactor = nullptr;
   HandWidgets Hands[2];
   QDoubleSpinBox* Radius = nullptr;
+  QLineEdit* Record = nullptr;
   QLabel* PaintValue = nullptr;
   QList<QToolButton*> Swatches;
   QPushButton* StartStop = nullptr;

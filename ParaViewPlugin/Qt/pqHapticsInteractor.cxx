@@ -5,6 +5,7 @@
 #include "geoshaping/haptics/contact_patch.h"
 #include "geoshaping/haptics/replay_device.h"
 #include "geoshaping/haptics/servo_loop.h"
+#include "geoshaping/haptics/trace.h"
 
 #include <pqRenderView.h>
 
@@ -34,6 +35,9 @@ struct pqHapticsInteractor::Hand
   gi::WorkspaceMapping mapping; // frozen while the button is held
   gh::FreeSide freeSide;        // where the stylus was last out of contact (device frame)
   gh::SceneSnapshot sent;       // a copy of the last scene published to the servo loop
+  gh::TraceRecorder recorder;   // open when the hand records its stylus
+  double recordedUntil = -1.0;  // t of the last recorded sample
+  std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
   Eigen::Vector3d anchor = Eigen::Vector3d::Zero(); // device frame
   double stiffness = 0.0;
   vtkNew<vtkSphereSource> sphere;
@@ -55,6 +59,7 @@ struct pqHapticsInteractor::Hand
     {
       this->servo->stop();
     }
+    this->recorder.close();
     if (this->renderer)
     {
       this->renderer->RemoveActor(this->cursor);
@@ -115,6 +120,12 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
         this->stop();
         return false;
       }
+    }
+    if (!setup.record.isEmpty() && !hand->recorder.open(setup.record.toStdString()))
+    {
+      error = QString("Hand %1: %2").arg(i + 1).arg(QString::fromStdString(hand->recorder.error()));
+      this->stop();
+      return false;
     }
     this->Hands[i] = std::move(hand);
   }
@@ -247,6 +258,33 @@ bool pqHapticsInteractor::forceFromLastScene(int index, gh::ForceResult& result)
   return true;
 }
 
+void pqHapticsInteractor::record(
+  Hand& hand, const gi::WorkspaceMapping& mapping, const gi::StylusState& world)
+{
+  if (!hand.recorder.is_open())
+  {
+    return;
+  }
+  gh::DeviceSample sample;
+  if (hand.device)
+  {
+    sample = hand.latest.sample; // the device's own time and frame
+  }
+  else
+  {
+    // The mouse in the device frame of the current view, timed since start.
+    sample.t = std::chrono::duration<double>(std::chrono::steady_clock::now() - hand.since).count();
+    sample.position = mapping.to_device(world.position);
+    sample.buttons = world.button ? 1u : 0u;
+  }
+  if (sample.t > hand.recordedUntil && hand.recorder.record(sample))
+  {
+    hand.recordedUntil = sample.t;
+  }
+  const std::size_t index = &hand == this->Hands[0].get() ? 0 : 1;
+  this->Stats.recordedSamples[index] = (long long)hand.recorder.samples();
+}
+
 bool pqHapticsInteractor::anyHandDragging() const
 {
   return std::any_of(this->Hands.begin(), this->Hands.end(),
@@ -333,6 +371,7 @@ void pqHapticsInteractor::onFrame()
       hand.mouse.attach(viewProxy);
     }
     this->stylusOf(hand, mapping, world);
+    this->record(hand, mapping, world);
     const bool mousePaints = hand.kind == Mouse && hand.mouse.paint();
     this->apply(hand, hand.controller.set_tool(mousePaints ? gi::Tool::paint : hand.tool));
 

@@ -35,6 +35,9 @@ public:
     DeviceKind device = NoDevice;
     QString file; // trace for ReplayFile, optional keyframes for Simulated
     geoshaping::interactor::Tool tool = geoshaping::interactor::Tool::deform;
+    // When not empty, the hand's stylus is recorded to this trace file (device frame,
+    // the format of docs/haptics.md), so it can be replayed as a Replay file device.
+    QString record;
   };
   struct Figures
   {
@@ -44,10 +47,11 @@ public:
     long long displacedPoints = 0;
     long long displacedAtRelease = 0; // NumberOfDisplacedPoints of the last committed drag
     int frames = 0;
-    double sceneUnitsPerMetre = 0.0; // the workspace mapping's scale, first device hand
-    long long contactTriangles = 0; // sent to the servo loop in the last frame (all hands)
+    double sceneUnitsPerMetre = 0.0;   // the workspace mapping's scale, first device hand
+    long long contactTriangles = 0;    // sent to the servo loop in the last frame (all hands)
     long long maxContactTriangles = 0; // the most sent in one frame since start
-    long long contactTicks = 0; // device snapshots taken in contact since start
+    long long contactTicks = 0;        // device snapshots taken in contact since start
+    std::array<long long, 2> recordedSamples{ { 0, 0 } };
   };
 
   // Contact patch sent to each servo loop: the triangles within this distance of the
@@ -101,6 +105,8 @@ private:
     geoshaping::interactor::StylusState& world);
   void apply(Hand& hand, const geoshaping::interactor::HandActions& actions);
   void publishScene(Hand& hand, const Eigen::Vector3d& stylus, bool anyDragging);
+  void record(Hand& hand, const geoshaping::interactor::WorkspaceMapping& mapping,
+    const geoshaping::interactor::StylusState& world);
   void updateFigures();
   bool anyHandDragging() const;
 

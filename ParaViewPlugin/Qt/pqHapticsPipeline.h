@@ -13,8 +13,8 @@
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkStaticPointLocator.h>
-#include <vtkWeakPointer.h>
 #include <vtkType.h>
+#include <vtkWeakPointer.h>
 
 #include <array>
 #include <vector>
@@ -78,8 +78,8 @@ public:
   // `withShown`, the deformation's own output. Builtin sessions only: against a remote
   // server the client holds no data and nothing is appended. Cell locators are cached
   // per dataset and rebuilt when its geometry changes.
-  void contactTriangles(const Eigen::Vector3d& world, double radius, bool withShown,
-    std::vector<Eigen::Vector3d>& out);
+  void contactTriangles(
+    const Eigen::Vector3d& world, double radius, bool withShown, std::vector<Eigen::Vector3d>& out);
 
   double lastDeformationMilliseconds() const;
   long long numberOfDisplacedPoints() const;

@@ -12,12 +12,12 @@
 #include <vtkAlgorithm.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
-#include <vtkRenderWindowInteractor.h>
-#include <vtkSMRenderViewProxy.h>
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
+#include <vtkRenderWindowInteractor.h>
 #include <vtkSMPropertyHelper.h>
 #include <vtkSMProxy.h>
+#include <vtkSMRenderViewProxy.h>
 
 #include <QCoreApplication>
 #include <QFile>
@@ -76,8 +76,12 @@ void pqHapticsTestHook::poll()
     const bool mouse = this->Trace == "mouse";
     this->Dock->setHand(0, mouse ? pqHapticsInteractor::Mouse : pqHapticsInteractor::ReplayFile,
       mouse ? QString() : this->Trace, geoshaping::interactor::Tool::deform);
-    this->Dock->setHand(1, pqHapticsInteractor::NoDevice, QString(),
-      geoshaping::interactor::Tool::hold_and_turn);
+    this->Dock->setHand(
+      1, pqHapticsInteractor::NoDevice, QString(), geoshaping::interactor::Tool::hold_and_turn);
+    if (!this->Output.isEmpty())
+    {
+      this->Dock->setRecordPath(this->Output + ".recorded.trace");
+    }
     this->Started = this->Dock->start();
     if (!this->Started && !this->Output.isEmpty())
     {
@@ -155,7 +159,8 @@ void pqHapticsTestHook::checkEdits(QTextStream& out, vtkPointSet* input, vtkPoin
   pqPipelineSource* source = pqHapticsFindSource("ChainMailDeformation");
   vtkSMProxy* proxy = source->getProxy();
   auto* filter = vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject());
-  auto shown = [filter, output]() {
+  auto shown = [filter, output]()
+  {
     auto* now = filter ? vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0)) : nullptr;
     return now ? now : output;
   };
@@ -210,6 +215,7 @@ void pqHapticsTestHook::writeResults()
   out << "displaced_at_release = " << f.displacedAtRelease << "\n";
   out << "max_contact_triangles = " << f.maxContactTriangles << "\n";
   out << "contact_ticks = " << f.contactTicks << "\n";
+  out << "recorded_samples = " << f.recordedSamples[0] << "\n";
   geoshaping::haptics::ForceResult force;
   if (interactor->forceFromLastScene(0, force))
   {
@@ -248,8 +254,7 @@ void pqHapticsTestHook::writeResults()
     }
     out << "output_points = " << output->GetNumberOfPoints() << "\n";
     out << "moved_points = " << moved << "\n";
-    out << "max_displacement = " << largest.x() << " " << largest.y() << " " << largest.z()
-        << "\n";
+    out << "max_displacement = " << largest.x() << " " << largest.y() << " " << largest.z() << "\n";
   }
   if (!this->TimedOut && this->Started && input && output)
   {

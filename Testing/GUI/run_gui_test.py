@@ -126,6 +126,21 @@ def check_mouse(results):
     assert int(results["moved_points"]) > 1, results
 
 
+def check_recording(results, out, expected):
+    """The dock recorded hand 1 to <out>.recorded.trace (the hook sets "Record traces
+    to"): a trace that reads back, in time order, whose press-to-release motion maps to
+    `expected` (the drag the test checks) — replaying it repeats the edit."""
+    path = out + ".recorded.trace"
+    samples = read_trace(path)
+    print("recorded", len(samples), "samples to", path)
+    assert len(samples) == int(results["recorded_samples"]) and len(samples) >= 5, results
+    assert all(a[0] < b[0] for a, b in zip(samples, samples[1:])), "times must increase"
+    if expected is not None:
+        got = expected_drag(path)
+        scale = math.sqrt(sum(c * c for c in expected))
+        assert all(abs(a - b) <= 1e-6 * scale for a, b in zip(got, expected)), (got, expected)
+
+
 def check_edits(results):
     """Releasing the Deform tool committed the edit (docs/editing.md): one record in
     EditHistory, the proxy released (GraspPointId -1), the points stay deformed; the
@@ -144,7 +159,7 @@ def check_edits(results):
 def main():
     mode = sys.argv[1] if len(sys.argv) > 1 else "replay"
     out = os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_" + mode)
-    for suffix in (".txt", ".png", "-view.png"):
+    for suffix in (".txt", ".png", "-view.png", ".recorded.trace"):
         if os.path.exists(out + suffix):
             os.remove(out + suffix)
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
@@ -164,11 +179,13 @@ def main():
     assert int(results["frames"]) >= 5, "too few interactor frames"
     if mode == "touch":
         check_touch(results, normal)
+        check_recording(results, out, None)
         print("GUI touch test passed")
         return
     check_edits(results)
     if mode == "mouse":
         check_mouse(results)
+        check_recording(results, out, [float(v) for v in results["last_displacement"].split()])
         print("GUI mouse test passed; screenshot:", out + "-view.png")
         return
 
@@ -178,6 +195,7 @@ def main():
     tolerance = 1e-3 * math.sqrt(sum(c * c for c in expected))
     print("expected drag", expected, "sent", sent, "largest output motion", moved)
     assert all(abs(a - b) <= tolerance for a, b in zip(sent, expected)), (sent, expected)
+    check_recording(results, out, expected)
     assert all(abs(a - b) <= 1e-4 + tolerance for a, b in zip(moved, expected)), (moved, expected)
     assert 1 < int(results["moved_points"]) < int(results["output_points"]), results
     # The figure is read at the release, before the commit (after it the filter shows
