@@ -32,7 +32,8 @@ EditResult run_edit(EditCommand command, EditProxy& proxy)
   if (server_before != static_cast<int>(before))
   {
     result.message = "the server had " + std::to_string(server_before) +
-      " edits, the client's EditHistory " + std::to_string(before) + " (kept the client's); ";
+                     " edits, the client's EditHistory " + std::to_string(before) +
+                     " (kept the client's); ";
   }
   if (command == EditCommand::undo && records.empty())
   {

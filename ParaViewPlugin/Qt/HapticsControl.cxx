@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace geoshaping::interactor
 {
@@ -13,7 +14,7 @@ WorkspaceMapping::WorkspaceMapping(const CameraFrame& camera, double workspace_r
   const Eigen::Vector3d z = toward_viewer / distance;
   const Eigen::Vector3d x = camera.view_up.cross(z);
   if (!(distance > 0.0) || !(x.norm() > 1e-12) || !(workspace_radius > 0.0) ||
-    !std::isfinite(distance))
+      !std::isfinite(distance))
   {
     return;
   }
@@ -22,8 +23,8 @@ WorkspaceMapping::WorkspaceMapping(const CameraFrame& camera, double workspace_r
   axes_.col(1) = z.cross(axes_.col(0));
   const double pi = 3.14159265358979323846;
   const double half_height = camera.parallel
-    ? camera.parallel_scale
-    : distance * std::tan(0.5 * camera.view_angle_deg * pi / 180.0);
+                               ? camera.parallel_scale
+                               : distance * std::tan(0.5 * camera.view_angle_deg * pi / 180.0);
   if (!(half_height > 0.0) || !std::isfinite(half_height))
   {
     axes_.setIdentity();
@@ -151,6 +152,50 @@ Eigen::Vector3d malleability_color(double m)
     c[k] = stops[i][k + 1] + f * (stops[i + 1][k + 1] - stops[i][k + 1]);
   }
   return c;
+}
+
+double StylusPalette::update(bool button, const Eigen::Vector3d& stylus, double workspace_radius)
+{
+  constexpr double none = std::numeric_limits<double>::quiet_NaN();
+  if (!button)
+  {
+    shown_ = false;
+    touched_ = -1;
+    return none;
+  }
+  if (!shown_)
+  {
+    if (!stylus.allFinite())
+    {
+      return none;
+    }
+    shown_ = true;
+    row_centre_ = stylus + Eigen::Vector3d(0.0, lift, 0.0);
+    const double room = workspace_radius - 0.5 * spacing * (count - 1);
+    if (room > 0.0)
+    {
+      row_centre_.x() = std::clamp(row_centre_.x(), -room, room);
+    }
+  }
+  int nearest = -1;
+  double best = radius * radius;
+  for (int i = 0; i < count && stylus.allFinite(); ++i)
+  {
+    const double d2 = (stylus - this->centre(i)).squaredNorm();
+    if (d2 <= best)
+    {
+      best = d2;
+      nearest = i;
+    }
+  }
+  const bool fresh = nearest >= 0 && nearest != touched_;
+  touched_ = nearest;
+  return fresh ? value(nearest) : none;
+}
+
+Eigen::Vector3d StylusPalette::centre(int i) const
+{
+  return row_centre_ + Eigen::Vector3d(spacing * (i - 0.5 * (count - 1)), 0.0, 0.0);
 }
 
 } // namespace geoshaping::interactor

@@ -123,6 +123,34 @@ private:
   Eigen::Vector3d last_dab_ = Eigen::Vector3d::Zero();
 };
 
+// The 3D palette near the stylus: 11 swatches of malleability 0, 0.1 ... 1 that appear
+// while the stylus's second button is held, in a row along the device's x axis (the
+// screen's right) 1 cm apart, 2 cm above (device y, the screen's up) where the button
+// was pressed; the row is shifted along x to stay inside the workspace. Touching a
+// swatch (the stylus within 4 mm of its centre) picks its value. All in the device frame
+// (metres), so the palette keeps its size on screen whatever the zoom.
+class StylusPalette
+{
+public:
+  static constexpr int count = 11;
+  static constexpr double spacing = 0.01;
+  static constexpr double lift = 0.02;
+  static constexpr double radius = 0.004;
+
+  // Feeds the second button and the stylus; returns the value of a swatch touched this
+  // frame and not the frame before, or NaN. Non-finite positions touch nothing.
+  double update(bool button, const Eigen::Vector3d& stylus, double workspace_radius);
+  bool shown() const { return shown_; }
+  Eigen::Vector3d centre(int i) const;
+  int touched() const { return touched_; } // -1 when none
+  static double value(int i) { return i / double(count - 1); }
+
+private:
+  bool shown_ = false;
+  int touched_ = -1;
+  Eigen::Vector3d row_centre_ = Eigen::Vector3d::Zero();
+};
+
 // The heat map of the malleability palette (the "Malleability (black-body)" preset's
 // control points): black 0, red 0.4, orange 0.6, yellow 0.8, white 1. RGB in [0, 1].
 Eigen::Vector3d malleability_color(double m);

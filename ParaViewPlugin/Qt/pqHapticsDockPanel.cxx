@@ -57,6 +57,8 @@ pqHapticsDockPanel::pqHapticsDockPanel(QWidget* parent)
   this->build();
   QObject::connect(
     this->Interactor, &pqHapticsInteractor::frameDone, this, &pqHapticsDockPanel::onFrame);
+  QObject::connect(this->Interactor, &pqHapticsInteractor::paletteValuePicked, this,
+    &pqHapticsDockPanel::setPaintValue);
   QObject::connect(this->Interactor, &pqHapticsInteractor::editsChanged, this,
     &pqHapticsDockPanel::onEditsChanged);
   pqHapticsTestHook::installIfRequested(this);

@@ -19,6 +19,7 @@
 #include <vtkWeakPointer.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace gi = geoshaping::interactor;
 namespace gh = geoshaping::haptics;
@@ -43,6 +44,10 @@ struct pqHapticsInteractor::Hand
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkPolyDataMapper> mapper;
   vtkNew<vtkActor> cursor;
+  gi::StylusPalette palette; // device hands: shown while the second button is held
+  vtkNew<vtkSphereSource> swatchSphere;
+  vtkNew<vtkPolyDataMapper> swatchMapper;
+  std::array<vtkNew<vtkActor>, gi::StylusPalette::count> swatches;
   vtkWeakPointer<vtkRenderer> renderer;
 
   Hand()
@@ -52,6 +57,17 @@ struct pqHapticsInteractor::Hand
     this->mapper->SetInputConnection(this->sphere->GetOutputPort());
     this->cursor->SetMapper(this->mapper);
     this->cursor->PickableOff();
+    this->swatchSphere->SetThetaResolution(16);
+    this->swatchSphere->SetPhiResolution(12);
+    this->swatchMapper->SetInputConnection(this->swatchSphere->GetOutputPort());
+    for (int i = 0; i < gi::StylusPalette::count; ++i)
+    {
+      const Eigen::Vector3d c = gi::malleability_color(gi::StylusPalette::value(i));
+      this->swatches[i]->SetMapper(this->swatchMapper);
+      this->swatches[i]->GetProperty()->SetColor(c.x(), c.y(), c.z());
+      this->swatches[i]->PickableOff();
+      this->swatches[i]->VisibilityOff();
+    }
   }
   ~Hand()
   {
@@ -60,24 +76,42 @@ struct pqHapticsInteractor::Hand
       this->servo->stop();
     }
     this->recorder.close();
-    if (this->renderer)
-    {
-      this->renderer->RemoveActor(this->cursor);
-    }
+    this->setRenderer(nullptr);
   }
-  void showCursor(vtkRenderer* r)
+  void setRenderer(vtkRenderer* r)
   {
     if (r != this->renderer)
     {
       if (this->renderer)
       {
         this->renderer->RemoveActor(this->cursor);
+        for (auto& swatch : this->swatches)
+        {
+          this->renderer->RemoveActor(swatch);
+        }
       }
       this->renderer = r;
       if (r)
       {
         r->AddActor(this->cursor);
+        for (auto& swatch : this->swatches)
+        {
+          r->AddActor(swatch);
+        }
       }
+    }
+  }
+  // The 3D palette's swatches where the palette says, in the scene.
+  void showPalette()
+  {
+    const double size = gi::StylusPalette::radius * this->mapping.scale();
+    this->swatchSphere->SetRadius(size);
+    for (int i = 0; i < gi::StylusPalette::count; ++i)
+    {
+      const Eigen::Vector3d c = this->mapping.to_scene(this->palette.centre(i));
+      this->swatches[i]->SetPosition(c.x(), c.y(), c.z());
+      this->swatches[i]->SetScale(i == this->palette.touched() ? 1.5 : 1.0);
+      this->swatches[i]->SetVisibility(this->palette.shown());
     }
   }
 };
@@ -390,7 +424,19 @@ void pqHapticsInteractor::onFrame()
     hand.sphere->SetRadius(painting ? this->Brush.radius : 0.004 * mapping.scale());
     hand.cursor->GetProperty()->SetColor(color.x(), color.y(), color.z());
     hand.cursor->SetVisibility(hand.kind != Mouse || world.button);
-    hand.showCursor(viewProxy ? viewProxy->GetRenderer() : nullptr);
+    hand.setRenderer(viewProxy ? viewProxy->GetRenderer() : nullptr);
+    if (hand.device)
+    {
+      const gh::DeviceSample& sample = hand.latest.sample;
+      const double picked = hand.palette.update(hand.latest.device_ok && (sample.buttons & 2u),
+        sample.position, hand.device->limits().workspace_radius);
+      if (!std::isnan(picked))
+      {
+        this->Brush.value = picked;
+        Q_EMIT this->paletteValuePicked(picked);
+      }
+      hand.showPalette();
+    }
   }
   // After every hand has acted, so that a grasp made this frame counts as dragging.
   const bool anyDragging = this->anyHandDragging();

@@ -95,6 +95,9 @@ public:
 Q_SIGNALS:
   void frameDone();
   void editsChanged();
+  // A device hand touched a swatch of the 3D palette (second button held): the brush
+  // now paints `value`.
+  void paletteValuePicked(double value);
 
 private Q_SLOTS:
   void onFrame();

@@ -216,6 +216,7 @@ void pqHapticsTestHook::writeResults()
   out << "max_contact_triangles = " << f.maxContactTriangles << "\n";
   out << "contact_ticks = " << f.contactTicks << "\n";
   out << "recorded_samples = " << f.recordedSamples[0] << "\n";
+  out << "brush_value = " << interactor->brush().value << "\n";
   geoshaping::haptics::ForceResult force;
   if (interactor->forceFromLastScene(0, force))
   {

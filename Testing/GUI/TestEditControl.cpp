@@ -20,7 +20,7 @@ class FakeFilter : public gi::EditProxy
 public:
   // Server side.
   std::vector<std::string> records; // EditRecords
-  std::vector<std::string> all; // History (applied + redo tail)
+  std::vector<std::string> all;     // History (applied + redo tail)
   std::string last;
   bool deformed = false; // the last update had a grasp
   int next = 0;
@@ -81,8 +81,8 @@ public:
     ++pushes;
     // RemoveAllEdits + AddEdit...; synchronize keeps a redo tail the list is a prefix of.
     records = client;
-    const bool prefix = client.size() <= all.size() &&
-      std::equal(client.begin(), client.end(), all.begin());
+    const bool prefix =
+      client.size() <= all.size() && std::equal(client.begin(), client.end(), all.begin());
     if (!prefix)
       all = client;
   }
@@ -205,8 +205,8 @@ TEST(EditControl, ServerOutOfStepIsReportedAndTheClientListWins)
 
 TEST(PointDabs, FalloffMatchesTheCore)
 {
-  const geoshaping::Falloff kinds[] = { geoshaping::Falloff::constant,
-    geoshaping::Falloff::linear, geoshaping::Falloff::smooth, geoshaping::Falloff::gaussian };
+  const geoshaping::Falloff kinds[] = { geoshaping::Falloff::constant, geoshaping::Falloff::linear,
+    geoshaping::Falloff::smooth, geoshaping::Falloff::gaussian };
   for (int k = 0; k < 4; ++k)
   {
     for (double r = -0.5; r <= 1.5; r += 0.01)
@@ -232,8 +232,8 @@ TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)
   EXPECT_EQ(clamped, (std::vector<double>{ 1.0, 1.0, 1.0 }));
 
   std::vector<double> none;
-  gi::append_point_dabs({ 1 }, { 0.0 }, 0.0, 0.5, 0.5, 0, none); // zero radius
+  gi::append_point_dabs({ 1 }, { 0.0 }, 0.0, 0.5, 0.5, 0, none);    // zero radius
   gi::append_point_dabs({ 1, 2 }, { 0.0 }, 1.0, 0.5, 0.5, 0, none); // size mismatch
-  gi::append_point_dabs({ -1 }, { 0.0 }, 1.0, 0.5, 0.5, 0, none); // bad id
+  gi::append_point_dabs({ -1 }, { 0.0 }, 1.0, 0.5, 0.5, 0, none);   // bad id
   EXPECT_TRUE(none.empty());
 }

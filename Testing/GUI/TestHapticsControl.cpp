@@ -190,3 +190,44 @@ TEST(Palette, ColoursFollowTheBlackBodyPreset)
   expectNear(malleability_color(7.0), Vector3d(1, 1, 1));
   expectNear(malleability_color(std::nan("")), Vector3d(0, 0, 0));
 }
+
+TEST(StylusPalette, AppearsAboveThePressAndPicksTheSwatchTouched)
+{
+  StylusPalette palette;
+  const double r = 0.08; // workspace radius
+  EXPECT_TRUE(std::isnan(palette.update(false, Vector3d(0.01, 0, 0), r)));
+  EXPECT_FALSE(palette.shown());
+  // Second button pressed at (0.01, -0.01, 0.02): the row is 2 cm above, 1 cm apart,
+  // centred on the press, swatch 5 (0.5) above the press.
+  EXPECT_TRUE(std::isnan(palette.update(true, Vector3d(0.01, -0.01, 0.02), r)));
+  EXPECT_TRUE(palette.shown());
+  EXPECT_EQ(palette.touched(), -1); // the press itself is 2 cm below the row
+  expectNear(palette.centre(5), Vector3d(0.01, 0.01, 0.02), 1e-15);
+  expectNear(palette.centre(0), Vector3d(-0.04, 0.01, 0.02), 1e-15);
+  expectNear(palette.centre(10), Vector3d(0.06, 0.01, 0.02), 1e-15);
+  // Touch swatch 2 (0.2) 3 mm off its centre: picked once, not again while still on it.
+  EXPECT_DOUBLE_EQ(palette.update(true, Vector3d(-0.02, 0.013, 0.02), r), 0.2);
+  EXPECT_EQ(palette.touched(), 2);
+  EXPECT_TRUE(std::isnan(palette.update(true, Vector3d(-0.02, 0.012, 0.02), r)));
+  // Between swatches 2 and 3 (5 mm from each): nothing.
+  EXPECT_TRUE(std::isnan(palette.update(true, Vector3d(-0.015, 0.01, 0.02), r)));
+  EXPECT_EQ(palette.touched(), -1);
+  EXPECT_DOUBLE_EQ(palette.update(true, Vector3d(0.05, 0.01, 0.02), r), 0.9);
+  EXPECT_TRUE(std::isnan(palette.update(true, Vector3d(std::nan(""), 0, 0), r)));
+  // Released: hidden; the next press lays the row out again.
+  EXPECT_TRUE(std::isnan(palette.update(false, Vector3d(0.05, 0.01, 0.02), r)));
+  EXPECT_FALSE(palette.shown());
+  EXPECT_EQ(palette.touched(), -1);
+}
+
+TEST(StylusPalette, StaysInsideTheWorkspace)
+{
+  StylusPalette palette;
+  palette.update(true, Vector3d(0.075, 0, 0), 0.08); // near the right edge
+  EXPECT_NEAR(palette.centre(10).x(), 0.08, 1e-15);
+  EXPECT_NEAR(palette.centre(5).x(), 0.03, 1e-15);
+  for (int i = 0; i < StylusPalette::count; ++i)
+  {
+    EXPECT_DOUBLE_EQ(StylusPalette::value(i), i / 10.0);
+  }
+}

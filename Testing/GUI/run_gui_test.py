@@ -57,20 +57,38 @@ DEPTH = 0.002  # m, how far the stylus ends below the surface (device frame)
 
 
 def write_touch_trace(path):
-    """No button: the stylus rests 1 cm above the plateau (along the surface normal in
-    the device frame), goes 2 mm below it in 1 s and rests there. Returns the device-frame
-    normal."""
+    """The stylus starts 1 cm above the plateau (along the surface normal in the device
+    frame); holds the second button there and moves onto swatch 3 (0.3) of the 3D palette
+    (the layout of HapticsControl.h's StylusPalette: 2 cm up, 1 cm apart, the row kept
+    inside the 8 cm workspace), lets go, comes back, goes 2 mm below the surface and
+    rests there, the palette shown again (second button held) for the screenshot.
+    Returns the device-frame normal."""
     x, y, z, scale = device_axes()
     rel = [(p - f) / scale for p, f in zip(PLATEAU_POINT, CAMERA["focal_point"])]
     point = [sum(a[i] * rel[i] for i in range(3)) for a in (x, y, z)]
     normal = [a[2] for a in (x, y, z)]  # A^T e_z
+    above = [c + 0.01 * n for c, n in zip(point, normal)]
+    room = WORKSPACE_RADIUS - 0.05
+    swatch = [min(max(above[0], -room), room) + 0.01 * (3 - 5), above[1] + 0.02, above[2]]
+    below = [c - DEPTH * n for c, n in zip(point, normal)]
+
+    def lerp(a, b, f):
+        return [u + (v - u) * min(1.0, max(0.0, f)) for u, v in zip(a, b)]
+
     with open(path, "w") as f:
-        f.write("# t x y z qw qx qy qz buttons: touch the plateau of the fault step\n")
-        for k in range(int(4.0 * 60) + 1):
+        f.write("# t x y z qw qx qy qz buttons: palette pick, then touch the plateau\n")
+        # 1 s on the swatch: a frame sees it even at 2 frames per second.
+        for k in range(int(5.5 * 60) + 1):
             t = k / 60.0
-            h = 0.01 if t < 1.0 else (0.01 - (0.01 + DEPTH) * min(1.0, t - 1.0))
-            p = [c + h * n for c, n in zip(point, normal)]
-            f.write("%.6f %.9f %.9f %.9f 1 0 0 0 0\n" % (t, p[0], p[1], p[2]))
+            if t < 0.5:
+                p, b = above, 0
+            elif t < 2.0:
+                p, b = lerp(above, swatch, (t - 0.5) / 0.5), 2
+            elif t < 2.5:
+                p, b = lerp(swatch, above, (t - 2.0) / 0.5), 0
+            else:
+                p, b = lerp(above, below, t - 2.5), (2 if t >= 3.5 else 0)
+            f.write("%.6f %.9f %.9f %.9f 1 0 0 0 %d\n" % (t, p[0], p[1], p[2], b))
     return normal
 
 
@@ -85,6 +103,7 @@ def check_touch(results, normal):
     assert all(abs(a - b) < 1e-3 for a, b in zip(force, expected)), (force, expected)
     assert 0 < int(results["max_contact_triangles"]) <= 256, results
     assert int(results["moved_points"]) == 0, "touching must not deform"
+    assert abs(float(results["brush_value"]) - 0.3) < 1e-12, "the 3D palette pick: " + results["brush_value"]
 
 
 def read_results(path):
