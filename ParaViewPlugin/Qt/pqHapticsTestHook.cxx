@@ -12,6 +12,8 @@
 #include <vtkAlgorithm.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
 #include <vtkRenderWindowInteractor.h>
@@ -43,6 +45,7 @@ pqHapticsTestHook::pqHapticsTestHook(
   : QObject(dock)
   , Dock(dock)
   , Trace(trace)
+  , Trace2(qEnvironmentVariable("GEOSHAPING_HAPTICS_REPLAY2"))
   , Output(output)
 {
   auto* timer = new QTimer(this);
@@ -76,8 +79,16 @@ void pqHapticsTestHook::poll()
     const bool mouse = this->Trace == "mouse";
     this->Dock->setHand(0, mouse ? pqHapticsInteractor::Mouse : pqHapticsInteractor::ReplayFile,
       mouse ? QString() : this->Trace, geoshaping::interactor::Tool::deform);
-    this->Dock->setHand(
-      1, pqHapticsInteractor::NoDevice, QString(), geoshaping::interactor::Tool::hold_and_turn);
+    if (this->Trace2.isEmpty())
+    {
+      this->Dock->setHand(
+        1, pqHapticsInteractor::NoDevice, QString(), geoshaping::interactor::Tool::hold_and_turn);
+    }
+    else
+    {
+      this->Dock->setHand(
+        1, pqHapticsInteractor::ReplayFile, this->Trace2, geoshaping::interactor::Tool::paint);
+    }
     if (!this->Output.isEmpty())
     {
       this->Dock->setRecordPath(this->Output + ".recorded.trace");
@@ -190,6 +201,41 @@ void pqHapticsTestHook::checkEdits(QTextStream& out, vtkPointSet* input, vtkPoin
   out << "redo_equals_released = " << int(pointsOf(shown()) == released) << "\n";
 }
 
+// What the paint filter did: its PointDabs (dabs on the shown surface), and the vertices
+// whose malleability it changed (its output against its input's array).
+void pqHapticsTestHook::writePaint(QTextStream& out)
+{
+  pqPipelineSource* paint = pqHapticsFindSource("MalleabilityPaint");
+  vtkSMProxy* proxy = paint ? paint->getProxy() : nullptr;
+  auto* filter = proxy ? vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject()) : nullptr;
+  if (!filter)
+  {
+    return;
+  }
+  out << "point_dab_values = " << vtkSMPropertyHelper(proxy, "PointDabs").GetNumberOfElements()
+      << "\n";
+  out << "dab_values = " << vtkSMPropertyHelper(proxy, "Dabs").GetNumberOfElements() << "\n";
+  auto* input = vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0));
+  auto* output = vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0));
+  vtkDataArray* before = input ? input->GetPointData()->GetArray("Malleability") : nullptr;
+  vtkDataArray* after = output ? output->GetPointData()->GetArray("Malleability") : nullptr;
+  if (before && after && before->GetNumberOfTuples() == after->GetNumberOfTuples())
+  {
+    vtkIdType changed = 0;
+    double lowest = 1.0;
+    for (vtkIdType i = 0; i < after->GetNumberOfTuples(); ++i)
+    {
+      if (after->GetTuple1(i) != before->GetTuple1(i))
+      {
+        ++changed;
+        lowest = std::min(lowest, after->GetTuple1(i) - before->GetTuple1(i));
+      }
+    }
+    out << "painted_vertices = " << changed << "\n";
+    out << "smallest_paint_increase = " << lowest << "\n";
+  }
+}
+
 void pqHapticsTestHook::writeResults()
 {
   QFile file(this->Output + ".txt");
@@ -217,6 +263,8 @@ void pqHapticsTestHook::writeResults()
   out << "contact_ticks = " << f.contactTicks << "\n";
   out << "recorded_samples = " << f.recordedSamples[0] << "\n";
   out << "brush_value = " << interactor->brush().value << "\n";
+  out << "brush_radius = " << interactor->brush().radius << "\n";
+  this->writePaint(out);
   geoshaping::haptics::ForceResult force;
   if (interactor->forceFromLastScene(0, force))
   {

@@ -4,6 +4,8 @@
 //                                           started once a ChainMailDeformation exists;
 //                                           "mouse": hand 1 is the mouse, and the hook
 //                                           drags it up on the surface (Deform);
+//   GEOSHAPING_HAPTICS_REPLAY2=<trace>      hand 2 replays this trace with the Paint tool
+//                                           (two hands at once);
 //   GEOSHAPING_HAPTICS_TEST_OUTPUT=<prefix> when the replay is over, write <prefix>.png
 //                                           (the main window), <prefix>-view.png (the
 //                                           render view) and <prefix>.txt (key = value
@@ -28,10 +30,12 @@ private:
   pqHapticsTestHook(pqHapticsDockPanel* dock, const QString& trace, const QString& output);
   void dragMouse();
   void writeResults();
+  void writePaint(QTextStream& out);
   void checkEdits(QTextStream& out, vtkPointSet* input, vtkPointSet* output);
 
   pqHapticsDockPanel* Dock;
   QString Trace;
+  QString Trace2;
   QString Output;
   bool Started = false;
   bool TimedOut = false;

@@ -92,6 +92,39 @@ def write_touch_trace(path):
     return normal
 
 
+# The bimanual test: hand 2 paints (value 1) where hand 1's drag has lifted the surface,
+# from 3.0 to 3.5 s while hand 1 holds still at the end of its drag (grasp_drag.trace).
+PAINT_AT = [-0.03, 0.024, 0.022]  # device frame: grasp_drag's press + its drag
+PLATEAU_Z = 20.0  # the rest surface under the grasp
+
+
+def write_paint_trace(path):
+    with open(path, "w") as f:
+        f.write("# t x y z qw qx qy qz buttons: hand 2 paints on the lifted surface\n")
+        for k in range(int(4.5 * 60) + 1):
+            t = k / 60.0
+            f.write("%.6f %.9f %.9f %.9f 1 0 0 0 %d\n" % (t, PAINT_AT[0], PAINT_AT[1], PAINT_AT[2],
+                                                          1 if 3.0 <= t < 3.5 else 0))
+
+
+def check_bimanual(results):
+    """Hand 2's dabs landed on the surface the user saw (deformed by hand 1's drag), not
+    on the rest surface: the brush is farther than its radius from the rest plateau, and
+    yet vertices were painted, through PointDabs only."""
+    x, y, z, scale = device_axes()
+    f = CAMERA["focal_point"]
+    height = f[2] + scale * sum(PAINT_AT[i] * (x, y, z)[i][2] for i in range(3)) - PLATEAU_Z
+    radius = float(results["brush_radius"])
+    print("hand 2 paints %.2f above the rest plateau (brush radius %.1f): %s painted, "
+          "%s point-dab values, %s dab values" % (height, radius, results["painted_vertices"],
+                                                  results["point_dab_values"],
+                                                  results["dab_values"]))
+    assert height > radius, (height, radius)
+    assert int(results["painted_vertices"]) > 0, results
+    assert float(results["smallest_paint_increase"]) > 0, results
+    assert int(results["point_dab_values"]) > 0 and int(results["dab_values"]) == 0, results
+
+
 def check_touch(results, normal):
     """At rest 2 mm into the plateau, the force asked of the servo loop is the penalty
     contact k_c d = 800 N/m * 2 mm = 1.6 N along the surface's normal (device frame)."""
@@ -185,6 +218,9 @@ def main():
     if mode == "touch":
         env["GEOSHAPING_HAPTICS_REPLAY"] = out + ".trace"
         normal = write_touch_trace(out + ".trace")
+    if mode == "bimanual":
+        env["GEOSHAPING_HAPTICS_REPLAY2"] = out + ".hand2.trace"
+        write_paint_trace(out + ".hand2.trace")
     command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24", os.environ["PARAVIEW"],
                "--dr", "--script=" + os.environ["GEOSHAPING_GUI_SETUP"]]
     run = subprocess.run(command, env=env, timeout=90, stdout=subprocess.PIPE,
@@ -226,6 +262,8 @@ def main():
     assert size[0] >= 200 and size[1] >= 200 and fraction > 0.05, (size, fraction)
     window_size = red_fraction(out + ".png")[1]
     assert window_size[0] > size[0], "the window screenshot should show the dock beside the view"
+    if mode == "bimanual":
+        check_bimanual(results)
     print("GUI test passed; screenshots:", out + ".png", out + "-view.png")
 
 
