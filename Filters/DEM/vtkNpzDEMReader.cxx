@@ -1,0 +1,346 @@
+#include "vtkNpzDEMReader.h"
+
+#include "vtkGeoShapingAdapter.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+
+#include "geoshaping/dem_surface.h"
+
+#include "vtk_zlib.h" // zlib through VTK's module (the system's on Debian)
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkNpzDEMReader);
+
+namespace
+{
+// The entries of a .npz (a zip archive of .npy files), read through its central
+// directory; stored and deflated entries. Throws std::runtime_error with what is wrong.
+class NpzArchive
+{
+public:
+  explicit NpzArchive(const std::string& path)
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+      throw std::runtime_error("cannot open " + path);
+    this->Bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    const std::size_t n = this->Bytes.size();
+    std::size_t eocd = std::string::npos;
+    for (std::size_t i = n >= 22 ? n - 22 : 0; n >= 22; --i)
+    {
+      if (this->U32(i) == 0x06054b50u)
+      {
+        eocd = i;
+        break;
+      }
+      if (i == 0 || n - i > 22 + 65535)
+        break;
+    }
+    if (eocd == std::string::npos)
+      throw std::runtime_error("not a zip (.npz) archive: no end of central directory");
+    const std::uint16_t entries = this->U16(eocd + 10);
+    std::size_t at = this->U32(eocd + 16);
+    for (std::uint16_t e = 0; e < entries; ++e)
+    {
+      if (this->U32(at) != 0x02014b50u)
+        throw std::runtime_error("damaged zip central directory");
+      Entry entry;
+      entry.Method = this->U16(at + 10);
+      entry.Compressed = this->U32(at + 20);
+      entry.Size = this->U32(at + 24);
+      const std::size_t name = this->U16(at + 28), extra = this->U16(at + 30),
+                        comment = this->U16(at + 32);
+      entry.Local = this->U32(at + 42);
+      this->Need(at + 46, name);
+      this->Entries[std::string(&this->Bytes[at + 46], name)] = entry;
+      at += 46 + name + extra + comment;
+    }
+  }
+
+  // The uncompressed bytes of entry `name`.
+  std::vector<char> Read(const std::string& name) const
+  {
+    auto it = this->Entries.find(name);
+    if (it == this->Entries.end())
+      throw std::runtime_error("no entry " + name);
+    const Entry& e = it->second;
+    if (e.Compressed == 0xffffffffu || e.Size == 0xffffffffu)
+      throw std::runtime_error(name + ": ZIP64 entries are not supported");
+    if (this->U32(e.Local) != 0x04034b50u)
+      throw std::runtime_error(name + ": damaged local header");
+    const std::size_t data = e.Local + 30 + this->U16(e.Local + 26) + this->U16(e.Local + 28);
+    this->Need(data, e.Compressed);
+    std::vector<char> out(e.Size);
+    if (e.Method == 0)
+    {
+      if (e.Compressed != e.Size)
+        throw std::runtime_error(name + ": stored entry with two sizes");
+      std::memcpy(out.data(), &this->Bytes[data], e.Size);
+      return out;
+    }
+    if (e.Method != 8)
+      throw std::runtime_error(name + ": compression method " + std::to_string(e.Method) +
+                               " is not supported (stored or deflated only)");
+    z_stream z{};
+    if (inflateInit2(&z, -MAX_WBITS) != Z_OK)
+      throw std::runtime_error(name + ": zlib inflateInit2 failed");
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(&this->Bytes[data]));
+    z.avail_in = e.Compressed;
+    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.avail_out = e.Size;
+    const int status = inflate(&z, Z_FINISH);
+    const uLong produced = z.total_out;
+    inflateEnd(&z);
+    if (status != Z_STREAM_END || produced != e.Size)
+      throw std::runtime_error(name + ": corrupt deflate data");
+    return out;
+  }
+
+private:
+  struct Entry
+  {
+    std::uint16_t Method = 0;
+    std::uint32_t Compressed = 0, Size = 0, Local = 0;
+  };
+  void Need(std::size_t at, std::size_t count) const
+  {
+    if (at > this->Bytes.size() || count > this->Bytes.size() - at)
+      throw std::runtime_error("truncated zip archive");
+  }
+  std::uint16_t U16(std::size_t at) const
+  {
+    this->Need(at, 2);
+    const auto* b = reinterpret_cast<const unsigned char*>(&this->Bytes[at]);
+    return std::uint16_t(b[0] | (b[1] << 8));
+  }
+  std::uint32_t U32(std::size_t at) const
+  {
+    this->Need(at, 4);
+    const auto* b = reinterpret_cast<const unsigned char*>(&this->Bytes[at]);
+    return std::uint32_t(b[0]) | (std::uint32_t(b[1]) << 8) | (std::uint32_t(b[2]) << 16) |
+           (std::uint32_t(b[3]) << 24);
+  }
+  std::vector<char> Bytes;
+  std::map<std::string, Entry> Entries;
+};
+
+// A .npy array as doubles (little-endian or byte-sized integers and floats, C order).
+struct NpyArray
+{
+  std::vector<std::size_t> Shape;
+  std::vector<double> Values;
+};
+
+std::string HeaderValue(const std::string& header, const std::string& key)
+{
+  const std::size_t k = header.find("'" + key + "'");
+  if (k == std::string::npos)
+    throw std::runtime_error("npy header without '" + key + "'");
+  std::size_t v = header.find(':', k);
+  if (v == std::string::npos)
+    throw std::runtime_error("npy header without a value for '" + key + "'");
+  ++v;
+  while (v < header.size() && header[v] == ' ')
+    ++v;
+  const char open = v < header.size() ? header[v] : '\0';
+  const char close = open == '(' ? ')' : open == '\'' ? '\'' : ',';
+  const std::size_t end = header.find(close, v + 1);
+  if (end == std::string::npos)
+    throw std::runtime_error("npy header: unterminated value for '" + key + "'");
+  return open == '(' || open == '\'' ? header.substr(v + 1, end - v - 1)
+                                     : header.substr(v, end - v);
+}
+
+template<class T>
+void Convert(const char* data, std::size_t count, std::vector<double>& out)
+{
+  out.resize(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    T value;
+    std::memcpy(&value, data + i * sizeof(T), sizeof(T));
+    out[i] = double(value);
+  }
+}
+
+NpyArray ParseNpy(const std::vector<char>& bytes, const std::string& name)
+{
+  auto fail = [&name](const std::string& what) { return std::runtime_error(name + ": " + what); };
+  if (bytes.size() < 10 || std::memcmp(bytes.data(), "\x93NUMPY", 6) != 0)
+    throw fail("not a .npy array");
+  const int major = static_cast<unsigned char>(bytes[6]);
+  std::size_t length = 0, start = 0;
+  if (major == 1)
+  {
+    length = static_cast<unsigned char>(bytes[8]) | (static_cast<unsigned char>(bytes[9]) << 8);
+    start = 10;
+  }
+  else if ((major == 2 || major == 3) && bytes.size() >= 12)
+  {
+    for (int i = 3; i >= 0; --i)
+      length = (length << 8) | static_cast<unsigned char>(bytes[8 + i]);
+    start = 12;
+  }
+  else
+    throw fail("npy format version " + std::to_string(major) + " is not supported");
+  if (length > bytes.size() - start)
+    throw fail("truncated npy header");
+  const std::string header(&bytes[start], length);
+  const std::string descr = HeaderValue(header, "descr");
+  if (HeaderValue(header, "fortran_order").find("False") == std::string::npos)
+    throw fail("Fortran-ordered arrays are not supported");
+  NpyArray array;
+  std::stringstream shape(HeaderValue(header, "shape"));
+  std::string item;
+  std::size_t count = 1;
+  while (std::getline(shape, item, ','))
+  {
+    if (item.find_first_not_of(' ') == std::string::npos)
+      continue;
+    array.Shape.push_back(std::stoul(item));
+    count *= array.Shape.back();
+  }
+  if (descr.size() < 3 || (descr[0] != '<' && descr[0] != '|' && descr[0] != '='))
+    throw fail("dtype '" + descr + "' is not little-endian");
+  const char kind = descr[1];
+  const int size = std::atoi(descr.c_str() + 2);
+  const std::size_t data = start + length;
+  if (size <= 0 || count > (bytes.size() - data) / std::size_t(size))
+    throw fail("truncated array data");
+  const char* p = &bytes[data];
+  if (kind == 'f' && size == 4)
+    Convert<float>(p, count, array.Values);
+  else if (kind == 'f' && size == 8)
+    Convert<double>(p, count, array.Values);
+  else if (kind == 'i' && size == 1)
+    Convert<std::int8_t>(p, count, array.Values);
+  else if (kind == 'i' && size == 2)
+    Convert<std::int16_t>(p, count, array.Values);
+  else if (kind == 'i' && size == 4)
+    Convert<std::int32_t>(p, count, array.Values);
+  else if (kind == 'i' && size == 8)
+    Convert<std::int64_t>(p, count, array.Values);
+  else if (kind == 'u' && size == 1)
+    Convert<std::uint8_t>(p, count, array.Values);
+  else if (kind == 'u' && size == 2)
+    Convert<std::uint16_t>(p, count, array.Values);
+  else if (kind == 'u' && size == 4)
+    Convert<std::uint32_t>(p, count, array.Values);
+  else
+    throw fail("dtype '" + descr + "' is not supported (integers or floats)");
+  return array;
+}
+
+double Scalar(const NpzArchive& npz, const std::string& key)
+{
+  const NpyArray a = ParseNpy(npz.Read(key + ".npy"), key + ".npy");
+  if (a.Values.size() != 1)
+    throw std::runtime_error(key + ".npy: expected one value");
+  return a.Values[0];
+}
+} // namespace
+
+vtkNpzDEMReader::vtkNpzDEMReader()
+{
+  this->SetNumberOfInputPorts(0);
+  const geoshaping::LocalProjection defaults;
+  this->CentreEasting = defaults.centre_easting;
+  this->CentreNorthing = defaults.centre_northing;
+}
+
+vtkNpzDEMReader::~vtkNpzDEMReader()
+{
+  this->SetFileName(nullptr);
+}
+
+int vtkNpzDEMReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No FileName: give the .npz DEM to read.");
+    return 0;
+  }
+  geoshaping::GeographicGrid grid;
+  try
+  {
+    const NpzArchive npz(this->FileName);
+    NpyArray elevation = ParseNpy(npz.Read("elevation.npy"), "elevation.npy");
+    if (elevation.Shape.size() != 2)
+      throw std::runtime_error("elevation.npy: expected a 2D array");
+    grid.rows = geoshaping::index_t(elevation.Shape[0]);
+    grid.cols = geoshaping::index_t(elevation.Shape[1]);
+    grid.elevation = std::move(elevation.Values);
+    // matplotlib's naming: xmin/ymin are the first column/row, xmax/ymax the last ones
+    // (its Jacksboro DEM has ymin > ymax: the rows run north to south).
+    grid.lon_first = Scalar(npz, "xmin");
+    grid.lon_last = Scalar(npz, "xmax");
+    grid.lat_first = Scalar(npz, "ymin");
+    grid.lat_last = Scalar(npz, "ymax");
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< this->FileName << ": " << e.what());
+    return 0;
+  }
+  geoshaping::LocalProjection projection;
+  projection.centre_easting = this->CentreEasting;
+  projection.centre_northing = this->CentreNorthing;
+  if (const char* why = geoshaping::validate(grid, this->Stride, projection); *why)
+  {
+    vtkErrorMacro(<< this->FileName << ": " << why);
+    return 0;
+  }
+  const geoshaping::SampleMesh mesh = geoshaping::dem_surface(grid, this->Stride, projection);
+  output->SetPoints(vtkGeoShapingAdapter::MakePoints(mesh.xyz));
+  output->SetPolys(vtkGeoShapingAdapter::MakeCells(mesh.connectivity, 3));
+  vtkNew<vtkDoubleArray> elevation;
+  elevation->SetName("Elevation");
+  elevation->SetNumberOfTuples(mesh.num_points());
+  for (geoshaping::index_t i = 0; i < mesh.num_points(); ++i)
+    elevation->SetValue(i, mesh.xyz[3 * std::size_t(i) + 2]);
+  output->GetPointData()->AddArray(elevation);
+  vtkNew<vtkDoubleArray> bounds;
+  bounds->SetName("LonLatBounds");
+  for (double v : { grid.lon_first, grid.lon_last, grid.lat_first, grid.lat_last })
+    bounds->InsertNextValue(v);
+  output->GetFieldData()->AddArray(bounds);
+  vtkNew<vtkStringArray> about;
+  about->SetName("Projection");
+  std::ostringstream text;
+  text.precision(17);
+  text << "local equirectangular about the grid centre, R = " << projection.earth_radius
+       << " m, centre at " << projection.centre_easting << " E " << projection.centre_northing
+       << " N; z = elevation (m); stride " << this->Stride;
+  about->InsertNextValue(text.str());
+  output->GetFieldData()->AddArray(about);
+  return 1;
+}
+
+void vtkNpzDEMReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Stride: " << this->Stride << "\n";
+  os << indent << "CentreEasting: " << this->CentreEasting << "\n";
+  os << indent << "CentreNorthing: " << this->CentreNorthing << "\n";
+}

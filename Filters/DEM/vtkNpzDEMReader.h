@@ -1,0 +1,61 @@
+/**
+ * @class   vtkNpzDEMReader
+ * @brief   Reads a geographic DEM stored as a NumPy .npz archive into a surface in metres.
+ *
+ * The archive holds `elevation` (a 2D array, rows = latitudes from `ymin` to `ymax`,
+ * columns = longitudes from `xmin` to `xmax` — matplotlib's names for the first and last
+ * row and column, in either order — any little-endian integer or float type, C order)
+ * and the scalars `xmin xmax ymin ymax` (degrees), the layout of matplotlib's
+ * sample DEM `jacksboro_fault_dem.npz` (Debian: python-matplotlib-data). The output is a
+ * triangulated vtkPolyData in double precision: a local equirectangular projection
+ * about the grid's centre, offset to (CentreEasting, CentreNorthing) — by default
+ * (745,000, 4,055,000) m, where UTM zone 16N puts the Jacksboro fault zone — with the
+ * elevation in metres as z and as the point array `Elevation`; the field data keeps the
+ * bounds (`LonLatBounds`) and the projection (`Projection`). Every Stride-th row and
+ * column is kept. docs/painting.md has the formula and its accuracy.
+ *
+ * The archive is read with zlib (stored and deflated entries); a damaged or
+ * unsupported file gives an error naming the entry and an empty output.
+ */
+#ifndef vtkNpzDEMReader_h
+#define vtkNpzDEMReader_h
+
+#include "GeoShapingIODEMModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class GEOSHAPINGIODEM_EXPORT vtkNpzDEMReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkNpzDEMReader* New();
+  vtkTypeMacro(vtkNpzDEMReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+
+  /// Keep every Stride-th row and column (default 1: all).
+  vtkSetClampMacro(Stride, int, 1, VTK_INT_MAX);
+  vtkGetMacro(Stride, int);
+
+  /// Where the grid's centre lands, metres (default 745,000 E, 4,055,000 N).
+  vtkSetMacro(CentreEasting, double);
+  vtkGetMacro(CentreEasting, double);
+  vtkSetMacro(CentreNorthing, double);
+  vtkGetMacro(CentreNorthing, double);
+
+protected:
+  vtkNpzDEMReader();
+  ~vtkNpzDEMReader() override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName = nullptr;
+  int Stride = 1;
+  double CentreEasting;
+  double CentreNorthing;
+
+private:
+  vtkNpzDEMReader(const vtkNpzDEMReader&) = delete;
+  void operator=(const vtkNpzDEMReader&) = delete;
+};
+
+#endif

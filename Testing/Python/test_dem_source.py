@@ -1,0 +1,68 @@
+"""The plugin's Jacksboro Fault DEM source (C++ vtkNpzDEMReader: zip + zlib + .npy)
+against the demo's independent numpy converter (Testing/Demo/jacksboro.py): the same
+surface point for point and triangle for triangle; and clear errors on bad archives."""
+import os
+import sys
+import zipfile
+
+import numpy as np
+from geoshaping_testing import check, load
+from paraview import servermanager as sm
+from paraview.simple import *  # noqa: F401,F403
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Demo"))
+import jacksboro  # noqa: E402
+
+load(ns=globals())
+path = jacksboro.find_dem()
+for stride in (1, 3):
+    dem = JacksboroFaultDEM(Stride=stride)  # noqa: F405 (defined by the plugin)
+    check(dem.FileName == path or os.path.samefile(dem.FileName, path),
+          "the source's default file is matplotlib's DEM")
+    ours = sm.Fetch(dem)
+    ref = jacksboro.jacksboro_polydata(path, stride=stride)
+    p = vtk_to_numpy(ours.GetPoints().GetData())
+    q = vtk_to_numpy(ref.GetPoints().GetData())
+    check(ours.GetPoints().GetDataType() == 11, "stride %d: double-precision points" % stride)
+    check(p.shape == q.shape, "stride %d: %d points, as the numpy converter" % (stride, len(q)))
+    diff = float(np.abs(p - q).max())
+    check(diff < 1e-6, "stride %d: every point within 1e-6 m of the numpy converter (%.2g)"
+          % (stride, diff))
+    a = vtk_to_numpy(ours.GetPolys().GetConnectivityArray())
+    b = vtk_to_numpy(ref.GetPolys().GetConnectivityArray())
+    check(np.array_equal(a, b), "stride %d: the same %d triangles" % (stride, len(b) // 3))
+    e = vtk_to_numpy(ours.GetPointData().GetArray("Elevation"))
+    check(np.array_equal(e, p[:, 2]), "stride %d: Elevation is z" % stride)
+    if stride == 1:
+        check(len(q) == 344 * 403, "the full DEM has 344 x 403 vertices")
+        bounds = ours.GetBounds()
+        centre = (0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]))
+        check(abs(centre[0] - 745000) < 1e-6 and abs(centre[1] - 4055000) < 1e-6,
+              "the DEM centre lands at 745,000 E, 4,055,000 N")
+        span = (bounds[1] - bounds[0], bounds[3] - bounds[2])
+        check(29000 < span[0] < 31000 and 30000 < span[1] < 32000,
+              "about 30 km x 31 km (%.0f x %.0f m)" % span)
+    Delete(dem)
+
+# Bad archives: an error naming what is wrong, and no points.
+tmp = os.environ["GEOSHAPING_TEST_TMP"]
+cases = {}
+cases["empty.npz"] = b""
+cases["junk.npz"] = bytes(range(256)) * 4
+with zipfile.ZipFile(os.path.join(tmp, "noelev.npz"), "w") as z:
+    z.writestr("xmin.npy", open(path, "rb").read()[:0])
+with zipfile.ZipFile(path) as src, zipfile.ZipFile(os.path.join(tmp, "truncated.npz"), "w",
+                                                   zipfile.ZIP_DEFLATED) as z:
+    for name in src.namelist():
+        data = src.read(name)
+        z.writestr(name, data[: len(data) // 2] if name == "elevation.npy" else data)
+for name, data in cases.items():
+    with open(os.path.join(tmp, name), "wb") as f:
+        f.write(data)
+for name in ["empty.npz", "junk.npz", "noelev.npz", "truncated.npz", "absent.npz"]:
+    reader = NumPyDEMReader(FileName=os.path.join(tmp, name))  # noqa: F405
+    out = sm.Fetch(reader)
+    check(out.GetNumberOfPoints() == 0, "%s: no points" % name)
+    Delete(reader)
+print("all DEM checks passed")
