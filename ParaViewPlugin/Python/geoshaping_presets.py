@@ -8,6 +8,7 @@ imports the preset file that sits next to it (../Presets) and applies it with th
     import geoshaping_presets
     geoshaping_presets.show_malleability(display)          # colour a display by it
     geoshaping_presets.malleability_lookup_table()         # or just get the LUT
+    geoshaping_presets.show_pins(chain)                    # pinned vertices in cyan
 """
 import os
 
@@ -44,3 +45,25 @@ def show_malleability(display, array_name="Malleability"):
     lut = malleability_lookup_table(array_name)
     display.LookupTable = lut
     return lut
+
+
+PIN_COLOR = [0.0, 1.0, 1.0]  # cyan: absent from the black-body map
+
+
+def show_pins(source, view=None, array_name="Pinned"):
+    """Shows the pinned vertices of `source` (its point mask `array_name`, non-zero =
+    pinned) distinctly from the heat map: exactly those vertices, extracted by a query
+    selection, drawn as cyan spheres (point size 6) over the surface, which keeps its
+    Malleability colours. Returns (extract, display)."""
+    view = view or simple.GetActiveViewOrCreate("RenderView")
+    query = simple.SelectionQuerySource(ElementType="Point Data",
+                                        QueryString="(%s > 0)" % array_name)
+    pins = simple.ExtractSelection(Input=source, Selection=query)
+    display = simple.Show(pins, view)
+    display.SetRepresentationType("Points")
+    simple.ColorBy(display, None)
+    display.AmbientColor = PIN_COLOR
+    display.DiffuseColor = PIN_COLOR
+    display.PointSize = 6.0
+    display.RenderPointsAsSpheres = 1
+    return pins, display

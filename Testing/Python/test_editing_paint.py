@@ -80,3 +80,14 @@ for g, d in [(15 * N + 15, [0.0, 0.0, 5.0]), (15 * N + 23, [0.0, 0.0, -3.0]),
     check(np.array_equal(points(chain)[pinned_ids], rest[pinned_ids]), "and after the commit")
 chain.EditHistory = list(chain.EditHistory)[:-1]
 check(np.array_equal(points(chain)[pinned_ids], rest[pinned_ids]), "and after an undo")
+
+# Pins shown apart from the heat map: exactly the pinned vertices, as cyan points.
+import geoshaping_presets  # noqa: E402
+shown_pins, pin_display = geoshaping_presets.show_pins(chain)
+extracted = sm.Fetch(shown_pins)
+got = vtk_to_numpy(extracted.GetPoints().GetData()).astype(float)
+check(extracted.GetNumberOfPoints() == len(pinned_ids) and
+      np.array_equal(np.sort(got, axis=0), np.sort(points(chain)[pinned_ids], axis=0)),
+      "show_pins extracts exactly the %d pinned vertices" % len(pinned_ids))
+check(pin_display.Representation == "Points" and list(pin_display.DiffuseColor) == [0.0, 1.0, 1.0]
+      and pin_display.ColorArrayName[1] == "", "drawn as cyan points, not by the heat map")
