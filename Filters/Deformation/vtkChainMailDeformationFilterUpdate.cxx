@@ -1,7 +1,51 @@
 // The stages of vtkChainMailDeformationFilter::RequestData.
 #include "vtkChainMailDeformationFilterInternals.h"
 
+#include "vtkArrayDispatch.h"
+#include "vtkDataArrayRange.h"
+
 using namespace vtkChainMailDeformationFilterDetail;
+
+namespace
+{
+// out[v] = in[v] + offset(v) for every v of the lists that `skip(v)` does not exclude,
+// through the arrays' own value types (no virtual call per vertex).
+struct RewriteWorker
+{
+  template<class InArray, class OutArray, class Skip, class Offset>
+  void operator()(InArray* inArray, OutArray* outArray, IdLists lists, const Skip& skip,
+    const Offset& offset) const
+  {
+    const auto in = vtk::DataArrayTupleRange<3>(inArray);
+    auto out = vtk::DataArrayTupleRange<3>(outArray);
+    using Value = typename decltype(out)::ComponentType;
+    for (const IdList* list : lists)
+      for (geoshaping::index_t v : *list)
+      {
+        if (skip(v))
+          continue;
+        const Eigen::Vector3d u = offset(v);
+        const auto from = in[v];
+        auto to = out[v];
+        for (int k = 0; k < 3; ++k)
+          to[k] = static_cast<Value>(double(from[k]) + u[k]);
+      }
+  }
+};
+
+template<class Skip, class Offset>
+void RewritePoints(vtkDataArray* inArray, vtkDataArray* outArray, IdLists lists, const Skip& skip,
+  const Offset& offset)
+{
+  using Reals = vtkArrayDispatch::Reals;
+  RewriteWorker worker;
+  if (!vtkArrayDispatch::Dispatch2ByValueType<Reals, Reals>::Execute(
+        inArray, outArray, worker, lists, skip, offset))
+  {
+    worker(inArray, outArray, lists, skip, offset); // any other array type, through vtkDataArray
+  }
+}
+} // namespace
 
 bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
 {
@@ -11,7 +55,7 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   // 1. Geometry and topology: rebuilt only when they change.
   const vtkMTimeType geometryTime = vtkGeoShapingAdapter::GeometryTime(input);
   if (!in.GeometryValid || in.GeometryPoints != inPoints || in.GeometrySize != n ||
-    in.GeometryTime != geometryTime || in.GeometryPrecision != this->OutputPointsPrecision)
+      in.GeometryTime != geometryTime || in.GeometryPrecision != this->OutputPointsPrecision)
   {
     in.GeometryValid = false;
     in.GeometryPoints = inPoints;
@@ -48,10 +92,10 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
     in.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
 
     in.OutputPoints = vtkSmartPointer<vtkPoints>::New();
-    const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION
-      ? VTK_FLOAT
-      : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION ? VTK_DOUBLE
-                                                                      : inPoints->GetDataType();
+    const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT
+                          : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION
+                            ? VTK_DOUBLE
+                            : inPoints->GetDataType();
     in.OutputPoints->SetDataType(precision);
     in.OutputPoints->DeepCopy(inPoints);
     if (in.OutputPoints->GetDataType() != precision)
@@ -78,13 +122,14 @@ void vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
   vtkDataArray* malleability = this->GetInputArrayToProcess(0, inputVector);
   if (malleability && malleability->GetNumberOfComponents() != 1)
   {
-    vtkWarningMacro("Malleability array '" << malleability->GetName()
-                                           << "' must have one component; using DefaultMalleability.");
+    vtkWarningMacro("Malleability array '"
+                    << malleability->GetName()
+                    << "' must have one component; using DefaultMalleability.");
     malleability = nullptr;
   }
   if (malleability != in.MalleabilitySource ||
-    (malleability && malleability->GetMTime() != in.MalleabilityTime) ||
-    (!malleability && in.MalleabilityDefault != this->DefaultMalleability))
+      (malleability && malleability->GetMTime() != in.MalleabilityTime) ||
+      (!malleability && in.MalleabilityDefault != this->DefaultMalleability))
   {
     if (malleability)
     {
@@ -94,8 +139,9 @@ void vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
       const std::size_t bad = in.Deformer.set_malleability(m.data());
       if (bad > 0)
       {
-        vtkWarningMacro(<< bad << " malleability values are outside [0, 1] or NaN; they were "
-                                  "clamped (NaN counts as 0, rigid).");
+        vtkWarningMacro(<< bad
+                        << " malleability values are outside [0, 1] or NaN; they were "
+                           "clamped (NaN counts as 0, rigid).");
       }
       in.MalleabilityTime = malleability->GetMTime();
     }
@@ -110,9 +156,9 @@ void vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
   // The pin array is optional: ask for it only when one was named.
   vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
   vtkDataArray* pins = arrays && arrays->GetNumberOfInformationObjects() > 1 &&
-      arrays->GetInformationObject(1)->Get(vtkDataObject::FIELD_NAME())
-    ? this->GetInputArrayToProcess(1, inputVector)
-    : nullptr;
+                           arrays->GetInformationObject(1)->Get(vtkDataObject::FIELD_NAME())
+                         ? this->GetInputArrayToProcess(1, inputVector)
+                         : nullptr;
   if (pins != in.PinSource || (pins && pins->GetMTime() != in.PinTime))
   {
     if (pins)
@@ -130,7 +176,6 @@ void vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
     in.PinSource = pins;
     in.Projector.reset();
   }
-
 }
 
 std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& stale)
@@ -162,10 +207,10 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input)
   const vtkIdType n = input->GetNumberOfPoints();
   // 4. Transfer function and queue, cheap to set every time.
   geoshaping::TransferFunction tf;
-  tf.stretch = MakeCurve(this->StretchRange, this->TransferCurveShape, this->StepThreshold,
-    in.StretchCurve);
-  tf.compression = MakeCurve(this->CompressionRange, this->TransferCurveShape,
-    this->StepThreshold, in.CompressionCurve);
+  tf.stretch =
+    MakeCurve(this->StretchRange, this->TransferCurveShape, this->StepThreshold, in.StretchCurve);
+  tf.compression = MakeCurve(
+    this->CompressionRange, this->TransferCurveShape, this->StepThreshold, in.CompressionCurve);
   tf.shear =
     MakeCurve(this->ShearRange, this->TransferCurveShape, this->StepThreshold, in.ShearCurve);
   tf.exact_rigid_at_zero = this->ExactRigidAtZero;
@@ -208,8 +253,7 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input)
       const geoshaping::FrameResult r = in.Deformer.deform(geoshaping::index_t(grasp),
         Eigen::Vector3d(this->Displacement[0], this->Displacement[1], this->Displacement[2]));
       this->LastDeformationMilliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-          .count();
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       if (!r.ok)
       {
         vtkErrorMacro("No deformation: " << r.message << "; output is the undeformed input.");
@@ -224,7 +268,6 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input)
       }
     }
   }
-
 }
 
 void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet* output,
@@ -236,26 +279,23 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
   // 6. Rewrite only the vertices that moved now or last time (the moved and the refined)
   // and those an edit changed, as input + offset so unedited vertices stay the input's.
   vtkPoints* outPoints = in.OutputPoints;
-  double p[3];
-  for (const IdList* restore : IdLists{ &in.Deformer.previously_moved(), &in.Refined, &stale, &touched })
-    for (geoshaping::index_t v : *restore)
-    {
-      inPoints->GetPoint(v, p);
-      const Eigen::Vector3d& c = in.Deformer.committed_offset(v);
-      outPoints->SetPoint(v, p[0] + c.x(), p[1] + c.y(), p[2] + c.z());
-    }
+  // A vertex moved last time and again now is written once, by the second pass.
+  const auto& deformer = in.Deformer;
+  RewritePoints(
+    inPoints->GetData(), outPoints->GetData(),
+    IdLists{ &deformer.previously_moved(), &in.Refined, &stale, &touched },
+    [&deformer](geoshaping::index_t v) { return deformer.moved_this_frame(v); },
+    [&deformer](geoshaping::index_t v) { return deformer.committed_offset(v); });
   in.Refined.clear();
   if (in.Refining)
   {
     in.Refined = in.Projector->changed();
   }
-  for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined })
-    for (geoshaping::index_t v : *write)
-    {
-      inPoints->GetPoint(v, p);
-      const Eigen::Vector3d u = in.Deformer.committed_offset(v) + in.FinalDisplacement(v);
-      outPoints->SetPoint(v, p[0] + u.x(), p[1] + u.y(), p[2] + u.z());
-    }
+  RewritePoints(
+    inPoints->GetData(), outPoints->GetData(), IdLists{ &deformer.moved(), &in.Refined },
+    [](geoshaping::index_t) { return false; },
+    [&in](geoshaping::index_t v) -> Eigen::Vector3d
+    { return in.Deformer.committed_offset(v) + in.FinalDisplacement(v); });
   outPoints->Modified();
   output->SetPoints(outPoints);
 
