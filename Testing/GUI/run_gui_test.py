@@ -77,23 +77,27 @@ def write_touch_trace(path):
 
     with open(path, "w") as f:
         f.write("# t x y z qw qx qy qz buttons: palette pick, then touch the plateau\n")
-        # 1 s on the swatch: a frame sees it even at 2 frames per second.
-        for k in range(int(5.5 * 60) + 1):
+        # The button is held 0.5 s before the stylus moves, so the first frame that sees
+        # it lays the row out from `above`; then 1 s on the swatch: frames see both even
+        # at 2 frames per second.
+        for k in range(int(6.0 * 60) + 1):
             t = k / 60.0
             if t < 0.5:
                 p, b = above, 0
-            elif t < 2.0:
-                p, b = lerp(above, swatch, (t - 0.5) / 0.5), 2
+            elif t < 1.0:
+                p, b = above, 2
             elif t < 2.5:
-                p, b = lerp(swatch, above, (t - 2.0) / 0.5), 0
+                p, b = lerp(above, swatch, (t - 1.0) / 0.5), 2
+            elif t < 3.0:
+                p, b = lerp(swatch, above, (t - 2.5) / 0.5), 0
             else:
-                p, b = lerp(above, below, t - 2.5), (2 if t >= 3.5 else 0)
+                p, b = lerp(above, below, t - 3.0), (2 if t >= 4.0 else 0)
             f.write("%.6f %.9f %.9f %.9f 1 0 0 0 %d\n" % (t, p[0], p[1], p[2], b))
     return normal
 
 
 # The bimanual test: hand 2 paints (value 1) where hand 1's drag has lifted the surface,
-# from 3.0 to 3.5 s while hand 1 holds still at the end of its drag (grasp_drag.trace).
+# from 3.0 to 3.8 s while hand 1 holds still at the end of its drag (grasp_drag.trace).
 PAINT_AT = [-0.03, 0.024, 0.022]  # device frame: grasp_drag's press + its drag
 PLATEAU_Z = 20.0  # the rest surface under the grasp
 
@@ -104,7 +108,7 @@ def write_paint_trace(path):
         for k in range(int(4.5 * 60) + 1):
             t = k / 60.0
             f.write("%.6f %.9f %.9f %.9f 1 0 0 0 %d\n" % (t, PAINT_AT[0], PAINT_AT[1], PAINT_AT[2],
-                                                          1 if 3.0 <= t < 3.5 else 0))
+                                                          1 if 3.0 <= t < 3.8 else 0))
 
 
 def check_bimanual(results):
