@@ -111,18 +111,22 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
 {
   if (!in.device_ok)
     return zero(ForceStatus::device_error);
-  if (scene.stamp == Clock::time_point() || in.now - scene.stamp > params.stale_after)
+  const auto stale_after =
+    std::max(params.stale_after, std::min(scene.valid_for, params.stale_after_max));
+  if (scene.stamp == Clock::time_point() || in.now - scene.stamp > stale_after)
     return zero(ForceStatus::stale_scene);
   if (!in.position.allFinite() || !in.velocity.allFinite() ||
-    (scene.grasping && (!scene.grasp_anchor.allFinite() || !std::isfinite(scene.grasp_stiffness))))
+      (scene.grasping &&
+        (!scene.grasp_anchor.allFinite() || !std::isfinite(scene.grasp_stiffness))))
     return zero(ForceStatus::non_finite);
 
   const double k_max = std::max(0.0, limits.max_stiffness);
   const double b_max = std::max(0.0, limits.max_damping);
   double k_g = scene.grasping ? std::clamp(scene.grasp_stiffness, 0.0, k_max) : 0.0;
-  const Contact contact = scene.contact_triangles.empty()
-    ? Contact()
-    : nearest_contact(in.position, scene.contact_triangles, params.contact_shell);
+  const Contact contact =
+    scene.contact_triangles.empty()
+      ? Contact()
+      : nearest_contact(in.position, scene.contact_triangles, params.contact_shell);
   double k_c = contact.found ? std::clamp(params.contact_stiffness, 0.0, k_max) : 0.0;
   // Springs acting together add up: keep their sum within the stable stiffness.
   if (k_g + k_c > k_max)
@@ -136,11 +140,11 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   r.in_contact = contact.found;
   if (scene.grasping)
     r.force += k_g * (scene.grasp_anchor - in.position) -
-      std::clamp(params.coupling_damping, 0.0, b_max) * in.velocity;
+               std::clamp(params.coupling_damping, 0.0, b_max) * in.velocity;
   if (contact.found)
     r.force += (k_c * contact.depth -
                  std::clamp(params.contact_damping, 0.0, b_max) * in.velocity.dot(contact.normal)) *
-      contact.normal;
+               contact.normal;
 
   if (!r.force.allFinite())
     return zero(ForceStatus::non_finite);

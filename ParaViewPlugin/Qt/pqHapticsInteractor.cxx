@@ -164,6 +164,8 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
     this->Hands[i] = std::move(hand);
   }
   this->Stats = Figures();
+  this->FramePeriodSeconds = 0.0;
+  this->LastFrameEnd = std::chrono::steady_clock::time_point();
   this->FpsSince = std::chrono::steady_clock::now();
   this->FramesSince = 0;
   this->Timer.start();
@@ -353,6 +355,10 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   gh::SceneSnapshot& scene = hand.servo->scene_back();
   scene.stamp = gh::Clock::now();
   scene.sequence = ++this->Sequence;
+  // A slow renderer's snapshot stays valid for three of its frames (the force model
+  // caps this at 500 ms, so a frozen GUI still zeroes the force).
+  scene.valid_for = std::chrono::duration_cast<std::chrono::nanoseconds>(
+    std::chrono::duration<double>(3.0 * this->FramePeriodSeconds));
   scene.grasping = hand.controller.held() && hand.controller.tool() == gi::Tool::deform;
   scene.grasp_anchor = hand.anchor;
   scene.grasp_stiffness = hand.stiffness;
@@ -457,6 +463,15 @@ void pqHapticsInteractor::onFrame()
 
 void pqHapticsInteractor::updateFigures()
 {
+  const auto frameEnd = std::chrono::steady_clock::now();
+  if (this->LastFrameEnd != std::chrono::steady_clock::time_point())
+  {
+    // Smoothed frame period, for how long a scene snapshot stays valid.
+    const double period = std::chrono::duration<double>(frameEnd - this->LastFrameEnd).count();
+    this->FramePeriodSeconds =
+      this->FramePeriodSeconds > 0.0 ? 0.8 * this->FramePeriodSeconds + 0.2 * period : period;
+  }
+  this->LastFrameEnd = frameEnd;
   ++this->Stats.frames;
   ++this->FramesSince;
   const auto now = std::chrono::steady_clock::now();

@@ -121,6 +121,8 @@ private:
   Eigen::Vector3d LastDisplacement = Eigen::Vector3d::Zero();
   Eigen::Matrix4d HoldStart = Eigen::Matrix4d::Identity();
   std::chrono::steady_clock::time_point FpsSince;
+  std::chrono::steady_clock::time_point LastFrameEnd;
+  double FramePeriodSeconds = 0.0;
   int FramesSince = 0;
   std::uint64_t Sequence = 0;
   geoshaping::interactor::EditResult LastEdit;

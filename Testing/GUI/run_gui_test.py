@@ -139,6 +139,9 @@ def check_touch(results, normal):
     assert results["force_status"] == "ok" and results["in_contact_last_scene"] == "1", results
     assert all(abs(a - b) < 1e-3 for a, b in zip(force, expected)), (force, expected)
     assert 0 < int(results["max_contact_triangles"]) <= 256, results
+    # And the servo loop itself rendered it: its snapshots, taken by the interactor once a
+    # frame, reported contact (the scene stays valid for three frames, at most 0.5 s).
+    assert int(results["contact_ticks"]) > 0, results
     assert int(results["moved_points"]) == 0, "touching must not deform"
     assert abs(float(results["brush_value"]) - 0.3) < 1e-12, "the 3D palette pick: " + results["brush_value"]
 

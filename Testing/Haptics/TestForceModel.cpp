@@ -164,6 +164,33 @@ TEST(ForceModel, ForceIsZeroWhenTheSceneIsStaleOrWasNeverPublished)
   EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
 }
 
+TEST(ForceModel, ASlowRenderersSnapshotStaysValidAsLongAsItSaysUpToTheCap)
+{
+  const ForceParams params; // 100 ms, at most 500 ms
+  SceneSnapshot scene = grasp({ 0, 0, 0 }, 800.0);
+  scene.valid_for = std::chrono::milliseconds(300); // a renderer at ~10 frames/s
+  scene.stamp = now - std::chrono::milliseconds(250);
+  EXPECT_EQ(
+    compute_force(at({ 0.001, 0, 0 }), scene, params, DeviceLimits()).status, ForceStatus::ok);
+  scene.stamp = now - std::chrono::milliseconds(301);
+  EXPECT_EQ(compute_force(at({ 0.001, 0, 0 }), scene, params, DeviceLimits()).status,
+    ForceStatus::stale_scene);
+  // A frozen GUI cannot keep the force on beyond the cap, whatever it claimed.
+  scene.valid_for = std::chrono::hours(1);
+  scene.stamp = now - std::chrono::milliseconds(499);
+  EXPECT_EQ(
+    compute_force(at({ 0.001, 0, 0 }), scene, params, DeviceLimits()).status, ForceStatus::ok);
+  scene.stamp = now - std::chrono::milliseconds(501);
+  const ForceResult r = compute_force(at({ 0.001, 0, 0 }), scene, params, DeviceLimits());
+  EXPECT_EQ(r.status, ForceStatus::stale_scene);
+  EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
+  // Shorter than the default: the default holds.
+  scene.valid_for = std::chrono::milliseconds(10);
+  scene.stamp = now - std::chrono::milliseconds(90);
+  EXPECT_EQ(
+    compute_force(at({ 0.001, 0, 0 }), scene, params, DeviceLimits()).status, ForceStatus::ok);
+}
+
 TEST(ForceModel, ForceIsZeroWhenAnyInputIsNonFinite)
 {
   const DeviceLimits limits;
@@ -194,7 +221,8 @@ TEST(ForceModel, ForceNeverExceedsTheMaximumAndIsNeverNaNOverRandomInputs)
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_int_distribution<int> pick(0, 9);
   // Mostly sensible values, sometimes NaN, infinities, huge or tiny ones.
-  auto value = [&](double scale) {
+  auto value = [&](double scale)
+  {
     switch (pick(rng))
     {
       case 0:
@@ -209,8 +237,8 @@ TEST(ForceModel, ForceNeverExceedsTheMaximumAndIsNeverNaNOverRandomInputs)
         return unit(rng) * scale;
     }
   };
-  auto vec = [&](
-               double scale) { return Eigen::Vector3d(value(scale), value(scale), value(scale)); };
+  auto vec = [&](double scale)
+  { return Eigen::Vector3d(value(scale), value(scale), value(scale)); };
   DeviceLimits limits;
   limits.max_force = 2.5;
   int rendered = 0;

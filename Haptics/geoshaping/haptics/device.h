@@ -27,11 +27,11 @@ struct DeviceSample
 // (converted to SI); the defaults are those of a desktop PHANToM-class device.
 struct DeviceLimits
 {
-  double max_force = 3.3; // N, peak
+  double max_force = 3.3;        // N, peak
   double max_stiffness = 1000.0; // N/m: above this a virtual spring at 1 kHz may buzz
-  double max_damping = 5.0; // N s/m
+  double max_damping = 5.0;      // N s/m
   Eigen::Vector3d workspace_min = Eigen::Vector3d::Constant(-0.08); // m, device frame
-  Eigen::Vector3d workspace_max = Eigen::Vector3d::Constant(0.08); // m, device frame
+  Eigen::Vector3d workspace_max = Eigen::Vector3d::Constant(0.08);  // m, device frame
   double workspace_radius = 0.08; // m, radius of the sphere the stylus reaches everywhere
 };
 

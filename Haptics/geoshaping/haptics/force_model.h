@@ -17,11 +17,14 @@ struct ForceParams
   double coupling_damping = 1.0; // N s/m, while grasping
 
   double contact_stiffness = 800.0; // N/m
-  double contact_damping = 1.0; // N s/m, along the normal, while in contact
-  double contact_shell = 0.005; // m: penetration depth below which contact acts
+  double contact_damping = 1.0;     // N s/m, along the normal, while in contact
+  double contact_shell = 0.005;     // m: penetration depth below which contact acts
 
-  // A scene snapshot older than this renders zero force.
+  // A scene snapshot older than this renders zero force, unless the snapshot says it
+  // stays valid longer (SceneSnapshot::valid_for, a slow renderer), up to
+  // stale_after_max: a frozen graphics thread still zeroes the force within that.
   std::chrono::nanoseconds stale_after = std::chrono::milliseconds(100);
+  std::chrono::nanoseconds stale_after_max = std::chrono::milliseconds(500);
 };
 
 // Coupling stiffness for the malleability m in [0, 1] of the grasped region:
@@ -77,7 +80,8 @@ struct ForceResult
 // is scaled down to max force (direction kept, norm computed without overflow).
 //
 // Faults give exactly zero (never NaN), with the reason in `status`: device error,
-// a scene older than stale_after (or never published), any non-finite input, or a
+// a scene older than max(stale_after, min(scene.valid_for, stale_after_max)) (or never
+// published), any non-finite input, or a
 // non-finite result (e.g. overflow from an absurd position).
 ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   const ForceParams& params, const DeviceLimits& limits);

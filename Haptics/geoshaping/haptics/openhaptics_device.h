@@ -34,7 +34,7 @@ public:
   bool read(DeviceSample& sample) override;
   bool set_force(const Eigen::Vector3d& force) override;
 
-  struct Api; // the resolved HD functions
+  struct Api;  // the resolved HD functions
   struct Frame // what one HD tick saw
   {
     DeviceSample sample;
@@ -49,7 +49,7 @@ private:
   std::string library_;
   std::unique_ptr<Api> api_;
   DeviceClock clock_;
-  TripleBuffer<Frame> frames_; // HD thread -> servo thread
+  TripleBuffer<Frame> frames_;           // HD thread -> servo thread
   TripleBuffer<Eigen::Vector3d> forces_; // servo thread -> HD thread
   Frame latest_;
 };

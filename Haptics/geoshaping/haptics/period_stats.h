@@ -11,7 +11,7 @@ namespace geoshaping::haptics
 struct PeriodSummary
 {
   std::uint64_t periods = 0;
-  double mean_rate_hz = 0.0; // periods / their total duration
+  double mean_rate_hz = 0.0;  // periods / their total duration
   double p50_jitter_us = 0.0; // percentiles of |period - nominal|
   double p99_jitter_us = 0.0;
   double max_jitter_us = 0.0;

@@ -20,6 +20,10 @@ struct SceneSnapshot
   Clock::time_point stamp{}; // when the graphics thread made it; older than the
                              // staleness timeout => the servo renders zero force
   std::uint64_t sequence = 0;
+  // How long the graphics side expects this snapshot to stay current (about its frame
+  // period, with margin); the force model honours it up to ForceParams::stale_after_max.
+  // Zero: the default staleness timeout.
+  std::chrono::nanoseconds valid_for{ 0 };
 
   // Virtual coupling: while grasping, a spring pulls the stylus toward `grasp_anchor`,
   // the grasped vertex's position before the drag began, so the pull grows with the
@@ -38,10 +42,10 @@ struct SceneSnapshot
 // Why the last force was what it was.
 enum class ForceStatus : std::uint8_t
 {
-  ok, // force rendered from a fresh scene
+  ok,           // force rendered from a fresh scene
   device_error, // the device reported an error: zero force
-  stale_scene, // no scene, or older than the timeout: zero force
-  non_finite // an input (or the result) was NaN or infinite: zero force
+  stale_scene,  // no scene, or older than the timeout: zero force
+  non_finite    // an input (or the result) was NaN or infinite: zero force
 };
 
 const char* to_string(ForceStatus s);
@@ -55,8 +59,8 @@ struct DeviceSnapshot
   Eigen::Vector3d force = Eigen::Vector3d::Zero(); // N, as sent
   ForceStatus status = ForceStatus::stale_scene;
   bool in_contact = false;
-  std::uint64_t ticks = 0; // servo ticks so far
-  std::uint64_t zero_ticks = 0; // ticks that rendered zero because of a fault
+  std::uint64_t ticks = 0;          // servo ticks so far
+  std::uint64_t zero_ticks = 0;     // ticks that rendered zero because of a fault
   std::uint64_t scene_sequence = 0; // sequence of the scene snapshot used
 };
 

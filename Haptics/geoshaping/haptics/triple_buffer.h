@@ -24,7 +24,7 @@ namespace geoshaping::haptics
 //
 // Exactly one writer thread and one reader thread; they may be different from the
 // thread that constructed the buffer.
-template <class T>
+template<class T>
 class TripleBuffer
 {
 public:
