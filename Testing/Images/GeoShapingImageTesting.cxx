@@ -1,18 +1,20 @@
 #include "GeoShapingImageTesting.h"
 
+#include "vtkChainMailDeformationFilter.h"
+
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataSetSurfaceFilter.h"
-#include "vtkImageDifference.h"
 #include "vtkFaultStepHorizonSource.h"
+#include "vtkImageDifference.h"
 #include "vtkMalleabilityPaintFilter.h"
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRenderWindow.h"
 #include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -78,7 +80,8 @@ vtkSmartPointer<vtkColorTransferFunction> MalleabilityColors()
 vtkSmartPointer<vtkAlgorithm> PaintedFaultStep(bool slab)
 {
   vtkNew<vtkFaultStepHorizonSource> scene;
-  scene->SetOutputMeshType(slab ? vtkFaultStepHorizonSource::SLAB : vtkFaultStepHorizonSource::SURFACE);
+  scene->SetOutputMeshType(
+    slab ? vtkFaultStepHorizonSource::SLAB : vtkFaultStepHorizonSource::SURFACE);
   auto paint = vtkSmartPointer<vtkMalleabilityPaintFilter>::New();
   paint->SetInputConnection(scene->GetOutputPort());
   paint->SetInitialMalleability(geoshaping::fault_step_red);
@@ -151,6 +154,30 @@ int CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* window)
   std::cout << "Colour check against " << baseline << ": thresholded error " << error
             << " (limit 1)\n";
   return error > 1.0 ? 1 : 0;
+}
+
+vtkSmartPointer<vtkChainMailDeformationFilter> LiftedStep(vtkAlgorithm* painted, double lift)
+{
+  auto drag = vtkSmartPointer<vtkChainMailDeformationFilter>::New();
+  drag->SetInputConnection(painted->GetOutputPort());
+  drag->SetGraspMode(vtkChainMailDeformationFilter::GRASP_NEAREST_TO_POSITION);
+  drag->SetGraspPosition(50.0, 30.0, 10.0);
+  drag->SetDisplacement(0.0, 0.0, lift);
+  drag->SetCandidateQueue(vtkChainMailDeformationFilter::FIFO_PRIORITY);
+  drag->Update();
+  std::cout << "displaced " << drag->GetNumberOfDisplacedPoints() << " vertices\n";
+  return drag;
+}
+
+int CompareFaultStepFigure(int argc, char* argv[], vtkAlgorithm* source)
+{
+  vtkSmartPointer<vtkRenderer> renderer =
+    SurfaceRenderer(source, "Malleability", MalleabilityColors());
+  FaultStepCamera(renderer);
+  vtkSmartPointer<vtkRenderWindow> window = TestWindow(480, 360);
+  window->AddRenderer(renderer);
+  window->Render();
+  return CompareWithBaseline(argc, argv, window);
 }
 
 } // namespace geoshaping_image_testing

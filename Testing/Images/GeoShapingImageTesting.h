@@ -3,6 +3,7 @@
 #include "vtkSmartPointer.h"
 
 class vtkAlgorithm;
+class vtkChainMailDeformationFilter;
 class vtkColorTransferFunction;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -20,8 +21,8 @@ vtkSmartPointer<vtkAlgorithm> PaintedFaultStep(bool slab);
 
 // A renderer showing `source`'s output surface coloured by the point array `array`
 // through `colors` (scalar range fixed by the colour map), flat-lit, on a grey background.
-vtkSmartPointer<vtkRenderer> SurfaceRenderer(vtkAlgorithm* source, const char* array,
-  vtkColorTransferFunction* colors);
+vtkSmartPointer<vtkRenderer> SurfaceRenderer(
+  vtkAlgorithm* source, const char* array, vtkColorTransferFunction* colors);
 
 // The oblique camera used for the fault-step figures.
 void FaultStepCamera(vtkRenderer* renderer);
@@ -35,5 +36,13 @@ vtkSmartPointer<vtkRenderWindow> TestWindow(int width, int height);
 // again with a threshold of 30 (shifts of two pixels still allowed). Returns 0 when
 // both pass, as the test driver expects.
 int CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* window);
+
+// The painted fault step with the middle of its step (the vertex nearest (50, 30, 10))
+// lifted by `lift` under FIFO Priority, updated; prints how many vertices moved.
+vtkSmartPointer<vtkChainMailDeformationFilter> LiftedStep(vtkAlgorithm* painted, double lift);
+
+// `source` coloured by Malleability through the fault-step camera in a 480 x 360 window,
+// compared with the test's baseline (CompareWithBaseline).
+int CompareFaultStepFigure(int argc, char* argv[], vtkAlgorithm* source);
 
 } // namespace geoshaping_image_testing
