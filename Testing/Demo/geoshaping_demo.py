@@ -224,9 +224,11 @@ def main():
 
     scenes = {}
     j = config["jacksboro"]
-    dem = TrivialProducer(registrationName="Jacksboro")
-    dem_data = jacksboro.jacksboro_polydata(stride=2 if args.quick else 1)
-    dem.GetClientSideObject().SetOutput(dem_data)
+    # The plugin's source (C++, Filters/DEM); jacksboro.py is the numpy reference the tests
+    # compare it with, and gives the lon/lat projection of the map-given dabs and grasp.
+    dem = JacksboroFaultDEM(registrationName="Jacksboro", FileName=jacksboro.find_dem(),  # noqa: F405
+                            Stride=2 if args.quick else 1)
+    dem_data = output_of(dem)
     jack_xyz = jacksboro_xyz(dem_data)
     scenes["jacksboro"] = run_scene("jacksboro", j, dem, jack_xyz, jack_xyz(j["grasp_lonlat"]),
                                     trace, args, out)

@@ -33,9 +33,9 @@ def shown(source, cfg, to_xyz, name):
     return chain
 
 
-dem = TrivialProducer(registrationName="Jacksboro DEM")
-data = demo.jacksboro.jacksboro_polydata()
-dem.GetClientSideObject().SetOutput(data)
+dem = JacksboroFaultDEM(registrationName="Jacksboro DEM",  # noqa: F405 (the plugin's source)
+                        FileName=demo.jacksboro.find_dem())
+data = demo.output_of(dem)
 shown(dem, config["jacksboro"], demo.jacksboro_xyz(data), "Jacksboro")
 step = FaultStepHorizon(registrationName="Fault step", **config["fault_step"]["source"])  # noqa: F405
 chain = shown(step, config["fault_step"], tuple, "Fault step")
