@@ -29,7 +29,8 @@ class Reference
 {
 public:
   // Rest positions are taken from the deformer (so both share the local origin).
-  Reference(const ChainMailDeformer& d, const Adjacency& adj) : adj_(adj)
+  Reference(const ChainMailDeformer& d, const Adjacency& adj)
+    : adj_(adj)
   {
     const std::size_t n = std::size_t(d.size());
     rest_.resize(n);
@@ -68,7 +69,7 @@ public:
     moved_.clear();
     FrameResult r;
     if (g < 0 || g >= index_t(rest_.size()) || !d.allFinite() || !rest_[g].allFinite() ||
-      pinned_[g])
+        pinned_[g])
       return r;
     disp_[g] = d;
     moved_flag_[g] = 1;
@@ -101,14 +102,16 @@ public:
     std::priority_queue<Item, std::vector<Item>, ViolationLater> violation;
     std::priority_queue<Item, std::vector<Item>, RankSeqLater> bucket;
     std::uint64_t seq = 0;
-    auto required = [&](index_t c, index_t s) {
+    auto required = [&](index_t c, index_t s)
+    {
       const Eigen::Vector3d o = rest_[c] - rest_[s];
       if (!o.allFinite())
         return Eigen::Vector3d::Zero().eval();
       const Box b = displacement_bounds(o, tf(malleability_[c]));
       return Eigen::Vector3d::Zero().cwiseMax(disp_[s] + b.lo).cwiseMin(disp_[s] + b.hi).eval();
     };
-    auto sponsor = [&](index_t s) {
+    auto sponsor = [&](index_t s)
+    {
       for (const index_t* it = adj_.begin(s); it != adj_.end(s); ++it)
       {
         const index_t c = *it;
@@ -132,7 +135,8 @@ public:
         }
       }
     };
-    auto pop = [&](Candidate& out) {
+    auto pop = [&](Candidate& out)
+    {
       switch (q)
       {
         case QueueKind::fifo:
@@ -239,8 +243,8 @@ void expect_same_frame(ChainMailDeformer& d, Reference& ref, index_t g, const Ei
   }
 }
 
-constexpr QueueKind all_queues[] = { QueueKind::fifo, QueueKind::priority,
-  QueueKind::fifo_priority, QueueKind::max_violation };
+constexpr QueueKind all_queues[] = { QueueKind::fifo, QueueKind::priority, QueueKind::fifo_priority,
+  QueueKind::max_violation };
 
 // A grid with jittered rest positions, so offsets are not all axis-aligned.
 geoshaping::testing::Mesh jittered(geoshaping::testing::Mesh m, unsigned seed, double amount)
