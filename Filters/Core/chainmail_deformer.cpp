@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 namespace geoshaping
@@ -27,7 +29,11 @@ std::uint64_t spread3(std::uint64_t x)
 
 void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacency)
 {
-  adj_ = std::move(adjacency);
+  const Adjacency adj = std::move(adjacency); // the internal copy replaces it below
+  {
+    std::lock_guard<std::mutex> lock(caller_adjacency_mutex());
+    caller_adjacency_.reset();
+  }
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(0.0), hi = lo;
   bool first = true;
   for (index_t v = 0; v < n; ++v)
@@ -75,17 +81,17 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
   // Internal CSR: each row keeps the caller's neighbour order (it decides queue order).
   // 32-bit row offsets: 4 billion neighbour entries is far beyond any mesh that fits
   // in memory next to them (checked).
-  if (adj_.neighbors.size() > std::numeric_limits<std::uint32_t>::max())
+  if (adj.neighbors.size() > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("ChainMailDeformer: more than 2^32 adjacency entries");
   offsets_.assign(un + 1, 0);
-  neighbors_.resize(adj_.neighbors.size());
-  const bool has_adjacency = adj_.size() == n;
+  neighbors_.resize(adj.neighbors.size());
+  const bool has_adjacency = adj.size() == n;
   for (std::size_t i = 0; i < un; ++i)
   {
     const index_t v = outer_of_[i];
     std::uint32_t k = offsets_[i];
     if (has_adjacency)
-      for (const index_t* it = adj_.begin(v); it != adj_.end(v); ++it)
+      for (const index_t* it = adj.begin(v); it != adj.end(v); ++it)
         neighbors_[k++] = inner_of_[std::size_t(*it)];
     offsets_[i + 1] = k;
   }
@@ -100,7 +106,6 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
     nodes_[i].rank = 0;
   }
   slot_.assign(un, 0);
-  malleability_.assign(un, 0.0f);
   pinned_.clear();
   pinned_inner_.clear();
   committed_.clear();
@@ -123,14 +128,15 @@ template<class T>
 std::size_t ChainMailDeformer::assign_malleability(const T* m)
 {
   std::size_t bad = 0;
-  for (std::size_t v = 0; v < malleability_.size(); ++v)
+  std::vector<float> values(nodes_.size());
+  for (std::size_t v = 0; v < values.size(); ++v)
   {
     const double x = double(m[v]);
     const double c = sanitize(x);
     bad += (c != x);
-    malleability_[v] = float(c);
+    values[v] = float(c);
   }
-  rebuild_ranks();
+  rebuild_ranks(values);
   return bad;
 }
 
@@ -146,8 +152,10 @@ std::size_t ChainMailDeformer::set_malleability(const double* m)
 
 void ChainMailDeformer::set_uniform_malleability(double m)
 {
-  std::fill(malleability_.begin(), malleability_.end(), float(sanitize(m)));
-  rebuild_ranks();
+  distinct_.assign(nodes_.empty() ? 0 : 1, float(sanitize(m)));
+  for (Node& node : nodes_)
+    node.rank = 0;
+  finish_ranks();
 }
 
 void ChainMailDeformer::set_transfer_function(const TransferFunction& tf)
@@ -156,16 +164,23 @@ void ChainMailDeformer::set_transfer_function(const TransferFunction& tf)
   rebuild_rank_params();
 }
 
-void ChainMailDeformer::rebuild_ranks()
+// malleability(v) is distinct_[rank]: the value stored, except that -0 and +0 share a
+// rank (and so read back as whichever of the two sorted first).
+void ChainMailDeformer::rebuild_ranks(const std::vector<float>& values)
 {
-  distinct_ = malleability_;
+  distinct_ = values;
   std::sort(distinct_.begin(), distinct_.end());
   distinct_.erase(std::unique(distinct_.begin(), distinct_.end()), distinct_.end());
   distinct_.shrink_to_fit();
   for (std::size_t i = 0; i < nodes_.size(); ++i)
-    nodes_[i].rank = index_t(std::lower_bound(distinct_.begin(), distinct_.end(),
-                               malleability_[std::size_t(outer_of_[i])]) -
-                             distinct_.begin());
+    nodes_[i].rank = index_t(
+      std::lower_bound(distinct_.begin(), distinct_.end(), values[std::size_t(outer_of_[i])]) -
+      distinct_.begin());
+  finish_ranks();
+}
+
+void ChainMailDeformer::finish_ranks()
+{
   num_ranks_ = std::max<index_t>(1, index_t(distinct_.size()));
   buckets_.reset_ranks(num_ranks_);
   rebuild_rank_params();
@@ -379,17 +394,58 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
   result.examined = examined;
 }
 
+std::mutex& ChainMailDeformer::caller_adjacency_mutex()
+{
+  static std::mutex m;
+  return m;
+}
+
+const Adjacency& ChainMailDeformer::adjacency() const
+{
+  std::lock_guard<std::mutex> lock(caller_adjacency_mutex());
+  if (!caller_adjacency_)
+  {
+    // The internal rows keep each caller row's order: mapping back gives the input.
+    auto adj = std::make_shared<Adjacency>();
+    const std::size_t n = nodes_.size();
+    adj->offsets.assign(n + 1, 0);
+    for (std::size_t v = 0; v < n; ++v)
+    {
+      const std::size_t i = inner(index_t(v));
+      adj->offsets[v + 1] = adj->offsets[v] + std::int64_t(offsets_[i + 1] - offsets_[i]);
+    }
+    adj->neighbors.resize(neighbors_.size());
+    for (std::size_t v = 0; v < n; ++v)
+    {
+      const std::size_t i = inner(index_t(v));
+      std::int64_t k = adj->offsets[v];
+      for (std::uint32_t e = offsets_[i]; e < offsets_[i + 1]; ++e)
+        adj->neighbors[std::size_t(k++)] = outer_of_[std::size_t(neighbors_[e])];
+    }
+    caller_adjacency_ = std::move(adj);
+  }
+  return *caller_adjacency_;
+}
+
+std::size_t ChainMailDeformer::caller_adjacency_bytes() const
+{
+  std::lock_guard<std::mutex> lock(caller_adjacency_mutex());
+  if (!caller_adjacency_)
+    return 0;
+  return caller_adjacency_->offsets.capacity() * sizeof(std::int64_t) +
+         caller_adjacency_->neighbors.capacity() * sizeof(index_t);
+}
+
 std::size_t ChainMailDeformer::memory_bytes() const
 {
   return nodes_.capacity() * sizeof(Node) + slot_.capacity() * sizeof(index_t) +
-         malleability_.capacity() * sizeof(float) + distinct_.capacity() * sizeof(float) +
-         rank_params_.capacity() * sizeof(RankParams) + pinned_.capacity() +
-         pinned_inner_.capacity() + committed_.capacity() * sizeof(Eigen::Vector3d) +
+         distinct_.capacity() * sizeof(float) + rank_params_.capacity() * sizeof(RankParams) +
+         pinned_.capacity() + pinned_inner_.capacity() +
+         committed_.capacity() * sizeof(Eigen::Vector3d) +
          (moved_.capacity() + previously_moved_.capacity()) * sizeof(index_t) +
          moved_rec_.capacity() * sizeof(MovedRecord) +
          (inner_of_.capacity() + outer_of_.capacity()) * sizeof(index_t) +
-         adj_.offsets.capacity() * sizeof(std::int64_t) +
-         adj_.neighbors.capacity() * sizeof(index_t) + offsets_.capacity() * sizeof(std::uint32_t) +
+         caller_adjacency_bytes() + offsets_.capacity() * sizeof(std::uint32_t) +
          neighbors_.capacity() * sizeof(index_t) + buckets_.memory_bytes();
 }
 

@@ -397,3 +397,36 @@ TEST(ChainMailReference, PinsCommitsSetRestAndErrorsMatch)
     EXPECT_FLOAT_EQ(d.malleability(5), 0.25f);
   }
 }
+
+TEST(ChainMailReference, CallerIdsAdjacencyAndMalleabilityReadBackAsGiven)
+{
+  // The deformer renumbers vertices internally; everything public is in the caller's ids.
+  auto mesh = jittered(geoshaping::testing::triangle_grid(23, 17, 1.5), 5, 0.4);
+  std::vector<float> m(std::size_t(mesh.size()));
+  for (index_t v = 0; v < mesh.size(); ++v)
+    m[v] = float((v * 7919) % 101) / 100.0f;
+  ChainMailDeformer d;
+  d.set_mesh(mesh.xyz.data(), mesh.size(), mesh.adjacency);
+  d.set_malleability(m.data());
+  EXPECT_EQ(d.adjacency().offsets, mesh.adjacency.offsets);
+  EXPECT_EQ(d.adjacency().neighbors, mesh.adjacency.neighbors);
+  for (index_t v = 0; v < d.size(); ++v)
+  {
+    EXPECT_EQ(d.malleability(v), m[v]);
+    const Eigen::Vector3d p(mesh.xyz[3 * v], mesh.xyz[3 * v + 1], mesh.xyz[3 * v + 2]);
+    EXPECT_EQ(d.position(v), d.origin() + (p - d.origin()));
+    EXPECT_FALSE(d.moved_this_frame(v));
+    EXPECT_TRUE(d.displacement(v).isZero(0.0));
+  }
+  ASSERT_TRUE(d.deform(40, { 0.0, 0.0, 6.0 }).ok);
+  EXPECT_EQ(d.moved().front(), 40);
+  EXPECT_EQ(d.sponsor(40), -1);
+  EXPECT_EQ(d.displacement(40), Eigen::Vector3d(0.0, 0.0, 6.0));
+  // A copy is independent and answers the same.
+  const ChainMailDeformer copy = d;
+  EXPECT_EQ(copy.moved(), d.moved());
+  EXPECT_EQ(&copy.adjacency() == &d.adjacency(), true); // shared, immutable
+  d.set_mesh(mesh.xyz.data(), mesh.size(), geoshaping::testing::chain(mesh.size(), 1.0).adjacency);
+  EXPECT_NE(copy.adjacency().neighbors, d.adjacency().neighbors);
+  EXPECT_EQ(copy.adjacency().neighbors, mesh.adjacency.neighbors);
+}

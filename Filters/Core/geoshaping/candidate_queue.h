@@ -120,6 +120,20 @@ public:
   static constexpr bool needs_violation = false;
   static constexpr bool can_peek = true;
   static constexpr index_t chunk_size = 62; // a chunk is 512 bytes
+  BucketFifoPriorityQueue() = default;
+  // Copies keep the ranks, not the queued candidates or the pool (scratch of a frame).
+  BucketFifoPriorityQueue(const BucketFifoPriorityQueue& o)
+  {
+    reset_ranks(index_t(o.head_.size()));
+  }
+  BucketFifoPriorityQueue& operator=(const BucketFifoPriorityQueue& o)
+  {
+    if (this != &o)
+      reset_ranks(index_t(o.head_.size()));
+    return *this;
+  }
+  BucketFifoPriorityQueue(BucketFifoPriorityQueue&&) = default;
+  BucketFifoPriorityQueue& operator=(BucketFifoPriorityQueue&&) = default;
   void reset_ranks(index_t num_ranks);
   void push(Candidate c, index_t rank, double)
   {

@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -51,7 +53,9 @@ public:
   // becomes the local origin. Resets malleability to `default_malleability`, clears pins.
   void set_mesh(const double* xyz, index_t n, Adjacency adjacency);
   index_t size() const { return index_t(nodes_.size()); }
-  const Adjacency& adjacency() const { return adj_; }
+  // The adjacency given to set_mesh. The deformer keeps only its own renumbered copy;
+  // this one is rebuilt from it on first use and cached until the next set_mesh.
+  const Adjacency& adjacency() const;
 
   // Per-vertex malleability. Values are clamped to [0, 1]; NaN is treated as 0 (rigid:
   // the vertex keeps its shape rather than producing a NaN). Returns the number of
@@ -59,7 +63,7 @@ public:
   std::size_t set_malleability(const float* m);
   std::size_t set_malleability(const double* m);
   void set_uniform_malleability(double m);
-  float malleability(index_t v) const { return malleability_[std::size_t(v)]; }
+  float malleability(index_t v) const { return distinct_[std::size_t(nodes_[inner(v)].rank)]; }
 
   // Optional mask: non-zero = pinned. Pass nullptr to clear.
   void set_pinned(const std::uint8_t* mask);
@@ -128,7 +132,10 @@ public:
 private:
   template<class Queue>
   void propagate(Queue& queue, index_t grasp, FrameResult& result);
-  void rebuild_ranks();
+  void rebuild_ranks(const std::vector<float>& values);
+  void finish_ranks();
+  std::size_t caller_adjacency_bytes() const;
+  static std::mutex& caller_adjacency_mutex();
   void rebuild_rank_params();
   template<class T>
   std::size_t assign_malleability(const T* m);
@@ -158,16 +165,15 @@ private:
     double stretch1, compression1, shear;
   };
 
-  Adjacency adj_;                      // the caller's, as given
+  mutable std::shared_ptr<const Adjacency> caller_adjacency_; // built by adjacency()
   std::vector<std::uint32_t> offsets_; // internal CSR: rows in internal order, each row's
   std::vector<index_t> neighbors_;     // neighbours in the caller's order, internal ids
   std::vector<index_t> inner_of_;      // caller id -> internal id
   std::vector<index_t> outer_of_;      // internal id -> caller id
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
-  std::vector<Node> nodes_;         // by internal id
-  std::vector<index_t> slot_;       // by internal id: slot when moved this frame
-  std::vector<float> malleability_; // by caller id
-  std::vector<float> distinct_;     // the sorted distinct malleability values (rank -> value)
+  std::vector<Node> nodes_;     // by internal id
+  std::vector<index_t> slot_;   // by internal id: slot when moved this frame
+  std::vector<float> distinct_; // the sorted distinct malleability values (rank -> value)
   std::vector<RankParams> rank_params_;
   index_t num_ranks_ = 1;
   std::vector<std::uint8_t> pinned_;       // by caller id; empty when none
