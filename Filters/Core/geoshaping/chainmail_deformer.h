@@ -44,8 +44,11 @@ struct FrameResult
 // to a local origin, so UTM-sized coordinates lose nothing and a rigid region's
 // displacement is bit-identical to its sponsor's.
 //
-// A frame costs time proportional to the vertices moved now plus those moved last
-// frame (only those are reset), never to the mesh size.
+// A frame costs time proportional to the vertices it reaches, never to the mesh size
+// (the reset is a frame counter). Internally the vertices are renumbered once, in
+// set_mesh, for memory locality (docs/deformer.md, "Data layout and speed"); every
+// public method takes and returns the caller's ids. Before the first frame no vertex
+// counts as moved.
 class ChainMailDeformer
 {
 public:
