@@ -37,21 +37,21 @@ bool parse_queue_name(const char* name, QueueKind& kind)
 
 void BucketFifoPriorityQueue::reset_ranks(index_t num_ranks)
 {
-  head_.assign(std::size_t(num_ranks), -1);
-  tail_.assign(std::size_t(num_ranks), -1);
+  head_.assign(std::size_t(num_ranks), nullptr);
+  tail_.assign(std::size_t(num_ranks), nullptr);
+  used_.clear();
   clear();
 }
 
 void BucketFifoPriorityQueue::clear()
 {
-  // Only buckets still listed as active can be non-empty.
+  for (index_t rank : used_)
+    head_[std::size_t(rank)] = tail_[std::size_t(rank)] = nullptr;
+  used_.clear();
   while (!active_.empty())
-  {
-    head_[active_.top()] = -1;
-    tail_[active_.top()] = -1;
     active_.pop();
-  }
-  pool_.clear();
+  front_ = nullptr;
+  used_chunks_ = 0;
 }
 
 } // namespace geoshaping

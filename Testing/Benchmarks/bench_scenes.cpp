@@ -37,10 +37,17 @@ double pull_for_count(ChainMailDeformer& d, index_t grasp, std::size_t target)
   return (target - at_lo < at_hi - target) ? lo : hi;
 }
 
-std::size_t bfs_floor(const ChainMailDeformer& d, index_t grasp, std::vector<std::uint32_t>& mark,
-  std::uint32_t stamp, std::vector<index_t>& queue)
+std::vector<std::uint8_t> moved_mask(const ChainMailDeformer& d)
 {
-  const Adjacency& adj = d.adjacency();
+  std::vector<std::uint8_t> mask(std::size_t(d.size()), 0);
+  for (index_t v : d.moved())
+    mask[std::size_t(v)] = 1;
+  return mask;
+}
+
+std::size_t bfs_floor(const Adjacency& adj, index_t grasp, const std::vector<std::uint8_t>& region,
+  std::vector<std::uint32_t>& mark, std::uint32_t stamp, std::vector<index_t>& queue)
+{
   queue.clear();
   queue.push_back(grasp);
   mark[grasp] = stamp;
@@ -48,7 +55,7 @@ std::size_t bfs_floor(const ChainMailDeformer& d, index_t grasp, std::vector<std
   {
     const index_t v = queue[head];
     for (const index_t* n = adj.begin(v); n != adj.end(v); ++n)
-      if (mark[*n] != stamp && d.moved_this_frame(*n))
+      if (mark[*n] != stamp && region[*n])
       {
         mark[*n] = stamp;
         queue.push_back(*n);

@@ -15,9 +15,14 @@ geoshaping::testing::Mesh painted_grid(index_t n, std::vector<float>& malleabili
 // number of vertices closest to `target` (bisection on the pull); returns the pull.
 double pull_for_count(ChainMailDeformer& d, index_t grasp, std::size_t target);
 
-// A bare breadth-first traversal over the vertices moved in the deformer's last frame:
-// the floor any propagation over that region must pay. Returns vertices visited.
-std::size_t bfs_floor(const ChainMailDeformer& d, index_t grasp, std::vector<std::uint32_t>& mark,
-  std::uint32_t stamp, std::vector<index_t>& queue);
+// The vertices moved by the deformer's last frame as a mask by vertex id (1 = moved).
+std::vector<std::uint8_t> moved_mask(const ChainMailDeformer& d);
+
+// A bare breadth-first traversal from the grasp over the vertices of `region` (a
+// moved_mask), through the caller's adjacency: the floor any propagation over that
+// region must pay. It reads nothing of the deformer, so it measures the same work
+// whatever the deformer's internal layout. Returns vertices visited.
+std::size_t bfs_floor(const Adjacency& adj, index_t grasp, const std::vector<std::uint8_t>& region,
+  std::vector<std::uint32_t>& mark, std::uint32_t stamp, std::vector<index_t>& queue);
 
 } // namespace geoshaping::bench

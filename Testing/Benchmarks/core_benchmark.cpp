@@ -67,13 +67,14 @@ void BM_BfsFloor(benchmark::State& state)
   Scene& s = scene(side_for(target), target);
   s.deformer->set_queue(QueueKind::fifo_priority);
   s.deformer->deform(s.grasp, { 0.0, 0.0, s.pull });
+  const std::vector<std::uint8_t> region = bench::moved_mask(*s.deformer);
   std::vector<std::uint32_t> mark(std::size_t(s.deformer->size()), 0);
   std::vector<index_t> queue;
   std::uint32_t stamp = 0;
   std::size_t visited = 0;
   for (auto _ : state)
   {
-    visited = bench::bfs_floor(*s.deformer, s.grasp, mark, ++stamp, queue);
+    visited = bench::bfs_floor(s.deformer->adjacency(), s.grasp, region, mark, ++stamp, queue);
     benchmark::DoNotOptimize(visited);
   }
   state.counters["displaced"] = double(visited);

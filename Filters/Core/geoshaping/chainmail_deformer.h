@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -42,16 +44,21 @@ struct FrameResult
 // to a local origin, so UTM-sized coordinates lose nothing and a rigid region's
 // displacement is bit-identical to its sponsor's.
 //
-// A frame costs time proportional to the vertices moved now plus those moved last
-// frame (only those are reset), never to the mesh size.
+// A frame costs time proportional to the vertices it reaches, never to the mesh size
+// (the reset is a frame counter). Internally the vertices are renumbered once, in
+// set_mesh, for memory locality (docs/deformer.md, "Data layout and speed"); every
+// public method takes and returns the caller's ids. Before the first frame no vertex
+// counts as moved.
 class ChainMailDeformer
 {
 public:
   // Rest positions, `n` xyz triples in any frame; the centre of their bounding box
   // becomes the local origin. Resets malleability to `default_malleability`, clears pins.
   void set_mesh(const double* xyz, index_t n, Adjacency adjacency);
-  index_t size() const { return index_t(state_.size()); }
-  const Adjacency& adjacency() const { return adj_; }
+  index_t size() const { return index_t(nodes_.size()); }
+  // The adjacency given to set_mesh. The deformer keeps only its own renumbered copy;
+  // this one is rebuilt from it on first use and cached until the next set_mesh.
+  const Adjacency& adjacency() const;
 
   // Per-vertex malleability. Values are clamped to [0, 1]; NaN is treated as 0 (rigid:
   // the vertex keeps its shape rather than producing a NaN). Returns the number of
@@ -59,13 +66,13 @@ public:
   std::size_t set_malleability(const float* m);
   std::size_t set_malleability(const double* m);
   void set_uniform_malleability(double m);
-  float malleability(index_t v) const { return tags_[std::size_t(v)].malleability; }
+  float malleability(index_t v) const { return distinct_[std::size_t(nodes_[inner(v)].rank)]; }
 
   // Optional mask: non-zero = pinned. Pass nullptr to clear.
   void set_pinned(const std::uint8_t* mask);
   bool pinned(index_t v) const { return !pinned_.empty() && pinned_[std::size_t(v)] != 0; }
 
-  void set_transfer_function(const TransferFunction& tf) { transfer_ = tf; }
+  void set_transfer_function(const TransferFunction& tf);
   const TransferFunction& transfer_function() const { return transfer_; }
   void set_queue(QueueKind q) { queue_kind_ = q; }
   QueueKind queue() const { return queue_kind_; }
@@ -93,7 +100,8 @@ public:
   // committed_offset(v) + displacement(v): where v is now relative to its input point.
   Eigen::Vector3d offset_from_input(index_t v) const
   {
-    return committed_.empty() ? displacement(v) : Eigen::Vector3d(committed_[std::size_t(v)] + displacement(v));
+    return committed_.empty() ? displacement(v)
+                              : Eigen::Vector3d(committed_[std::size_t(v)] + displacement(v));
   }
 
   // Vertices displaced by the last frame, in the order they moved (grasp first).
@@ -102,12 +110,22 @@ public:
   // mirroring positions can restore them too.
   const std::vector<index_t>& previously_moved() const { return previously_moved_; }
   // Sponsor of a vertex moved in the last frame (-1 for the grasp); undefined otherwise.
-  index_t sponsor(index_t v) const { return tags_[std::size_t(v)].sponsor; }
-  bool moved_this_frame(index_t v) const { return tags_[std::size_t(v)].stamp == frame_; }
+  index_t sponsor(index_t v) const
+  {
+    const std::size_t i = inner(v);
+    const index_t s =
+      nodes_[i].stamp == frame_ ? moved_rec_[std::size_t(slot_[i])].sponsor_slot : -1;
+    return s < 0 ? -1 : moved_[std::size_t(s)];
+  }
+  bool moved_this_frame(index_t v) const { return nodes_[inner(v)].stamp == frame_; }
 
   const Eigen::Vector3d& origin() const { return origin_; }
-  const Eigen::Vector3d& rest_local(index_t v) const { return state_[std::size_t(v)].rest; }
-  const Eigen::Vector3d& displacement(index_t v) const { return state_[std::size_t(v)].disp; }
+  const Eigen::Vector3d& rest_local(index_t v) const { return nodes_[inner(v)].rest; }
+  const Eigen::Vector3d& displacement(index_t v) const
+  {
+    const std::size_t i = inner(v);
+    return nodes_[i].stamp == frame_ ? moved_rec_[std::size_t(slot_[i])].disp : zero_;
+  }
   Eigen::Vector3d position(index_t v) const { return origin_ + rest_local(v) + displacement(v); }
   ChainMailParams params(index_t v) const { return transfer_(malleability(v)); }
 
@@ -115,38 +133,59 @@ public:
   std::size_t memory_bytes() const;
 
 private:
-  template <class Queue>
+  template<class Queue>
   void propagate(Queue& queue, index_t grasp, FrameResult& result);
-  void rebuild_ranks();
-  template <class T>
+  void rebuild_ranks(const std::vector<float>& values);
+  void finish_ranks();
+  std::size_t caller_adjacency_bytes() const;
+  static std::mutex& caller_adjacency_mutex();
+  void rebuild_rank_params();
+  template<class T>
   std::size_t assign_malleability(const T* m);
+  std::size_t inner(index_t v) const { return std::size_t(inner_of_[std::size_t(v)]); }
 
-  // Per-vertex data is laid out for the propagation's random access: what a candidate
-  // examination reads sits in one record (rest offset and displacement), and the
-  // bookkeeping (stamp, queue rank, malleability, sponsor) in another.
-  struct VertexState
+  // Internally vertices are renumbered once, in set_mesh, along a space-filling (Morton)
+  // curve of their rest positions, so the vertices a frame touches lie close together
+  // in memory; every public method takes and returns the caller's ids. The propagation
+  // reads per candidate one 32-byte record (rest position, frame stamp, malleability
+  // rank); what only moved vertices have (displacement, sponsor) lives in `moved_rec_`,
+  // indexed by the order of moving (the "slot"), which a frame fills sequentially.
+  struct alignas(32) Node
   {
     Eigen::Vector3d rest; // relative to origin_
-    Eigen::Vector3d disp; // zero except for moved_
+    std::uint32_t stamp;  // == frame_ when moved this frame
+    index_t rank;         // index of the malleability among the sorted distinct values
   };
-  struct VertexTag
+  struct MovedRecord
   {
-    std::uint32_t stamp;   // == frame_ when moved this frame
-    index_t rank;          // index of the malleability among the sorted distinct values
-    float malleability;
-    index_t sponsor;       // valid when moved this frame
+    Eigen::Vector3d disp; // this frame's displacement (zeroed by commit())
+    index_t vertex;       // internal id
+    index_t sponsor_slot; // slot of the sponsor, -1 for the grasp
+  };
+  // Per malleability rank, the transfer function's (t - 1, k - 1, h), evaluated once.
+  struct RankParams
+  {
+    double stretch1, compression1, shear;
   };
 
-  Adjacency adj_;
+  mutable std::shared_ptr<const Adjacency> caller_adjacency_; // built by adjacency()
+  std::vector<std::uint32_t> offsets_; // internal CSR: rows in internal order, each row's
+  std::vector<index_t> neighbors_;     // neighbours in the caller's order, internal ids
+  std::vector<index_t> inner_of_;      // caller id -> internal id
+  std::vector<index_t> outer_of_;      // internal id -> caller id
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
-  std::vector<VertexState> state_;
-  std::vector<VertexTag> tags_;
+  std::vector<Node> nodes_;     // by internal id
+  std::vector<index_t> slot_;   // by internal id: slot when moved this frame
+  std::vector<float> distinct_; // the sorted distinct malleability values (rank -> value)
+  std::vector<RankParams> rank_params_;
   index_t num_ranks_ = 1;
-  std::vector<std::uint8_t> pinned_;
-  std::vector<Eigen::Vector3d> committed_; // empty until the first edit; else dense
+  std::vector<std::uint8_t> pinned_;       // by caller id; empty when none
+  std::vector<std::uint8_t> pinned_inner_; // by internal id; empty when none
+  std::vector<Eigen::Vector3d> committed_; // by caller id; empty until the first edit
   Eigen::Vector3d zero_ = Eigen::Vector3d::Zero();
   std::uint32_t frame_ = 0;
-  std::vector<index_t> moved_, previously_moved_;
+  std::vector<index_t> moved_, previously_moved_; // caller ids
+  std::vector<MovedRecord> moved_rec_;            // by slot
 
   TransferFunction transfer_;
   QueueKind queue_kind_ = QueueKind::fifo_priority;
