@@ -78,7 +78,10 @@ void pqHapticsTestHook::poll()
     }
     const bool mouse = this->Trace == "mouse";
     this->Dock->setHand(0, mouse ? pqHapticsInteractor::Mouse : pqHapticsInteractor::ReplayFile,
-      mouse ? QString() : this->Trace, geoshaping::interactor::Tool::deform);
+      mouse ? QString() : this->Trace,
+      qEnvironmentVariable("GEOSHAPING_HAPTICS_TOOL1") == "hold_and_turn"
+        ? geoshaping::interactor::Tool::hold_and_turn
+        : geoshaping::interactor::Tool::deform);
     if (this->Trace2.isEmpty())
     {
       this->Dock->setHand(
@@ -264,6 +267,14 @@ void pqHapticsTestHook::writeResults()
   out << "recorded_samples = " << f.recordedSamples[0] << "\n";
   out << "brush_value = " << interactor->brush().value << "\n";
   out << "brush_radius = " << interactor->brush().radius << "\n";
+  {
+    const Eigen::Matrix4d m = this->Dock->interactor()->pipeline().objectMatrix();
+    out << "object_matrix =";
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        out << " " << QString::number(m(i, j), 'g', 17);
+    out << "\n";
+  }
   this->writePaint(out);
   geoshaping::haptics::ForceResult force;
   if (interactor->forceFromLastScene(0, force))

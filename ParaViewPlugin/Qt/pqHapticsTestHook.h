@@ -4,6 +4,7 @@
 //                                           started once a ChainMailDeformation exists;
 //                                           "mouse": hand 1 is the mouse, and the hook
 //                                           drags it up on the surface (Deform);
+//   GEOSHAPING_HAPTICS_TOOL1=hold_and_turn  hand 1 holds and turns the object instead;
 //   GEOSHAPING_HAPTICS_REPLAY2=<trace>      hand 2 replays this trace with the Paint tool
 //                                           (two hands at once);
 //   GEOSHAPING_HAPTICS_TEST_OUTPUT=<prefix> when the replay is over, write <prefix>.png

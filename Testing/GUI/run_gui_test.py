@@ -129,6 +129,50 @@ def check_bimanual(results):
     assert int(results["point_dab_values"]) > 0 and int(results["dab_values"]) == 0, results
 
 
+# The hold-and-turn test: hand 1 presses, then moves by TURN_MOVE (device metres) while
+# turning 30 degrees about the device's y axis (the screen's up), and releases.
+TURN_PRESS = [-0.01, 0.0, 0.01]
+TURN_MOVE = [0.01, 0.005, 0.0]
+TURN_DEGREES = 30.0
+
+
+def write_turn_trace(path):
+    half = math.radians(TURN_DEGREES) / 2
+    with open(path, "w") as f:
+        f.write("# t x y z qw qx qy qz buttons: hold and turn the horizon\n")
+        for k in range(int(4.0 * 60) + 1):
+            t = k / 60.0
+            a = min(1.0, max(0.0, t - 1.5))  # still while pressed 1.0-1.5 s, then 1 s of motion
+            p = [c + a * m for c, m in zip(TURN_PRESS, TURN_MOVE)]
+            b = 1 if 1.0 <= t < 3.5 else 0
+            f.write("%.6f %.9f %.9f %.9f %.12f 0 %.12f 0 %d\n"
+                    % (t, p[0], p[1], p[2], math.cos(a * half), math.sin(a * half), b))
+
+
+def check_turn(results):
+    """The horizon's representation matrix is the stylus's motion since the press, in the
+    scene: rotation A R_y(30) A^T about the stylus tip at the press, plus the drag."""
+    x, y, z, scale = device_axes()
+    f = CAMERA["focal_point"]
+    A = [[x[i], y[i], z[i]] for i in range(3)]  # columns: the screen axes in the scene
+    c, s = math.cos(math.radians(TURN_DEGREES)), math.sin(math.radians(TURN_DEGREES))
+    Ry = [[c, 0, s], [0, 1, 0], [-s, 0, c]]
+
+    def mul(P, Q):
+        return [[sum(P[i][k] * Q[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+    At = [[A[j][i] for j in range(3)] for i in range(3)]
+    R = mul(mul(A, Ry), At)
+    pivot = [f[i] + scale * sum(A[i][k] * TURN_PRESS[k] for k in range(3)) for i in range(3)]
+    move = [scale * sum(A[i][k] * TURN_MOVE[k] for k in range(3)) for i in range(3)]
+    t = [pivot[i] + move[i] - sum(R[i][k] * pivot[k] for k in range(3)) for i in range(3)]
+    got = [float(v) for v in results["object_matrix"].split()]
+    expected = [R[0][0], R[0][1], R[0][2], t[0], R[1][0], R[1][1], R[1][2], t[1],
+                R[2][0], R[2][1], R[2][2], t[2], 0, 0, 0, 1]
+    print("object matrix", got, "expected", expected)
+    assert all(abs(a - b) < 1e-6 * (1 + abs(b)) for a, b in zip(got, expected)), (got, expected)
+    assert int(results["moved_points"]) == 0, "holding and turning must not deform"
+
+
 def check_touch(results, normal):
     """At rest 2 mm into the plateau, the force asked of the servo loop is the penalty
     contact k_c d = 800 N/m * 2 mm = 1.6 N along the surface's normal (device frame)."""
@@ -225,6 +269,10 @@ def main():
     if mode == "touch":
         env["GEOSHAPING_HAPTICS_REPLAY"] = out + ".trace"
         normal = write_touch_trace(out + ".trace")
+    if mode == "turn":
+        env["GEOSHAPING_HAPTICS_REPLAY"] = out + ".trace"
+        env["GEOSHAPING_HAPTICS_TOOL1"] = "hold_and_turn"
+        write_turn_trace(out + ".trace")
     if mode == "bimanual":
         env["GEOSHAPING_HAPTICS_REPLAY2"] = out + ".hand2.trace"
         write_paint_trace(out + ".hand2.trace")
@@ -239,6 +287,11 @@ def main():
     assert results["started"] == "1" and results["timed_out"] == "0", results
     assert results["dock_visible"] == "1" and results["dock_title"] == "Haptics", results
     assert int(results["frames"]) >= 5, "too few interactor frames"
+    if mode == "turn":
+        check_turn(results)
+        check_recording(results, out, None)
+        print("GUI hold-and-turn test passed")
+        return
     if mode == "touch":
         check_touch(results, normal)
         check_recording(results, out, None)
