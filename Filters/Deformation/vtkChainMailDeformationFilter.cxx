@@ -7,8 +7,7 @@ vtkStandardNewMacro(vtkChainMailDeformationFilter);
 vtkChainMailDeformationFilter::vtkChainMailDeformationFilter()
   : Internals(new vtkInternals)
 {
-  this->SetInputArrayToProcess(
-    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Malleability");
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Malleability");
 }
 
 vtkChainMailDeformationFilter::~vtkChainMailDeformationFilter() = default;
@@ -82,6 +81,7 @@ int vtkChainMailDeformationFilter::RequestData(
   this->NumberOfExaminedCandidates = 0;
   this->LastDeformationMilliseconds = 0.0;
   this->LastGraspPointId = -1;
+  this->LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
   this->NumberOfRefinementSweeps = 0;
   this->NumberOfRefinedPoints = 0;
   this->LastRefinementMilliseconds = 0.0;
@@ -134,8 +134,8 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GraspMode: " << this->GraspMode << "\n";
   os << indent << "GraspPosition: " << this->GraspPosition[0] << " " << this->GraspPosition[1]
      << " " << this->GraspPosition[2] << "\n";
-  os << indent << "Displacement: " << this->Displacement[0] << " " << this->Displacement[1]
-     << " " << this->Displacement[2] << "\n";
+  os << indent << "Displacement: " << this->Displacement[0] << " " << this->Displacement[1] << " "
+     << this->Displacement[2] << "\n";
   os << indent << "DefaultMalleability: " << this->DefaultMalleability << "\n";
   os << indent << "CandidateQueue: "
      << geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) << "\n";

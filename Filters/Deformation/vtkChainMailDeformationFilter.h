@@ -51,12 +51,15 @@
 #include "GeoShapingFiltersDeformationModule.h" // For export macro
 #include "vtkPointSetAlgorithm.h"
 
+#include <limits> // For quiet_NaN
+
 #include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
 
 class vtkPiecewiseFunction;
 
-class GEOSHAPINGFILTERSDEFORMATION_EXPORT vtkChainMailDeformationFilter : public vtkPointSetAlgorithm
+class GEOSHAPINGFILTERSDEFORMATION_EXPORT vtkChainMailDeformationFilter
+  : public vtkPointSetAlgorithm
 {
 public:
   static vtkChainMailDeformationFilter* New();
@@ -182,11 +185,15 @@ public:
 
   ///@{
   /// Figures of the last update: displaced vertices, candidates examined, the
-  /// deformation time in milliseconds (core only), and the grasped vertex.
+  /// deformation time in milliseconds (core only), the grasped vertex and the
+  /// malleability the deformation used there (NaN without a grasp; a NaN or missing
+  /// value reads as the deformer took it: NaN counts as rigid, 0). A haptic client reads
+  /// the last one for the grasp's coupling stiffness, also against a remote server.
   vtkGetMacro(NumberOfDisplacedPoints, vtkIdType);
   vtkGetMacro(NumberOfExaminedCandidates, vtkIdType);
   vtkGetMacro(LastDeformationMilliseconds, double);
   vtkGetMacro(LastGraspPointId, vtkIdType);
+  vtkGetMacro(LastGraspMalleability, double);
   ///@}
 
   ///@{
@@ -253,6 +260,7 @@ protected:
   vtkIdType NumberOfExaminedCandidates = 0;
   double LastDeformationMilliseconds = 0.0;
   vtkIdType LastGraspPointId = -1;
+  double LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
   int NumberOfRefinementSweeps = 0;
   vtkIdType NumberOfRefinedPoints = 0;
   double LastRefinementMilliseconds = 0.0;

@@ -14,8 +14,8 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
     in.Projector = std::make_unique<geoshaping::LinkProjector>(in.Links);
   }
   const auto start = std::chrono::steady_clock::now();
-  const geoshaping::ProjectionReport report =
-    geoshaping::refine_links(*in.Projector, in.Deformer, geoshaping::index_t(grasp), this->RefinementIterations);
+  const geoshaping::ProjectionReport report = geoshaping::refine_links(
+    *in.Projector, in.Deformer, geoshaping::index_t(grasp), this->RefinementIterations);
   this->LastRefinementMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfRefinementSweeps = report.iterations;
@@ -57,8 +57,8 @@ int vtkChainMailDeformationFilter::GetNumberOfRedoableEdits()
 {
   const vtkInternals& in = *this->Internals;
   return in.History.size() > in.EditRecords.size()
-    ? static_cast<int>(in.History.size() - in.EditRecords.size())
-    : 0;
+           ? static_cast<int>(in.History.size() - in.EditRecords.size())
+           : 0;
 }
 
 void vtkChainMailDeformationFilter::CommitEdit()
@@ -87,6 +87,7 @@ void vtkChainMailDeformationFilter::CommitEdit()
   in.Projector.reset();
   // Released: the next update shows the committed shape, not the grasp applied again.
   this->LastGraspPointId = -1;
+  this->LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
   this->GraspPointId = -1;
   std::fill(this->Displacement, this->Displacement + 3, 0.0);
   this->Modified();

@@ -10,8 +10,8 @@
 #include "vtkGeoShapingAdapter.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkInformationStringKey.h"
+#include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -30,7 +30,6 @@
 #include <initializer_list>
 #include <string>
 #include <vector>
-
 
 struct vtkChainMailDeformationFilter::vtkInternals
 {
@@ -98,13 +97,14 @@ using IdLists = std::initializer_list<const IdList*>;
 inline bool SameCurve(const geoshaping::Curve& a, const geoshaping::Curve& b)
 {
   return a.at_rigid == b.at_rigid && a.at_soft == b.at_soft && a.shape == b.shape &&
-    a.threshold == b.threshold && a.points == b.points;
+         a.threshold == b.threshold && a.points == b.points;
 }
 
-inline bool SameTransfer(const geoshaping::TransferFunction& a, const geoshaping::TransferFunction& b)
+inline bool SameTransfer(
+  const geoshaping::TransferFunction& a, const geoshaping::TransferFunction& b)
 {
   return SameCurve(a.stretch, b.stretch) && SameCurve(a.compression, b.compression) &&
-    SameCurve(a.shear, b.shear) && a.exact_rigid_at_zero == b.exact_rigid_at_zero;
+         SameCurve(a.shear, b.shear) && a.exact_rigid_at_zero == b.exact_rigid_at_zero;
 }
 
 inline geoshaping::EditRecipe Recipe(vtkChainMailDeformationFilter* self, vtkIdType grasp)
@@ -122,15 +122,15 @@ inline geoshaping::EditRecipe Recipe(vtkChainMailDeformationFilter* self, vtkIdT
   return r;
 }
 
-inline geoshaping::Curve MakeCurve(const double range[2], int shape, double threshold,
-  const geoshaping::Curve& userPoints)
+inline geoshaping::Curve MakeCurve(
+  const double range[2], int shape, double threshold, const geoshaping::Curve& userPoints)
 {
   geoshaping::Curve c;
   c.at_rigid = range[0];
   c.at_soft = range[1];
   c.threshold = threshold;
   c.shape = shape == vtkChainMailDeformationFilter::SMOOTH ? geoshaping::CurveShape::smooth
-    : shape == vtkChainMailDeformationFilter::STEP         ? geoshaping::CurveShape::step
+            : shape == vtkChainMailDeformationFilter::STEP ? geoshaping::CurveShape::step
                                                            : geoshaping::CurveShape::linear;
   if (!userPoints.points.empty())
   {

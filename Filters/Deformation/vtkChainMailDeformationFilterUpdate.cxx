@@ -261,6 +261,8 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input)
       this->NumberOfDisplacedPoints = vtkIdType(r.moved);
       this->NumberOfExaminedCandidates = vtkIdType(r.examined);
       this->LastGraspPointId = r.ok ? grasp : -1;
+      this->LastGraspMalleability =
+        r.ok ? double(in.Deformer.malleability(grasp)) : std::numeric_limits<double>::quiet_NaN();
       in.FrameRecipe = Recipe(this, grasp);
       if (r.ok && this->RefinementIterations > 0)
       {

@@ -10,7 +10,7 @@
 #define vtkGeoShapingAdapter_h
 
 #include "GeoShapingFiltersDeformationModule.h" // For export macro
-#include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkSmartPointer.h"                    // For vtkSmartPointer
 #include "vtkType.h"
 
 #include "geoshaping/adjacency.h" // For Adjacency

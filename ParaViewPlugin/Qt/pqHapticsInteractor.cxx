@@ -33,11 +33,12 @@ struct pqHapticsInteractor::Hand
   pqHapticsMouse mouse;
   gi::HandController controller;
   gh::DeviceSnapshot latest;
-  gi::WorkspaceMapping mapping; // frozen while the button is held
-  gh::FreeSide freeSide;        // where the stylus was last out of contact (device frame)
-  gh::SceneSnapshot sent;       // a copy of the last scene published to the servo loop
-  gh::TraceRecorder recorder;   // open when the hand records its stylus
-  double recordedUntil = -1.0;  // t of the last recorded sample
+  gi::WorkspaceMapping mapping;  // frozen while the button is held
+  gh::FreeSide freeSide;         // where the stylus was last out of contact (device frame)
+  gh::SceneSnapshot sent;        // a copy of the last scene published to the servo loop
+  bool stiffnessPending = false; // the grasp's malleability still to read from the server
+  gh::TraceRecorder recorder;    // open when the hand records its stylus
+  double recordedUntil = -1.0;   // t of the last recorded sample
   std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
   Eigen::Vector3d anchor = Eigen::Vector3d::Zero(); // device frame
   double stiffness = 0.0;
@@ -237,7 +238,9 @@ void pqHapticsInteractor::apply(Hand& hand, const gi::HandActions& actions)
     this->Pipeline.grasp(actions.grasp_position);
     Eigen::Vector3d vertex = actions.grasp_position;
     double malleability = 0.5;
-    this->Pipeline.graspedVertex(vertex, malleability);
+    // A builtin session reads the grasped vertex's malleability at once; against a
+    // remote server the filter reports it after its next update (publishScene).
+    hand.stiffnessPending = !this->Pipeline.graspedVertex(vertex, malleability);
     if (hand.device)
     {
       const Eigen::Vector3d world =
@@ -360,6 +363,12 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   scene.valid_for = std::chrono::duration_cast<std::chrono::nanoseconds>(
     std::chrono::duration<double>(3.0 * this->FramePeriodSeconds));
   scene.grasping = hand.controller.held() && hand.controller.tool() == gi::Tool::deform;
+  double malleability = 0.0;
+  if (scene.grasping && hand.stiffnessPending && this->Pipeline.lastGraspMalleability(malleability))
+  {
+    hand.stiffness = gh::coupling_stiffness(malleability, gh::ForceParams(), hand.device->limits());
+    hand.stiffnessPending = false;
+  }
   scene.grasp_anchor = hand.anchor;
   scene.grasp_stiffness = hand.stiffness;
   // Contact: the surfaces near the stylus, in the device frame, each triangle facing the

@@ -545,6 +545,22 @@ bool pqHapticsPipeline::graspedVertex(Eigen::Vector3d& position, double& malleab
   return true;
 }
 
+bool pqHapticsPipeline::lastGraspMalleability(double& malleability) const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (!proxy || !proxy->GetProperty("LastGraspMalleability"))
+  {
+    return false;
+  }
+  proxy->UpdatePropertyInformation();
+  if (vtkSMPropertyHelper(proxy, "LastGraspPointId").GetAsIdType() < 0)
+  {
+    return false;
+  }
+  malleability = vtkSMPropertyHelper(proxy, "LastGraspMalleability").GetAsDouble();
+  return true;
+}
+
 double pqHapticsPipeline::lastDeformationMilliseconds() const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;

@@ -81,6 +81,10 @@ public:
   void contactTriangles(
     const Eigen::Vector3d& world, double radius, bool withShown, std::vector<Eigen::Vector3d>& out);
 
+  // The malleability the filter's last update used at the grasped vertex, read from
+  // the server (works against a remote server); false while there is no grasp yet.
+  bool lastGraspMalleability(double& malleability) const;
+
   double lastDeformationMilliseconds() const;
   long long numberOfDisplacedPoints() const;
 

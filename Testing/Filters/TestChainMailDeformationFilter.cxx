@@ -121,6 +121,29 @@ TEST(ChainMailDeformationFilter, MatchesTheCoreDeformerOnPolyData)
   }
 }
 
+// The malleability the deformation used at the grasp, for a haptic client's coupling
+// stiffness (also read over a remote connection: Python.pvserver_loopback).
+TEST(ChainMailDeformationFilter, ReportsTheMalleabilityAtTheGraspedVertex)
+{
+  auto grid = TriangleGrid(
+    30, 20, 1.0, [](int i, int j) { return (i > 10 && i < 16 && j > 5) ? 0.0 : 0.25 + 0.01 * i; });
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputData(grid);
+  f->Update();
+  EXPECT_TRUE(std::isnan(f->GetLastGraspMalleability())); // no grasp
+  f->SetGraspPointId(5 * 30 + 20);
+  f->SetDisplacement(0.0, 0.0, 3.0);
+  f->Update();
+  EXPECT_EQ(f->GetLastGraspPointId(), 5 * 30 + 20);
+  EXPECT_EQ(f->GetLastGraspMalleability(), double(0.25f + 0.01f * 20)); // the float array's value
+  f->SetGraspPointId(12 * 30 + 13); // in the rigid block
+  f->Update();
+  EXPECT_EQ(f->GetLastGraspMalleability(), 0.0);
+  f->SetGraspPointId(-1);
+  f->Update();
+  EXPECT_TRUE(std::isnan(f->GetLastGraspMalleability()));
+}
+
 TEST(ChainMailDeformationFilter, SparseUpdatesEqualAFreshFilterAndNeverRebuild)
 {
   auto grid = UniformGrid(40, 40, 1.0, 0.6);

@@ -55,15 +55,23 @@ def deformed(remote):
     chain.GraspPointId = 15 * 31 + 15
     chain.Displacement = [1.0, 0.0, 4.0]
     result = points(chain), points(surface)
+    chain.UpdatePropertyInformation()
+    grasped = chain.GetProperty("LastGraspMalleability").GetData()
+    if ranks_now[0] < 2:
+        check(abs(grasped - 0.7) < 1e-6,
+              "the grasp's malleability (0.7) reads back through the proxy (%s)"
+              % ("remote" if remote else "builtin"))
     Delete(chain)
     Delete(surface)
     return result
 
 
+ranks_now = [1]
 builtin, rest = deformed(remote=False)
 check(np.abs(builtin - rest).max() > 1.0, "builtin session deforms")
 
 for ranks in (1, 2):
+    ranks_now[0] = ranks
     proc, port, log = start_server(ranks)
     try:
         Connect("127.0.0.1", port)
