@@ -11,4 +11,4 @@ if [ ! -f "$plugin" ]; then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build "$build" -j2 --target GeoShaping
-xvfb-run -a -s "-screen 0 1280x1024x24" pvbatch Testing/Demo/geoshaping_demo.py --plugin "$plugin" --out "$out"
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" pvbatch Testing/Demo/geoshaping_demo.py --plugin "$plugin" --out "$out"

@@ -276,7 +276,7 @@ def main():
     if mode == "bimanual":
         env["GEOSHAPING_HAPTICS_REPLAY2"] = out + ".hand2.trace"
         write_paint_trace(out + ".hand2.trace")
-    command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24", os.environ["PARAVIEW"],
+    command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24 -noreset", os.environ["PARAVIEW"],
                "--dr", "--script=" + os.environ["GEOSHAPING_GUI_SETUP"]]
     run = subprocess.run(command, env=env, timeout=90, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True)
