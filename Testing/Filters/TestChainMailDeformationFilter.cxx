@@ -28,7 +28,7 @@
 
 namespace
 {
-template <class F>
+template<class F>
 vtkSmartPointer<vtkPolyData> TriangleGrid(
   int nx, int ny, double h, F m, int type = VTK_DOUBLE, double x0 = 0.0, double y0 = 0.0)
 {
@@ -43,31 +43,7 @@ vtkSmartPointer<vtkPolyData> UniformGrid(int nx, int ny, double h, double m)
 // A slab of nx * ny * nz points, each hexahedral block split into 6 tetrahedra.
 vtkSmartPointer<vtkUnstructuredGrid> TetSlab(int nx, int ny, int nz, double h)
 {
-  auto ug = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> pts;
-  pts->SetDataType(VTK_DOUBLE);
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        pts->InsertNextPoint(i * h, j * h, k * h);
-  ug->SetPoints(pts);
-  auto id = [&](int i, int j, int k) { return vtkIdType((k * ny + j) * nx + i); };
-  for (int k = 0; k + 1 < nz; ++k)
-    for (int j = 0; j + 1 < ny; ++j)
-      for (int i = 0; i + 1 < nx; ++i)
-      {
-        const vtkIdType v[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
-          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-          id(i, j + 1, k + 1) };
-        const int tets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
-          { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
-        for (const auto& t : tets)
-        {
-          const vtkIdType ids[4] = { v[t[0]], v[t[1]], v[t[2]], v[t[3]] };
-          ug->InsertNextCell(VTK_TETRA, 4, ids);
-        }
-      }
-  return ug;
+  return geoshaping::testing::TetSlabUnstructuredGrid(nx, ny, nz, h, {});
 }
 
 vtkPointSet* Deform(vtkChainMailDeformationFilter* f, vtkDataObject* input)
@@ -92,8 +68,8 @@ double MaxPointDifference(vtkPointSet* a, vtkPointSet* b)
 
 TEST(ChainMailDeformationFilter, MatchesTheCoreDeformerOnPolyData)
 {
-  auto grid = TriangleGrid(
-    30, 20, 1.0, [](int i, int j) { return (i > 10 && i < 16 && j > 5) ? 0.0 : 0.8; });
+  auto grid =
+    TriangleGrid(30, 20, 1.0, [](int i, int j) { return (i > 10 && i < 16 && j > 5) ? 0.0 : 0.8; });
   vtkNew<vtkChainMailDeformationFilter> f;
   f->SetGraspPointId(5 * 30 + 20);
   f->SetDisplacement(1.0, -2.0, 6.0);
@@ -136,7 +112,7 @@ TEST(ChainMailDeformationFilter, ReportsTheMalleabilityAtTheGraspedVertex)
   f->Update();
   EXPECT_EQ(f->GetLastGraspPointId(), 5 * 30 + 20);
   EXPECT_EQ(f->GetLastGraspMalleability(), double(0.25f + 0.01f * 20)); // the float array's value
-  f->SetGraspPointId(12 * 30 + 13); // in the rigid block
+  f->SetGraspPointId(12 * 30 + 13);                                     // in the rigid block
   f->Update();
   EXPECT_EQ(f->GetLastGraspMalleability(), 0.0);
   f->SetGraspPointId(-1);
@@ -155,8 +131,8 @@ TEST(ChainMailDeformationFilter, SparseUpdatesEqualAFreshFilterAndNeverRebuild)
   {
     f->SetGraspPointId(grasps[k]);
     f->SetDisplacement(moves[k][0], moves[k][1], moves[k][2]);
-    f->SetCandidateQueue(k % 2 ? vtkChainMailDeformationFilter::FIFO
-                               : vtkChainMailDeformationFilter::FIFO_PRIORITY);
+    f->SetCandidateQueue(
+      k % 2 ? vtkChainMailDeformationFilter::FIFO : vtkChainMailDeformationFilter::FIFO_PRIORITY);
     f->Update();
     vtkNew<vtkChainMailDeformationFilter> fresh;
     fresh->SetGraspPointId(grasps[k]);
@@ -312,7 +288,8 @@ TEST(ChainMailDeformationFilter, PiecewiseStretchCurveDrivesTheChainAnalytically
 
 TEST(ChainMailDeformationFilter, OutputPrecisionFollowsVtkConvention)
 {
-  auto grid = TriangleGrid(5, 5, 1.0, [](int, int) { return 0.5; }, VTK_FLOAT);
+  auto grid = TriangleGrid(
+    5, 5, 1.0, [](int, int) { return 0.5; }, VTK_FLOAT);
   vtkNew<vtkChainMailDeformationFilter> f;
   f->SetGraspPointId(12);
   f->SetDisplacement(0, 0, 1);
@@ -403,8 +380,8 @@ namespace
 // leaves links violated there (E_link > 0), which the refinement pass reduces.
 vtkSmartPointer<vtkPolyData> IslandGrid()
 {
-  return TriangleGrid(30, 30, 1.0,
-    [](int i, int j) { return (i >= 12 && i < 20 && j >= 12 && j < 20) ? 0.0 : 0.9; });
+  return TriangleGrid(
+    30, 30, 1.0, [](int i, int j) { return (i >= 12 && i < 20 && j >= 12 && j < 20) ? 0.0 : 0.9; });
 }
 
 // E_link of the filter's output against the grid's own malleability.
@@ -528,8 +505,8 @@ std::vector<double> Coordinates(vtkPointSet* ps)
   return x;
 }
 
-std::vector<double> Drag(vtkChainMailDeformationFilter* f, vtkIdType grasp, double dx, double dy,
-  double dz)
+std::vector<double> Drag(
+  vtkChainMailDeformationFilter* f, vtkIdType grasp, double dx, double dy, double dz)
 {
   f->SetGraspPointId(grasp);
   f->SetDisplacement(dx, dy, dz);
@@ -540,8 +517,8 @@ std::vector<double> Drag(vtkChainMailDeformationFilter* f, vtkIdType grasp, doub
 
 TEST(ChainMailDeformationFilter, CommitUndoRedoAndResetAreBitExact)
 {
-  auto grid = TriangleGrid(25, 25, 1.0, [](int i, int) { return i < 8 ? 0.0 : 0.7; }, VTK_FLOAT,
-    512345.0, 4123456.0);
+  auto grid = TriangleGrid(
+    25, 25, 1.0, [](int i, int) { return i < 8 ? 0.0 : 0.7; }, VTK_FLOAT, 512345.0, 4123456.0);
   vtkNew<vtkChainMailDeformationFilter> f;
   const auto original = Coordinates(Deform(f, grid));
   const auto one = Drag(f, 12 * 25 + 12, 0.0, 0.0, 3.0);

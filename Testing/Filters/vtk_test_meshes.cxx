@@ -1,6 +1,7 @@
 #include "vtk_test_meshes.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellType.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -43,6 +44,43 @@ vtkSmartPointer<vtkPolyData> TriangleGridPolyData(int nx, int ny, double h,
   if (malleability)
     pd->GetPointData()->AddArray(mal);
   return pd;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> TetSlabUnstructuredGrid(
+  int nx, int ny, int nz, double h, const std::function<double(int, int, int)>& malleability)
+{
+  auto ug = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> pts;
+  pts->SetDataType(VTK_DOUBLE);
+  vtkNew<vtkFloatArray> mal;
+  mal->SetName("Malleability");
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+      {
+        pts->InsertNextPoint(i * h, j * h, k * h);
+        if (malleability)
+          mal->InsertNextValue(float(malleability(i, j, k)));
+      }
+  ug->SetPoints(pts);
+  if (malleability)
+    ug->GetPointData()->AddArray(mal);
+  auto id = [&](int i, int j, int k) { return vtkIdType((k * ny + j) * nx + i); };
+  const int tets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
+    { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
+  for (int k = 0; k + 1 < nz; ++k)
+    for (int j = 0; j + 1 < ny; ++j)
+      for (int i = 0; i + 1 < nx; ++i)
+      {
+        const vtkIdType v[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) };
+        for (const auto& t : tets)
+        {
+          const vtkIdType ids[4] = { v[t[0]], v[t[1]], v[t[2]], v[t[3]] };
+          ug->InsertNextCell(VTK_TETRA, 4, ids);
+        }
+      }
+  return ug;
 }
 
 } // namespace geoshaping::testing

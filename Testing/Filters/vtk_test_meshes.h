@@ -4,6 +4,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <functional>
 
@@ -16,5 +17,11 @@ namespace geoshaping::testing
 vtkSmartPointer<vtkPolyData> TriangleGridPolyData(int nx, int ny, double h,
   const std::function<double(int, int)>& malleability, int type = VTK_DOUBLE, double x0 = 0.0,
   double y0 = 0.0);
+
+// nx * ny * nz points spaced h in double precision, each hexahedral block split into 6
+// tetrahedra around its (0,0,0)-(1,1,1) diagonal; unless `malleability` is empty, a
+// float point array "Malleability" holding malleability(i, j, k).
+vtkSmartPointer<vtkUnstructuredGrid> TetSlabUnstructuredGrid(
+  int nx, int ny, int nz, double h, const std::function<double(int, int, int)>& malleability);
 
 } // namespace geoshaping::testing

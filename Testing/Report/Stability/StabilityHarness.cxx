@@ -21,7 +21,8 @@
 namespace stability
 {
 
-vtkSmartPointer<vtkPolyData> Grid(int nx, int ny, double h, double m, int type, double x0, double y0)
+vtkSmartPointer<vtkPolyData> Grid(
+  int nx, int ny, double h, double m, int type, double x0, double y0)
 {
   return geoshaping::testing::TriangleGridPolyData(
     nx, ny, h, [m](int, int) { return m; }, type, x0, y0);
@@ -29,37 +30,8 @@ vtkSmartPointer<vtkPolyData> Grid(int nx, int ny, double h, double m, int type, 
 
 vtkSmartPointer<vtkUnstructuredGrid> Slab(int nx, int ny, int nz, double h, double m)
 {
-  auto ug = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> pts;
-  pts->SetDataType(VTK_DOUBLE);
-  vtkNew<vtkFloatArray> mal;
-  mal->SetName("Malleability");
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-      {
-        pts->InsertNextPoint(i * h, j * h, k * h);
-        mal->InsertNextValue(float(m));
-      }
-  ug->SetPoints(pts);
-  ug->GetPointData()->AddArray(mal);
-  auto id = [&](int i, int j, int k) { return vtkIdType((k * ny + j) * nx + i); };
-  const int tets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
-    { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
-  for (int k = 0; k + 1 < nz; ++k)
-    for (int j = 0; j + 1 < ny; ++j)
-      for (int i = 0; i + 1 < nx; ++i)
-      {
-        const vtkIdType v[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
-          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-          id(i, j + 1, k + 1) };
-        for (const auto& t : tets)
-        {
-          const vtkIdType ids[4] = { v[t[0]], v[t[1]], v[t[2]], v[t[3]] };
-          ug->InsertNextCell(VTK_TETRA, 4, ids);
-        }
-      }
-  return ug;
+  return geoshaping::testing::TetSlabUnstructuredGrid(
+    nx, ny, nz, h, [m](int, int, int) { return m; });
 }
 
 namespace
@@ -145,14 +117,15 @@ void ExpectInvariants(vtkChainMailDeformationFilter* f, vtkPointSet* input, vtkP
     ASSERT_LT(s, n);
     EXPECT_TRUE(std::binary_search(adj.begin(v), adj.end(v), geoshaping::index_t(s)))
       << "sponsor " << s << " of " << v << " is not a neighbour";
-    EXPECT_TRUE(s == grasp || sponsor->GetComponent(s, 0) >= 0) << "sponsor " << s << " never moved";
+    EXPECT_TRUE(s == grasp || sponsor->GetComponent(s, 0) >= 0)
+      << "sponsor " << s << " never moved";
     if (f->GetRefinementIterations() == 0)
       EXPECT_LE(geoshaping::link_distance(lm, u, v, s), tol) << v << " outside its valid region";
   }
   EXPECT_EQ(moved, f->GetNumberOfDisplacedPoints());
   // Pinned vertices (the "Pinned" array of these tests) may hold a rigid region back.
   if (f->GetCandidateQueue() == vtkChainMailDeformationFilter::FIFO_PRIORITY &&
-    f->GetRefinementIterations() == 0 && !input->GetPointData()->GetArray("Pinned"))
+      f->GetRefinementIterations() == 0 && !input->GetPointData()->GetArray("Pinned"))
     EXPECT_EQ(geoshaping::rigid_error(lm, u), 0.0) << "a rigid region did not translate exactly";
   if (out->GetPoints()->GetDataType() == VTK_DOUBLE)
     for (vtkIdType v = 0; v < n; ++v)
@@ -189,7 +162,8 @@ Outcome Check(vtkChainMailDeformationFilter* f, vtkPointSet* input, bool check_i
     return o;
   EXPECT_EQ(o.output->GetNumberOfPoints(), input->GetNumberOfPoints());
   double p[3], q[3];
-  for (vtkIdType i = 0; i < std::min(input->GetNumberOfPoints(), o.output->GetNumberOfPoints()); ++i)
+  for (vtkIdType i = 0; i < std::min(input->GetNumberOfPoints(), o.output->GetNumberOfPoints());
+       ++i)
   {
     input->GetPoint(i, p);
     o.output->GetPoint(i, q);
