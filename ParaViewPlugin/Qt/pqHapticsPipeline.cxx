@@ -55,20 +55,30 @@ pqPipelineSource* pqHapticsFindSource(const char* xmlName)
 
 namespace
 {
+// `proxy` and the proxies feeding it, following first inputs upstream.
+std::vector<vtkSMProxy*> inputChain(vtkSMProxy* proxy)
+{
+  std::vector<vtkSMProxy*> chain;
+  for (int depth = 0; proxy && depth < 64; ++depth)
+  {
+    chain.push_back(proxy);
+    proxy =
+      proxy->GetProperty("Input") ? vtkSMPropertyHelper(proxy, "Input").GetAsProxy(0) : nullptr;
+  }
+  return chain;
+}
+
 // The MalleabilityPaint feeding `source`, following first inputs upstream.
 pqPipelineSource* paintUpstreamOf(pqPipelineSource* source)
 {
   auto* model = pqApplicationCore::instance()->getServerManagerModel();
-  vtkSMProxy* proxy = source ? source->getProxy() : nullptr;
-  for (int depth = 0; proxy && depth < 64; ++depth)
+  for (vtkSMProxy* proxy : inputChain(source ? source->getProxy() : nullptr))
   {
     auto* item = model->findItem<pqPipelineSource*>(proxy);
     if (isA(item, "MalleabilityPaint"))
     {
       return item;
     }
-    proxy =
-      proxy->GetProperty("Input") ? vtkSMPropertyHelper(proxy, "Input").GetAsProxy(0) : nullptr;
   }
   return nullptr;
 }
@@ -270,14 +280,13 @@ void pqHapticsPipeline::contactTriangles(
   {
     return;
   }
-  // The deformation's upstream: the same surface before the deformation.
-  std::vector<vtkSMProxy*> upstream;
-  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
-  for (int depth = 0; proxy && depth < 64; ++depth)
+  // The deformation's upstream: the same surface before the deformation (the
+  // deformation itself is left out or not by `withShown`).
+  std::vector<vtkSMProxy*> upstream =
+    inputChain(this->Deformation ? this->Deformation->getProxy() : nullptr);
+  if (!upstream.empty())
   {
-    proxy =
-      proxy->GetProperty("Input") ? vtkSMPropertyHelper(proxy, "Input").GetAsProxy(0) : nullptr;
-    upstream.push_back(proxy);
+    upstream.erase(upstream.begin());
   }
   std::vector<double> xyz;
   for (pqRepresentation* item : this->View->getRepresentations())

@@ -56,6 +56,18 @@ PLATEAU_POINT = [20.0, 30.0, 20.0]
 DEPTH = 0.002  # m, how far the stylus ends below the surface (device frame)
 
 
+def write_trace(path, title, seconds, sample):
+    """A 60 Hz stylus trace of `seconds`: sample(t) gives (position, buttons) or
+    (position, buttons, quaternion w x y z)."""
+    with open(path, "w") as f:
+        f.write("# t x y z qw qx qy qz buttons: %s\n" % title)
+        for k in range(int(seconds * 60) + 1):
+            t = k / 60.0
+            p, b, *q = sample(t)
+            q = q[0] if q else (1.0, 0.0, 0.0, 0.0)
+            f.write("%.6f %.9f %.9f %.9f %.12f %.12f %.12f %.12f %d\n" % (t, *p, *q, b))
+
+
 def write_touch_trace(path):
     """The stylus starts 1 cm above the plateau (along the surface normal in the device
     frame); holds the second button there and moves onto swatch 3 (0.3) of the 3D palette
@@ -75,24 +87,21 @@ def write_touch_trace(path):
     def lerp(a, b, f):
         return [u + (v - u) * min(1.0, max(0.0, f)) for u, v in zip(a, b)]
 
-    with open(path, "w") as f:
-        f.write("# t x y z qw qx qy qz buttons: palette pick, then touch the plateau\n")
-        # The button is held 0.5 s before the stylus moves, so the first frame that sees
-        # it lays the row out from `above`; then 1 s on the swatch: frames see both even
-        # at 2 frames per second.
-        for k in range(int(6.0 * 60) + 1):
-            t = k / 60.0
-            if t < 0.5:
-                p, b = above, 0
-            elif t < 1.0:
-                p, b = above, 2
-            elif t < 2.5:
-                p, b = lerp(above, swatch, (t - 1.0) / 0.5), 2
-            elif t < 3.0:
-                p, b = lerp(swatch, above, (t - 2.5) / 0.5), 0
-            else:
-                p, b = lerp(above, below, t - 3.0), (2 if t >= 4.0 else 0)
-            f.write("%.6f %.9f %.9f %.9f 1 0 0 0 %d\n" % (t, p[0], p[1], p[2], b))
+    # The button is held 0.5 s before the stylus moves, so the first frame that sees it
+    # lays the row out from `above`; then 1 s on the swatch: frames see both even at 2
+    # frames per second.
+    def sample(t):
+        if t < 0.5:
+            return above, 0
+        if t < 1.0:
+            return above, 2
+        if t < 2.5:
+            return lerp(above, swatch, (t - 1.0) / 0.5), 2
+        if t < 3.0:
+            return lerp(swatch, above, (t - 2.5) / 0.5), 0
+        return lerp(above, below, t - 3.0), (2 if t >= 4.0 else 0)
+
+    write_trace(path, "palette pick, then touch the plateau", 6.0, sample)
     return normal
 
 
@@ -103,12 +112,8 @@ PLATEAU_Z = 20.0  # the rest surface under the grasp
 
 
 def write_paint_trace(path):
-    with open(path, "w") as f:
-        f.write("# t x y z qw qx qy qz buttons: hand 2 paints on the lifted surface\n")
-        for k in range(int(4.5 * 60) + 1):
-            t = k / 60.0
-            f.write("%.6f %.9f %.9f %.9f 1 0 0 0 %d\n" % (t, PAINT_AT[0], PAINT_AT[1], PAINT_AT[2],
-                                                          1 if 3.0 <= t < 3.8 else 0))
+    write_trace(path, "hand 2 paints on the lifted surface", 4.5,
+                lambda t: (PAINT_AT, 1 if 3.0 <= t < 3.8 else 0))
 
 
 def check_bimanual(results):
@@ -138,15 +143,13 @@ TURN_DEGREES = 30.0
 
 def write_turn_trace(path):
     half = math.radians(TURN_DEGREES) / 2
-    with open(path, "w") as f:
-        f.write("# t x y z qw qx qy qz buttons: hold and turn the horizon\n")
-        for k in range(int(4.0 * 60) + 1):
-            t = k / 60.0
-            a = min(1.0, max(0.0, t - 1.5))  # still while pressed 1.0-1.5 s, then 1 s of motion
-            p = [c + a * m for c, m in zip(TURN_PRESS, TURN_MOVE)]
-            b = 1 if 1.0 <= t < 3.5 else 0
-            f.write("%.6f %.9f %.9f %.9f %.12f 0 %.12f 0 %d\n"
-                    % (t, p[0], p[1], p[2], math.cos(a * half), math.sin(a * half), b))
+
+    def sample(t):
+        a = min(1.0, max(0.0, t - 1.5))  # still while pressed 1.0-1.5 s, then 1 s of motion
+        p = [c + a * m for c, m in zip(TURN_PRESS, TURN_MOVE)]
+        return p, (1 if 1.0 <= t < 3.5 else 0), (math.cos(a * half), 0.0, math.sin(a * half), 0.0)
+
+    write_trace(path, "hold and turn the horizon", 4.0, sample)
 
 
 def check_turn(results):
