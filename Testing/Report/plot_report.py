@@ -26,6 +26,14 @@ METRICS = [("E_rigid", "E_rigid (rigid-region distortion)"), ("E_link", "E_link 
 FLOOR = 1e-6
 
 
+def finish(fig, title, path, **title_options):
+    """Titles, lays out, writes (90 dpi) and closes a report figure."""
+    fig.suptitle(title, **title_options)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+
+
 def read(name):
     with open(os.path.join(OUT, name)) as f:
         return list(csv.DictReader(f))
@@ -52,11 +60,8 @@ def scene_plot(scene, rows, path):
         ax.set_ylabel(label + " / mean edge")
         ax.grid(True, which="both", lw=0.3)
     axes[0, 0].legend(fontsize=8, title="queue (N = refinement sweeps)", title_fontsize=8)
-    fig.suptitle("%s: error against run time, 4 queues x refinement 0,1,2,4,8,16\n"
-                 "(0 drawn on the dotted floor %.0e)" % (scene, FLOOR), fontsize=11)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+    finish(fig, "%s: error against run time, 4 queues x refinement 0,1,2,4,8,16\n"
+                "(0 drawn on the dotted floor %.0e)" % (scene, FLOOR), path, fontsize=11)
 
 
 def key_of(title):
@@ -86,10 +91,8 @@ def figure6():
     for ax in axes:
         ax.set_aspect("equal")
         ax.set_xlabel("x (m)")
-    fig.suptitle("Figure 6: FIFO lets soft vertices sponsor the rigid step (ripples); FIFO Priority keeps it exact")
-    fig.tight_layout()
-    fig.savefig(os.path.join(IMG, "report-figure6.png"), dpi=90)
-    plt.close(fig)
+    finish(fig, "Figure 6: FIFO lets soft vertices sponsor the rigid step (ripples); "
+           "FIFO Priority keeps it exact", os.path.join(IMG, "report-figure6.png"))
 
 
 def figure8():
@@ -112,10 +115,8 @@ def figure8():
         fig.colorbar(b, ax=axes[1, c])
     for ax in axes.flat:
         ax.set_aspect("equal")
-    fig.suptitle("Figure 8: equal malleability, Priority (heap order) is vein-like and jumps under a 1% move")
-    fig.tight_layout()
-    fig.savefig(os.path.join(IMG, "report-figure8.png"), dpi=90)
-    plt.close(fig)
+    finish(fig, "Figure 8: equal malleability, Priority (heap order) is vein-like and jumps "
+           "under a 1% move", os.path.join(IMG, "report-figure8.png"))
 
 
 def table1():
@@ -138,10 +139,7 @@ def table1():
         ax.set_xlabel("vertices displaced")
         ax.grid(True, lw=0.3)
         ax.legend(fontsize=7)
-    fig.suptitle("Table 1: per-frame time at the paper's displaced counts")
-    fig.tight_layout()
-    fig.savefig(os.path.join(IMG, "report-table1.png"), dpi=90)
-    plt.close(fig)
+    finish(fig, "Table 1: per-frame time at the paper's displaced counts", os.path.join(IMG, "report-table1.png"))
 
 
 rows = read("report.csv")
