@@ -8,6 +8,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkGeoShapingAdapter.h"
+#include "vtkGrowingBoundsPoints.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationStringKey.h"
@@ -71,7 +72,12 @@ struct vtkChainMailDeformationFilter::vtkInternals
     return this->Refining ? this->Projector->displacement(v) : this->Deformer.displacement(v);
   }
 
-  vtkSmartPointer<vtkPoints> OutputPoints;
+  // The output points persist between updates; each update rewrites only the changed
+  // vertices and lists them (vtkGrowingBoundsPoints::PointsChanged), so bounds and a
+  // consumer that saw the previous update (the GeoShaping Surface representation)
+  // follow in O(changed).
+  vtkSmartPointer<vtkGrowingBoundsPoints> OutputPoints;
+  vtkNew<vtkIdTypeArray> Changed;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   bool WarnedParallel = false;
 };

@@ -91,7 +91,7 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
     }
     in.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
 
-    in.OutputPoints = vtkSmartPointer<vtkPoints>::New();
+    in.OutputPoints = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
     const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT
                           : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION
                             ? VTK_DOUBLE
@@ -100,7 +100,7 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
     in.OutputPoints->DeepCopy(inPoints);
     if (in.OutputPoints->GetDataType() != precision)
     {
-      vtkNew<vtkPoints> converted;
+      auto converted = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
       converted->SetDataType(precision);
       converted->SetNumberOfPoints(n);
       for (vtkIdType i = 0; i < n; ++i)
@@ -280,12 +280,13 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
   const vtkIdType n = input->GetNumberOfPoints();
   // 6. Rewrite only the vertices that moved now or last time (the moved and the refined)
   // and those an edit changed, as input + offset so unedited vertices stay the input's.
-  vtkPoints* outPoints = in.OutputPoints;
+  vtkGrowingBoundsPoints* outPoints = in.OutputPoints;
   // A vertex moved last time and again now is written once, by the second pass.
   const auto& deformer = in.Deformer;
+  const IdList previouslyRefined = std::move(in.Refined);
   RewritePoints(
     inPoints->GetData(), outPoints->GetData(),
-    IdLists{ &deformer.previously_moved(), &in.Refined, &stale, &touched },
+    IdLists{ &deformer.previously_moved(), &previouslyRefined, &stale, &touched },
     [&deformer](geoshaping::index_t v) { return deformer.moved_this_frame(v); },
     [&deformer](geoshaping::index_t v) { return deformer.committed_offset(v); });
   in.Refined.clear();
@@ -298,7 +299,14 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
     [](geoshaping::index_t) { return false; },
     [&in](geoshaping::index_t v) -> Eigen::Vector3d
     { return in.Deformer.committed_offset(v) + in.FinalDisplacement(v); });
-  outPoints->Modified();
+  // What changed since the last update: everything either pass wrote.
+  vtkIdTypeArray* changed = in.Changed;
+  changed->SetNumberOfTuples(0);
+  for (const IdList* written : IdLists{ &deformer.previously_moved(), &previouslyRefined, &stale,
+         &touched, &deformer.moved(), &in.Refined })
+    for (geoshaping::index_t v : *written)
+      changed->InsertNextValue(v);
+  outPoints->PointsChanged(changed->GetPointer(0), changed->GetNumberOfTuples());
   output->SetPoints(outPoints);
 
   if (this->GenerateDiagnostics)

@@ -1,0 +1,80 @@
+/**
+ * @class   vtkGrowingBoundsPoints
+ * @brief   vtkPoints whose bounds and coordinate ranges follow a sparse rewrite in
+ *          O(changed) instead of a pass over every point.
+ *
+ * vtkPoints recomputes its bounds, and its vtkDataArray its component and L2-norm
+ * ranges (what ParaView's data information, the render view and the mappers ask for),
+ * with a pass over all n points whenever the coordinates are modified. A producer that
+ * rewrote k points calls PointsChanged(ids) instead of Modified(). With B the cached
+ * box and N the cached norm range, the caches become
+ *
+ *     B' = B ∪ bbox{ x_i : i in ids },    N' = N ∪ [min |x_i|, max |x_i|]
+ *
+ * in O(k). B' contains every point: a point is either unchanged (inside B) or listed.
+ * The caches are exact after Reset() (the next query passes over all points) and grow
+ * conservatively after that: a point that moves inward does not shrink them until the
+ * next Reset(). A non-finite listed point drops the caches (the next query is exact).
+ *
+ * The points also say what changed, for consumers that keep a copy (an extracted
+ * surface, a GPU buffer): each PointsChanged() is update number GetGeneration() and
+ * keeps its ids; ChangesAfter(g) returns them when that update directly follows update
+ * g and nothing else modified the points since. The points object travels through
+ * shallow copies, so a consumer downstream of any pass-through filter sees it. The
+ * contract with a producer: between two updates only the listed coordinates changed.
+ * A consumer that gets nullptr (first sight, a skipped update, another modification)
+ * must rebuild, which is always correct.
+ */
+#ifndef vtkGrowingBoundsPoints_h
+#define vtkGrowingBoundsPoints_h
+
+#include "GeoShapingFiltersSparseModule.h" // For export macro
+#include "vtkIdTypeArray.h"                // For vtkNew<vtkIdTypeArray>
+#include "vtkNew.h"                        // For vtkNew
+#include "vtkPoints.h"
+
+class GEOSHAPINGFILTERSSPARSE_EXPORT vtkGrowingBoundsPoints : public vtkPoints
+{
+public:
+  static vtkGrowingBoundsPoints* New();
+  vtkTypeMacro(vtkGrowingBoundsPoints, vtkPoints);
+
+  /// The coordinates of the k points `ids` changed: bump the modification time and grow
+  /// the cached bounds and ranges over them, O(k).
+  void PointsChanged(const vtkIdType* ids, vtkIdType k);
+
+  /// Forget the caches: the next query computes them exactly, O(n).
+  void Reset();
+
+  /// True while the caches are those grown by PointsChanged (not recomputed).
+  bool HasGrownBounds() const { return this->Known; }
+
+  void ComputeBounds() override;
+
+  /// The number of the last PointsChanged() (0 before any).
+  vtkGetMacro(Generation, int);
+
+  /// The ids of the last PointsChanged() if it was update `generation` + 1 and nothing
+  /// else modified the points since; nullptr otherwise.
+  vtkIdTypeArray* ChangesAfter(int generation);
+
+protected:
+  vtkGrowingBoundsPoints() = default;
+  ~vtkGrowingBoundsPoints() override = default;
+
+private:
+  vtkGrowingBoundsPoints(const vtkGrowingBoundsPoints&) = delete;
+  void operator=(const vtkGrowingBoundsPoints&) = delete;
+
+  // Write Box and Norm into vtkPoints::Bounds and the array's range caches.
+  void Publish();
+
+  double Box[6] = { 0, 0, 0, 0, 0, 0 };
+  double Norm[2] = { 0, 0 };
+  bool Known = false;
+  int Generation = 0;
+  vtkMTimeType ChangedTime = 0;
+  vtkNew<vtkIdTypeArray> Changed;
+};
+
+#endif

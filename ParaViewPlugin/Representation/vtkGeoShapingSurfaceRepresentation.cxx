@@ -1,0 +1,175 @@
+#include "vtkGeoShapingSurfaceRepresentation.h"
+
+#include "vtkDataArray.h"
+#include "vtkGrowingBoundsPoints.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkSparseCompositeMapper.h"
+#include "vtkSparsePointChanges.h"
+#include "vtkSparseSurface.h"
+#include "vtkSparseSurfaceMapper.h"
+
+vtkStandardNewMacro(vtkGeoShapingSurfaceRepresentation);
+
+vtkGeoShapingSurfaceRepresentation::vtkGeoShapingSurfaceRepresentation()
+{
+  // Replace the stock mapper, configured as the superclass configures it.
+  this->Mapper->Delete();
+  this->SparseMapper = vtkSparseCompositeMapper::New();
+  this->SparseMapper->SetProcessIdArrayName("vtkProcessId");
+  this->SparseMapper->SetCompositeIdArrayName("vtkCompositeIndex");
+  this->Mapper = this->SparseMapper;
+  this->SetArrayIdNames(nullptr, nullptr);
+  this->SetupDefaults();
+}
+
+vtkGeoShapingSurfaceRepresentation::~vtkGeoShapingSurfaceRepresentation() = default;
+
+int vtkGeoShapingSurfaceRepresentation::GetNumberOfSparseBuilds()
+{
+  return this->SparseMapper->GetSurfaceMapper()->GetNumberOfSparseBuilds();
+}
+
+int vtkGeoShapingSurfaceRepresentation::GetNumberOfFullBuilds()
+{
+  return this->SparseMapper->GetSurfaceMapper()->GetNumberOfFullBuilds();
+}
+
+int vtkGeoShapingSurfaceRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = inputVector[0]->GetNumberOfInformationObjects() == 1
+                         ? vtkPointSet::GetData(inputVector[0], 0)
+                         : nullptr;
+  if (input && this->FollowSparse(input))
+  {
+    ++this->NumberOfSparseUpdates;
+    // Stamps the pipeline data time, so the view delivers (shares, in one process) again.
+    return this->vtkPVDataRepresentation::RequestData(request, inputVector, outputVector);
+  }
+  const int ok = this->Superclass::RequestData(request, inputVector, outputVector);
+  ++this->NumberOfFullUpdates;
+  this->Adopt(input);
+  return ok;
+}
+
+bool vtkGeoShapingSurfaceRepresentation::FollowSparse(vtkPointSet* input)
+{
+  if (!this->Surface || !this->InputPoints || input->GetPoints() != this->InputPoints)
+  {
+    return false;
+  }
+  auto* tree = vtkMultiBlockDataSet::SafeDownCast(this->MultiBlockMaker->GetOutputDataObject(0));
+  if (!tree || tree->GetNumberOfBlocks() != 1 || tree->GetBlock(0) != this->Surface.GetPointer())
+  {
+    return false;
+  }
+  vtkIdTypeArray* changed = this->InputPoints->ChangesAfter(this->InputGeneration);
+  if (!changed)
+  {
+    return false;
+  }
+  std::vector<std::uintptr_t> signature;
+  vtkSparsePointChanges::AppendSignature(input, signature);
+  if (signature != this->InputSignature)
+  {
+    return false;
+  }
+  if (this->SharedCoordinates)
+  {
+    this->Surface->PointsChanged(nullptr); // the input's points already list the change
+  }
+  else if (!this->CopyChanged(input, changed))
+  {
+    return false;
+  }
+  this->InputGeneration = this->InputPoints->GetGeneration();
+  return true;
+}
+
+bool vtkGeoShapingSurfaceRepresentation::CopyChanged(vtkPointSet* input, vtkIdTypeArray* changed)
+{
+  vtkDataArray* from = input->GetPoints()->GetData();
+  vtkDataArray* to = this->Surface->GetPoints()->GetData();
+  const vtkIdType n = vtkIdType(this->InputToSurface.size());
+  this->SurfaceChanged->SetNumberOfTuples(0);
+  for (vtkIdType i = 0; i < changed->GetNumberOfTuples(); ++i)
+  {
+    const vtkIdType v = changed->GetValue(i);
+    if (v < 0 || v >= n)
+    {
+      return false;
+    }
+    const vtkIdType s = this->InputToSurface[v];
+    if (s >= 0) // else an interior point of a volume mesh
+    {
+      to->SetTuple(s, v, from);
+      this->SurfaceChanged->InsertNextValue(s);
+    }
+  }
+  this->Surface->PointsChanged(this->SurfaceChanged);
+  return true;
+}
+
+void vtkGeoShapingSurfaceRepresentation::Adopt(vtkPointSet* input)
+{
+  this->Surface = nullptr;
+  this->InputPoints = nullptr;
+  this->InputGeneration = -1;
+  auto* tree = vtkMultiBlockDataSet::SafeDownCast(this->MultiBlockMaker->GetOutputDataObject(0));
+  auto* surface =
+    tree && tree->GetNumberOfBlocks() == 1 ? vtkPolyData::SafeDownCast(tree->GetBlock(0)) : nullptr;
+  auto* points = vtkGrowingBoundsPoints::SafeDownCast(input ? input->GetPoints() : nullptr);
+  if (!points || !surface || !surface->GetPoints())
+  {
+    return; // only inputs whose points list their changes are followed
+  }
+  // The surface-to-input point map: vtkPVGeometryFilter's original ids, else identity.
+  const vtkIdType n = input->GetNumberOfPoints();
+  const vtkIdType m = surface->GetNumberOfPoints();
+  auto* original =
+    vtkIdTypeArray::SafeDownCast(surface->GetPointData()->GetArray("vtkOriginalPointIds"));
+  this->InputToSurface.assign(std::size_t(n), -1);
+  if (original && original->GetNumberOfTuples() == m)
+  {
+    for (vtkIdType s = 0; s < m; ++s)
+    {
+      const vtkIdType v = original->GetValue(s);
+      if (v < 0 || v >= n)
+      {
+        return;
+      }
+      this->InputToSurface[v] = s;
+    }
+  }
+  else if (m == n)
+  {
+    for (vtkIdType s = 0; s < m; ++s)
+      this->InputToSurface[s] = s;
+  }
+  else
+  {
+    return;
+  }
+  this->SharedCoordinates = surface->GetPoints()->GetData() == input->GetPoints()->GetData();
+  if (auto* adopted = vtkSparseSurface::SafeDownCast(surface))
+  {
+    this->Surface = adopted; // the geometry filter did not run again
+  }
+  else
+  {
+    this->Surface = vtkSmartPointer<vtkSparseSurface>::New();
+    this->Surface->Adopt(surface, this->SharedCoordinates ? points : nullptr);
+    tree->SetBlock(0, this->Surface);
+  }
+  this->InputPoints = points;
+  this->InputGeneration = points->GetGeneration();
+  this->InputSignature.clear();
+  vtkSparsePointChanges::AppendSignature(input, this->InputSignature);
+}
