@@ -56,6 +56,7 @@
 #include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
 
+class vtkIdTypeArray;
 class vtkPiecewiseFunction;
 
 class GEOSHAPINGFILTERSDEFORMATION_EXPORT vtkChainMailDeformationFilter
@@ -277,6 +278,7 @@ private:
   void UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
   std::vector<int> UpdateEdits(std::vector<int>& stale);
   void Deform(vtkPointSet* input);
+  void UpdateNormals(vtkIdTypeArray* changed);
   void WriteOutput(vtkPointSet* input, vtkPointSet* output, const std::vector<int>& stale,
     const std::vector<int>& touched);
 

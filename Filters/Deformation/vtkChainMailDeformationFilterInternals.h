@@ -26,6 +26,7 @@
 #include "geoshaping/chainmail_deformer.h"
 #include "geoshaping/edit_history.h"
 #include "geoshaping/link_projection.h"
+#include "geoshaping/sparse_normals.h"
 
 #include <chrono>
 #include <initializer_list>
@@ -78,6 +79,13 @@ struct vtkChainMailDeformationFilter::vtkInternals
   // follow in O(changed).
   vtkSmartPointer<vtkGrowingBoundsPoints> OutputPoints;
   vtkNew<vtkIdTypeArray> Changed;
+  // Lighting follows the shape: when the input is polygons with point normals, the
+  // output carries its own copy, recomputed for the vertices each update's changes
+  // affect (the changed ones and those sharing a face with them), which are listed
+  // with the changed points.
+  geoshaping::SparseNormals Normals;
+  vtkSmartPointer<vtkDataArray> OutputNormals;
+  std::vector<geoshaping::index_t> Affected;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   bool WarnedParallel = false;
 };

@@ -107,6 +107,18 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
         converted->SetPoint(i, xyz.data() + 3 * i);
       in.OutputPoints = converted;
     }
+    std::vector<std::int64_t> faceOffsets;
+    std::vector<geoshaping::index_t> faceVertices;
+    vtkDataArray* normals = input->GetPointData()->GetNormals();
+    in.OutputNormals = nullptr;
+    in.Normals = geoshaping::SparseNormals();
+    if (normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n &&
+        vtkGeoShapingAdapter::BuildFaces(input, faceOffsets, faceVertices))
+    {
+      in.Normals.set_mesh(std::move(faceOffsets), std::move(faceVertices), geoshaping::index_t(n));
+      in.OutputNormals = vtk::TakeSmartPointer(normals->NewInstance());
+      in.OutputNormals->DeepCopy(normals);
+    }
     in.GeometryValid = true;
     ++this->NumberOfRebuilds;
   }
@@ -306,6 +318,11 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
          &touched, &deformer.moved(), &in.Refined })
     for (geoshaping::index_t v : *written)
       changed->InsertNextValue(v);
+  if (in.OutputNormals)
+  {
+    this->UpdateNormals(changed);
+    output->GetPointData()->SetNormals(in.OutputNormals);
+  }
   outPoints->PointsChanged(changed->GetPointer(0), changed->GetNumberOfTuples());
   output->SetPoints(outPoints);
 
@@ -332,4 +349,29 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
     output->GetPointData()->AddArray(displacement);
     output->GetPointData()->AddArray(sponsor);
   }
+}
+
+void vtkChainMailDeformationFilter::UpdateNormals(vtkIdTypeArray* changed)
+{
+  // Recompute the normals the changed points affect; they join the changed list.
+  vtkInternals& in = *this->Internals;
+  const std::vector<geoshaping::index_t> moved(
+    changed->GetPointer(0), changed->GetPointer(0) + changed->GetNumberOfTuples());
+  in.Affected.clear();
+  in.Normals.affected(moved.data(), moved.size(), in.Affected);
+  vtkDataArray* points = in.OutputPoints->GetData();
+  const auto position = [points](geoshaping::index_t v)
+  {
+    Eigen::Vector3d x;
+    points->GetTuple(v, x.data());
+    return x;
+  };
+  for (geoshaping::index_t v : in.Affected)
+  {
+    const Eigen::Vector3d normal = in.Normals.normal(v, position);
+    in.OutputNormals->SetTuple(v, normal.data());
+  }
+  in.OutputNormals->Modified();
+  changed->SetNumberOfTuples(vtkIdType(in.Affected.size()));
+  std::copy(in.Affected.begin(), in.Affected.end(), changed->GetPointer(0));
 }

@@ -3,6 +3,7 @@
 #include "vtkAbstractCellLocator.h"
 #include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCellIterator.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -224,4 +225,40 @@ vtkIdType vtkGeoShapingAdapter::AppendTrianglesNear(vtkDataSet* surface,
     }
   }
   return vtkIdType((xyz.size() - before) / 9);
+}
+
+bool vtkGeoShapingAdapter::BuildFaces(vtkPointSet* input, std::vector<std::int64_t>& offsets,
+  std::vector<geoshaping::index_t>& vertices)
+{
+  offsets.clear();
+  vertices.clear();
+  auto* poly = vtkPolyData::SafeDownCast(input);
+  if (!poly || poly->GetNumberOfPolys() == 0 || poly->GetNumberOfStrips() > 0)
+  {
+    return false;
+  }
+  const vtkIdType n = poly->GetNumberOfPoints();
+  vtkCellArray* polys = poly->GetPolys();
+  offsets.reserve(std::size_t(polys->GetNumberOfCells()) + 1);
+  vertices.reserve(std::size_t(polys->GetNumberOfConnectivityIds()));
+  offsets.push_back(0);
+  auto cells = vtk::TakeSmartPointer(polys->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    for (vtkIdType i = 0; i < size; ++i)
+    {
+      if (ids[i] < 0 || ids[i] >= n)
+      {
+        offsets.clear();
+        vertices.clear();
+        return false;
+      }
+      vertices.push_back(geoshaping::index_t(ids[i]));
+    }
+    offsets.push_back(std::int64_t(vertices.size()));
+  }
+  return true;
 }

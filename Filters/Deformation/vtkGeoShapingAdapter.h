@@ -35,6 +35,12 @@ public:
   /// type is unsupported or whose point ids are invalid.
   static geoshaping::Adjacency BuildAdjacency(vtkDataSet* input, vtkIdType& skippedCells);
 
+  /// The polygons (triangles, quads, polygons) of a vtkPolyData as CSR faces for
+  /// geoshaping::SparseNormals. False, and nothing built, when `input` is not polydata,
+  /// has no polygons, has triangle strips, or a polygon holds an invalid point id.
+  static bool BuildFaces(vtkPointSet* input, std::vector<std::int64_t>& offsets,
+    std::vector<geoshaping::index_t>& vertices);
+
   /// Copies points into xyz (3 doubles each). Returns the number of non-finite
   /// coordinates; `firstBad` is the id of the first point holding one (or -1).
   static vtkIdType PointsAsDouble(vtkPoints* points, std::vector<double>& xyz, vtkIdType& firstBad);

@@ -21,7 +21,8 @@
  * keeps its ids; ChangesAfter(g) returns them when that update directly follows update
  * g and nothing else modified the points since. The points object travels through
  * shallow copies, so a consumer downstream of any pass-through filter sees it. The
- * contract with a producer: between two updates only the listed coordinates changed.
+ * contract with a producer: between two updates only the listed points' coordinates
+ * (and active point normals, when it maintains them) changed.
  * A consumer that gets nullptr (first sight, a skipped update, another modification)
  * must rebuild, which is always correct.
  */

@@ -2,6 +2,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -44,9 +45,16 @@ void vtkSparsePointChanges::AppendSignature(
          static_cast<vtkDataSetAttributes*>(data->GetCellData()) })
   {
     signature.push_back(std::uintptr_t(fields->GetNumberOfArrays()));
+    vtkDataArray* normals = fields == data->GetPointData() ? fields->GetNormals() : nullptr;
     for (int i = 0; i < fields->GetNumberOfArrays(); ++i)
     {
-      AppendObject(fields->GetAbstractArray(i), signature);
+      vtkAbstractArray* array = fields->GetAbstractArray(i);
+      if (array == normals)
+      {
+        signature.push_back(reinterpret_cast<std::uintptr_t>(array)); // values may change
+        continue;
+      }
+      AppendObject(array, signature);
     }
     for (int a = 0; a < vtkDataSetAttributes::NUM_ATTRIBUTES; ++a)
     {

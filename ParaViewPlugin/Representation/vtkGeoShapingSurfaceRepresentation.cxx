@@ -97,6 +97,12 @@ bool vtkGeoShapingSurfaceRepresentation::CopyChanged(vtkPointSet* input, vtkIdTy
 {
   vtkDataArray* from = input->GetPoints()->GetData();
   vtkDataArray* to = this->Surface->GetPoints()->GetData();
+  vtkDataArray* fromNormals = input->GetPointData()->GetNormals();
+  vtkDataArray* toNormals = this->Surface->GetPointData()->GetNormals();
+  if (fromNormals == toNormals || !fromNormals || !toNormals)
+  {
+    fromNormals = toNormals = nullptr; // shared, or none to follow
+  }
   const vtkIdType n = vtkIdType(this->InputToSurface.size());
   this->SurfaceChanged->SetNumberOfTuples(0);
   for (vtkIdType i = 0; i < changed->GetNumberOfTuples(); ++i)
@@ -110,8 +116,16 @@ bool vtkGeoShapingSurfaceRepresentation::CopyChanged(vtkPointSet* input, vtkIdTy
     if (s >= 0) // else an interior point of a volume mesh
     {
       to->SetTuple(s, v, from);
+      if (toNormals)
+      {
+        toNormals->SetTuple(s, v, fromNormals);
+      }
       this->SurfaceChanged->InsertNextValue(s);
     }
+  }
+  if (toNormals)
+  {
+    toNormals->Modified();
   }
   this->Surface->PointsChanged(this->SurfaceChanged);
   return true;

@@ -8,6 +8,7 @@
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPlaneCollection.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkScalarsToColors.h"
@@ -64,7 +65,7 @@ void vtkSparseSurfaceMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
     auto* points = vtkGrowingBoundsPoints::SafeDownCast(poly->GetPoints());
     vtkIdTypeArray* ids =
       points && points == this->BuiltPoints ? points->ChangesAfter(this->BuiltGeneration) : nullptr;
-    if (ids && this->Signature(poly, act) == this->BuiltFrom && this->UploadPositions(poly, ids))
+    if (ids && this->Signature(poly, act) == this->BuiltFrom && this->UploadChanged(poly, ids))
     {
       this->BuiltGeneration = points->GetGeneration();
       this->VBOBuildTime.Modified();
@@ -81,16 +82,45 @@ void vtkSparseSurfaceMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
   this->BuiltGeneration = points ? points->GetGeneration() : -1;
 }
 
-bool vtkSparseSurfaceMapper::UploadPositions(vtkPolyData* poly, vtkIdTypeArray* ids)
+bool vtkSparseSurfaceMapper::UploadChanged(vtkPolyData* poly, vtkIdTypeArray* ids)
 {
-  vtkOpenGLVertexBufferObject* vbo = this->VBOs->GetVBO("vertexMC");
-  vtkPoints* points = poly->GetPoints();
-  const vtkIdType n = points->GetNumberOfPoints();
-  if (!vbo || vbo->GetDataType() != VTK_FLOAT || vbo->GetNumberOfComponents() != 3 ||
-      vtkIdType(vbo->GetNumberOfTuples()) != n || vbo->GetStride() % sizeof(float) != 0)
+  const vtkIdType n = poly->GetNumberOfPoints();
+  this->Sorted.assign(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfTuples());
+  std::sort(this->Sorted.begin(), this->Sorted.end());
+  if (!this->Sorted.empty() && (this->Sorted.front() < 0 || this->Sorted.back() >= n))
   {
-    return false; // not the one-vertex-per-point float layout this writes
+    return false;
   }
+  // Positions always; normals when the mapper drew them (the producer lists both).
+  vtkOpenGLVertexBufferObject* normals = this->VBOs->GetVBO("normalMC");
+  vtkDataArray* pointNormals = poly->GetPointData()->GetNormals();
+  if (normals && (!pointNormals || !this->Writable(normals, n)))
+  {
+    return false;
+  }
+  vtkOpenGLVertexBufferObject* positions = this->VBOs->GetVBO("vertexMC");
+  if (!positions || !this->Writable(positions, n))
+  {
+    return false;
+  }
+  this->UploadRuns(positions, poly->GetPoints()->GetData());
+  if (normals)
+  {
+    this->UploadRuns(normals, pointNormals);
+  }
+  return true;
+}
+
+bool vtkSparseSurfaceMapper::Writable(vtkOpenGLVertexBufferObject* vbo, vtkIdType n)
+{
+  // One float triple per point, as vtkOpenGLVertexBufferObject packs a 3-component array.
+  return vbo->GetDataType() == VTK_FLOAT && vbo->GetNumberOfComponents() == 3 &&
+         vtkIdType(vbo->GetNumberOfTuples()) == n && vbo->GetStride() % sizeof(float) == 0 &&
+         vbo->GetStride() >= 3 * sizeof(float);
+}
+
+void vtkSparseSurfaceMapper::UploadRuns(vtkOpenGLVertexBufferObject* vbo, vtkDataArray* values)
+{
   const vtkIdType block = vbo->GetStride() / sizeof(float);
   double shift[3] = { 0, 0, 0 }, scale[3] = { 1, 1, 1 };
   if (vbo->GetCoordShiftAndScaleEnabled())
@@ -103,19 +133,12 @@ bool vtkSparseSurfaceMapper::UploadPositions(vtkPolyData* poly, vtkIdTypeArray* 
       scale[k] = c[k];
     }
   }
-
-  this->Sorted.assign(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfTuples());
-  std::sort(this->Sorted.begin(), this->Sorted.end());
-  if (!this->Sorted.empty() && (this->Sorted.front() < 0 || this->Sorted.back() >= n))
-  {
-    return false;
-  }
   std::vector<float>& packed = vbo->GetPackedVBO();
-  const bool keepPacked = vtkIdType(packed.size()) == n * block;
+  const bool keepPacked = vtkIdType(packed.size()) == values->GetNumberOfTuples() * block;
   vbo->Bind();
   for (std::size_t i = 0; i < this->Sorted.size();)
   {
-    // One run: ids closer than MergeGap, the points between them rewritten as they are.
+    // One run: ids closer than MergeGap, the values between them rewritten as they are.
     const vtkIdType first = this->Sorted[i];
     vtkIdType last = first;
     while (i < this->Sorted.size() && this->Sorted[i] - last <= this->MergeGap)
@@ -126,7 +149,7 @@ bool vtkSparseSurfaceMapper::UploadPositions(vtkPolyData* poly, vtkIdTypeArray* 
     for (vtkIdType v = first; v <= last; ++v)
     {
       double x[3];
-      points->GetPoint(v, x);
+      values->GetTuple(v, x);
       float* to = this->Staging.data() + (v - first) * block;
       for (int k = 0; k < 3; ++k)
       {
@@ -141,5 +164,4 @@ bool vtkSparseSurfaceMapper::UploadPositions(vtkPolyData* poly, vtkIdTypeArray* 
     }
   }
   vbo->Release();
-  return true;
 }

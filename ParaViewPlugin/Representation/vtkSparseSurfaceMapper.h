@@ -7,9 +7,10 @@
  * modified: O(points) per frame for a drag that moves a few thousand vertices. When the
  * input's points are the vtkGrowingBoundsPoints it last drew and list the changes of
  * the next update (ChangesAfter), and nothing else the buffers are built from has
- * changed (see Signature()), this mapper writes only the listed positions into the
- * position buffer (glBufferSubData over runs of nearby ids, with the buffer's own shift
- * and scale) and keeps every other buffer: O(changed). Anything else takes the full
+ * changed (see Signature()), this mapper writes only the listed positions (and normals,
+ * which the producer lists with them) into their buffers (glBufferSubData over runs of
+ * nearby ids, with the buffer's own shift and scale) and keeps every other buffer (index,
+ * colours): O(changed). Anything else takes the full
  * build, so what is drawn is always what the stock mapper draws.
  *
  * Cost of a sparse update: sort the k ids, O(k log k); one glBufferSubData per run,
@@ -26,7 +27,9 @@
 #include <cstdint> // For std::uintptr_t
 #include <vector>  // For std::vector
 
+class vtkDataArray;
 class vtkGrowingBoundsPoints;
+class vtkOpenGLVertexBufferObject;
 class vtkIdTypeArray;
 
 class GEOSHAPINGRENDERINGSPARSE_EXPORT vtkSparseSurfaceMapper : public vtkOpenGLPolyDataMapper
@@ -63,8 +66,12 @@ private:
 
   // Everything the buffers are built from except the point coordinates.
   std::vector<std::uintptr_t> Signature(vtkPolyData* poly, vtkActor* act);
-  // Write the positions of `ids` into the position buffer; false if it cannot.
-  bool UploadPositions(vtkPolyData* poly, vtkIdTypeArray* ids);
+  // Write the positions (and normals) of `ids` into their buffers; false if it cannot.
+  bool UploadChanged(vtkPolyData* poly, vtkIdTypeArray* ids);
+  // A buffer this writes: one float triple per point.
+  static bool Writable(vtkOpenGLVertexBufferObject* vbo, vtkIdType n);
+  // Write the Sorted ids' values into `vbo`, in runs, with its shift and scale.
+  void UploadRuns(vtkOpenGLVertexBufferObject* vbo, vtkDataArray* values);
 
   std::vector<std::uintptr_t> BuiltFrom;
   vtkWeakPointer<vtkGrowingBoundsPoints> BuiltPoints;
