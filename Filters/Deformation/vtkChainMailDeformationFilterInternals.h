@@ -21,6 +21,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
+#include "vtkSparseArrayChanges.h"
 #include "vtkStaticPointLocator.h"
 
 #include "geoshaping/chainmail_deformer.h"

@@ -371,7 +371,8 @@ void vtkChainMailDeformationFilter::UpdateNormals(vtkIdTypeArray* changed)
     const Eigen::Vector3d normal = in.Normals.normal(v, position);
     in.OutputNormals->SetTuple(v, normal.data());
   }
-  in.OutputNormals->Modified();
   changed->SetNumberOfTuples(vtkIdType(in.Affected.size()));
   std::copy(in.Affected.begin(), in.Affected.end(), changed->GetPointer(0));
+  vtkSparseArrayChanges::ValuesChanged(
+    in.OutputNormals, changed->GetPointer(0), changed->GetNumberOfTuples());
 }
