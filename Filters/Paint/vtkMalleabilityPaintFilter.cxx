@@ -11,18 +11,32 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
+#include "vtkSparseArrayChanges.h"
+#include "vtkSparsePointChanges.h"
 #include "vtkStaticPointLocator.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "geoshaping/brush.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkMalleabilityPaintFilter);
+
+namespace
+{
+bool SameDab(const geoshaping::Dab& a, const geoshaping::Dab& b)
+{
+  return a.center == b.center && a.radius == b.radius && a.value == b.value &&
+         a.strength == b.strength;
+}
+} // namespace
 
 struct vtkMalleabilityPaintFilter::vtkInternals
 {
@@ -39,6 +53,17 @@ struct vtkMalleabilityPaintFilter::vtkInternals
   bool AdjacencyValid = false;
   geoshaping::Adjacency Adjacency;
 
+  // The last painted array, what it was painted from (input geometry, source array,
+  // settings) and the dabs applied to it: an update that only appends dabs continues it.
+  vtkSmartPointer<vtkFloatArray> Painted;
+  std::vector<std::uintptr_t> PaintedFrom;
+  std::vector<geoshaping::Dab> AppliedDabList;
+  std::vector<double> AppliedPointDabs;
+
+  // What the painted array was painted from, apart from the dabs.
+  static std::vector<std::uintptr_t> Signature(
+    vtkPointSet* input, vtkMalleabilityPaintFilter* self, const char* name);
+
   // Rebuilds what depends on the geometry when it changed; false on bad points.
   bool Update(vtkPointSet* input, vtkMalleabilityPaintFilter* self);
   geoshaping::PointQueries Queries();
@@ -50,7 +75,7 @@ bool vtkMalleabilityPaintFilter::vtkInternals::Update(
   vtkPoints* points = input->GetPoints();
   const vtkMTimeType time = vtkGeoShapingAdapter::GeometryTime(input);
   if (this->GeometryPoints == points && this->GeometrySize == input->GetNumberOfPoints() &&
-    this->GeometryTime == time && this->Locator)
+      this->GeometryTime == time && this->Locator)
   {
     return this->GeometryValid;
   }
@@ -78,15 +103,28 @@ bool vtkMalleabilityPaintFilter::vtkInternals::Update(
   return this->GeometryValid;
 }
 
+std::vector<std::uintptr_t> vtkMalleabilityPaintFilter::vtkInternals::Signature(
+  vtkPointSet* input, vtkMalleabilityPaintFilter* self, const char* name)
+{
+  std::vector<std::uintptr_t> s{ std::uintptr_t(input->GetNumberOfPoints()),
+    std::uintptr_t(vtkGeoShapingAdapter::GeometryTime(input)), std::hash<std::string>()(name),
+    std::hash<double>()(self->InitialMalleability), std::uintptr_t(self->Falloff),
+    std::uintptr_t(self->DistanceMode), std::uintptr_t(self->PaintPins) };
+  vtkSparsePointChanges::AppendObject(input->GetPoints(), s);
+  vtkSparsePointChanges::AppendObject(input->GetPointData()->GetArray(name), s);
+  return s;
+}
+
 geoshaping::PointQueries vtkMalleabilityPaintFilter::vtkInternals::Queries()
 {
   vtkStaticPointLocator* locator = this->Locator;
   geoshaping::PointQueries q;
-  q.nearest = [locator](const Eigen::Vector3d& p) {
-    return geoshaping::index_t(locator->FindClosestPoint(p.data()));
-  };
+  q.nearest = [locator](const Eigen::Vector3d& p)
+  { return geoshaping::index_t(locator->FindClosestPoint(p.data())); };
   auto found = vtkSmartPointer<vtkIdList>::New();
-  q.within = [locator, found](const Eigen::Vector3d& p, double r, std::vector<geoshaping::index_t>& ids) {
+  q.within = [locator, found](
+               const Eigen::Vector3d& p, double r, std::vector<geoshaping::index_t>& ids)
+  {
     // A hair wider than asked: the core keeps exactly those within r by its own test.
     locator->FindPointsWithinRadius(r * (1.0 + 1e-9), p.data(), found);
     ids.assign(found->begin(), found->end());
@@ -179,7 +217,7 @@ int vtkMalleabilityPaintFilter::RequestData(
   if (!*name)
   {
     vtkErrorMacro(<< (this->PaintPins ? "PinnedArrayName" : "MalleabilityArrayName")
-      << " is empty; output is the input.");
+                  << " is empty; output is the input.");
     return 1;
   }
   const vtkIdType n = input->GetNumberOfPoints();
@@ -189,8 +227,14 @@ int vtkMalleabilityPaintFilter::RequestData(
     return 1;
   }
 
+  if (!this->PaintPins && this->PaintIncrementally(input, output, name))
+  {
+    ++this->NumberOfIncrementalUpdates;
+    return 1;
+  }
+
   // The array to paint: a clamped float copy of the input's, or InitialMalleability.
-  vtkNew<vtkFloatArray> malleability;
+  auto malleability = vtkSmartPointer<vtkFloatArray>::New();
   malleability->SetName(name);
   malleability->SetNumberOfTuples(n);
   vtkDataArray* source = input->GetPointData()->GetArray(name);
@@ -206,8 +250,8 @@ int vtkMalleabilityPaintFilter::RequestData(
     vtkIdType clamped = 0;
     for (vtkIdType i = 0; i < n; ++i)
     {
-      const double v = this->PaintPins ? double(source->GetComponent(i, 0) != 0.0)
-                                       : source->GetComponent(i, 0);
+      const double v =
+        this->PaintPins ? double(source->GetComponent(i, 0) != 0.0) : source->GetComponent(i, 0);
       const double c = std::isnan(v) ? 0.0 : std::min(std::max(v, 0.0), 1.0);
       clamped += c != v;
       m[i] = static_cast<float>(c);
@@ -237,23 +281,73 @@ int vtkMalleabilityPaintFilter::RequestData(
   {
     output->GetPointData()->AddArray(malleability);
     output->GetPointData()->SetActiveScalars(name);
+    vtkInternals& in = *this->Internals;
+    // Recording from the start: consumers see the same rule on every later update.
+    vtkSparseArrayChanges::ValuesChanged(malleability, nullptr, 0);
+    in.Painted = malleability;
+    in.PaintedFrom = in.Signature(input, this, name);
+    in.AppliedDabList = in.Dabs;
+    in.AppliedPointDabs = in.PointDabs;
   }
   return 1;
 }
 
-void vtkMalleabilityPaintFilter::ApplyPointDabs(vtkIdType n, float* m)
+bool vtkMalleabilityPaintFilter::PaintIncrementally(
+  vtkPointSet* input, vtkPointSet* output, const char* name)
+{
+  vtkInternals& in = *this->Internals;
+  if (!in.Painted || in.Signature(input, this, name) != in.PaintedFrom)
+  {
+    return false;
+  }
+  // Only appends, in an order a full update would apply them in: dabs first, then point
+  // dabs, so new dabs continue only an array without point dabs.
+  const bool dabsAppended =
+    in.Dabs.size() >= in.AppliedDabList.size() &&
+    std::equal(in.AppliedDabList.begin(), in.AppliedDabList.end(), in.Dabs.begin(), SameDab);
+  const bool pointDabsAppended =
+    in.PointDabs.size() >= in.AppliedPointDabs.size() &&
+    std::equal(in.AppliedPointDabs.begin(), in.AppliedPointDabs.end(), in.PointDabs.begin());
+  const bool newDabs = in.Dabs.size() > in.AppliedDabList.size();
+  if (!dabsAppended || !pointDabsAppended || (newDabs && !in.PointDabs.empty()))
+  {
+    return false;
+  }
+  std::vector<vtkIdType> touched;
+  float* m = in.Painted->GetPointer(0);
+  const vtkIdType n = input->GetNumberOfPoints();
+  this->ApplyDabs(input, m, in.AppliedDabList.size(), &touched);
+  this->ApplyPointDabs(n, m, in.AppliedPointDabs.size() / 3, &touched);
+  if (!touched.empty())
+  {
+    vtkSparseArrayChanges::ValuesChanged(in.Painted, touched.data(), vtkIdType(touched.size()));
+  }
+  in.AppliedDabList = in.Dabs;
+  in.AppliedPointDabs = in.PointDabs;
+  output->GetPointData()->AddArray(in.Painted);
+  output->GetPointData()->SetActiveScalars(name);
+  return true;
+}
+
+void vtkMalleabilityPaintFilter::ApplyPointDabs(
+  vtkIdType n, float* m, std::size_t first, std::vector<vtkIdType>* touched)
 {
   const std::vector<double>& d = this->Internals->PointDabs;
-  for (std::size_t i = 0; i + 2 < d.size(); i += 3)
+  for (std::size_t i = 3 * first; i + 2 < d.size(); i += 3)
   {
     const double id = d[i], value = d[i + 1], weight = d[i + 2];
     if (!(id >= 0 && id < double(n) && id == std::floor(id) && value >= 0 && value <= 1 &&
           weight >= 0 && weight <= 1))
     {
-      vtkErrorMacro("Point dab " << i / 3 << " (" << id << " " << value << " " << weight
-                                 << ") is skipped: id outside the mesh or value/weight outside [0, 1].");
+      vtkErrorMacro(
+        "Point dab " << i / 3 << " (" << id << " " << value << " " << weight
+                     << ") is skipped: id outside the mesh or value/weight outside [0, 1].");
       ++this->NumberOfRejectedDabs;
       continue;
+    }
+    if (touched)
+    {
+      touched->push_back(static_cast<vtkIdType>(id));
     }
     float& x = m[static_cast<vtkIdType>(id)];
     x = static_cast<float>(std::min(1.0, std::max(0.0, x + weight * (value - x))));
@@ -261,11 +355,12 @@ void vtkMalleabilityPaintFilter::ApplyPointDabs(vtkIdType n, float* m)
   }
 }
 
-void vtkMalleabilityPaintFilter::ApplyDabs(vtkPointSet* input, float* m)
+void vtkMalleabilityPaintFilter::ApplyDabs(
+  vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched)
 {
   vtkInternals& in = *this->Internals;
   const vtkIdType n = input->GetNumberOfPoints();
-  if (n == 0 || in.Dabs.empty() || !in.Update(input, this))
+  if (n == 0 || first >= in.Dabs.size() || !in.Update(input, this))
   {
     return;
   }
@@ -277,15 +372,29 @@ void vtkMalleabilityPaintFilter::ApplyDabs(vtkPointSet* input, float* m)
     in.AdjacencyValid = true;
     if (skipped > 0)
     {
-      vtkWarningMacro(<< skipped << " cells are of an unsupported type or have invalid point "
-                                    "ids; geodesic paths do not follow their edges.");
+      vtkWarningMacro(<< skipped
+                      << " cells are of an unsupported type or have invalid point "
+                         "ids; geodesic paths do not follow their edges.");
     }
   }
 
   const auto start = std::chrono::steady_clock::now();
   geoshaping::Painter painter(in.Xyz.data(), geoshaping::index_t(n), &in.Adjacency, in.Queries());
+  const std::vector<geoshaping::Dab> dabs(in.Dabs.begin() + std::ptrdiff_t(first), in.Dabs.end());
+  if (touched)
+  {
+    geoshaping::Reach reach;
+    for (const geoshaping::Dab& dab : dabs)
+    {
+      if (*geoshaping::validate_dab(dab) == '\0')
+      {
+        painter.reach(dab, mode, reach);
+        touched->insert(touched->end(), reach.vertices.begin(), reach.vertices.end());
+      }
+    }
+  }
   const geoshaping::PaintReport report =
-    painter.paint(in.Dabs, static_cast<geoshaping::Falloff>(this->Falloff), mode, m);
+    painter.paint(dabs, static_cast<geoshaping::Falloff>(this->Falloff), mode, m);
   this->LastPaintMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfAppliedDabs = static_cast<int>(report.applied);
@@ -294,13 +403,13 @@ void vtkMalleabilityPaintFilter::ApplyDabs(vtkPointSet* input, float* m)
   if (!report.rejected.empty())
   {
     std::ostringstream msg;
-    msg << report.rejected.size() << " of " << in.Dabs.size()
+    msg << report.rejected.size() << " of " << dabs.size()
         << " dabs were skipped (the others are applied):";
     const std::size_t shown = std::min<std::size_t>(report.rejected.size(), 10);
     for (std::size_t i = 0; i < shown; ++i)
     {
-      const geoshaping::Dab& d = in.Dabs[report.rejected[i].first];
-      msg << "\n  dab " << report.rejected[i].first << " (" << d.center.x() << " "
+      const geoshaping::Dab& d = dabs[report.rejected[i].first];
+      msg << "\n  dab " << first + report.rejected[i].first << " (" << d.center.x() << " "
           << d.center.y() << " " << d.center.z() << " " << d.radius << " " << d.value << " "
           << d.strength << "): " << report.rejected[i].second;
     }
@@ -317,8 +426,9 @@ void vtkMalleabilityPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
      << (this->MalleabilityArrayName ? this->MalleabilityArrayName : "(none)") << "\n";
   os << indent << "InitialMalleability: " << this->InitialMalleability << "\n";
   os << indent << "NumberOfDabs: " << this->Internals->Dabs.size() << "\n";
-  os << indent << "Falloff: "
-     << geoshaping::falloff_name(static_cast<geoshaping::Falloff>(this->Falloff)) << "\n";
+  os << indent
+     << "Falloff: " << geoshaping::falloff_name(static_cast<geoshaping::Falloff>(this->Falloff))
+     << "\n";
   os << indent << "DistanceMode: "
      << geoshaping::distance_mode_name(static_cast<geoshaping::DistanceMode>(this->DistanceMode))
      << "\n";

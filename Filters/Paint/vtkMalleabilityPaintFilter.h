@@ -46,6 +46,7 @@
 #include "vtkPointSetAlgorithm.h"
 
 #include <memory> // For std::unique_ptr
+#include <vector> // For std::vector
 
 class vtkPointSet;
 
@@ -132,6 +133,12 @@ public:
   /// only the dabs or the array change.
   vtkGetMacro(NumberOfRebuilds, int);
 
+  /// Updates that painted only the dabs appended since the previous update onto its
+  /// array (O(their reach)) instead of copying the input's array and painting every dab
+  /// (O(points)). Such an update keeps the array object, records the painted tuples
+  /// (vtkSparseArrayChanges) and gives bit for bit the result of a full update.
+  vtkGetMacro(NumberOfIncrementalUpdates, int);
+
 protected:
   vtkMalleabilityPaintFilter();
   ~vtkMalleabilityPaintFilter() override;
@@ -150,13 +157,20 @@ protected:
   vtkIdType NumberOfPaintedValues = 0;
   double LastPaintMilliseconds = 0.0;
   int NumberOfRebuilds = 0;
+  int NumberOfIncrementalUpdates = 0;
 
 private:
   vtkMalleabilityPaintFilter(const vtkMalleabilityPaintFilter&) = delete;
   void operator=(const vtkMalleabilityPaintFilter&) = delete;
 
-  void ApplyDabs(vtkPointSet* input, float* m);
-  void ApplyPointDabs(vtkIdType n, float* m);
+  // Apply the dabs from `first` on (point dabs: from triplet `first` on) to m; append
+  // the vertices they reach to `touched` when given.
+  void ApplyDabs(
+    vtkPointSet* input, float* m, std::size_t first = 0, std::vector<vtkIdType>* touched = nullptr);
+  void ApplyPointDabs(
+    vtkIdType n, float* m, std::size_t first = 0, std::vector<vtkIdType>* touched = nullptr);
+  // The update when only dabs were appended since the last one; false otherwise.
+  bool PaintIncrementally(vtkPointSet* input, vtkPointSet* output, const char* name);
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

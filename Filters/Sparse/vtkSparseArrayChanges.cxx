@@ -141,7 +141,10 @@ void vtkSparseArrayChanges::ValuesChanged(vtkDataArray* array, const vtkIdType* 
   }
   vtkNew<vtkIdTypeArray> changed;
   changed->SetNumberOfTuples(k);
-  std::copy(ids, ids + k, changed->GetPointer(0));
+  if (k > 0)
+  {
+    std::copy(ids, ids + k, changed->GetPointer(0));
+  }
   info->Set(CHANGED(), changed);
   info->Set(GENERATION(), GetGeneration(array) + 1);
   info->Set(CHANGED_TIME(), static_cast<unsigned long>(array->GetMTime()));

@@ -34,6 +34,7 @@ public:
   vtkTypeMacro(vtkSparseArrayChanges, vtkObject);
 
   /// The values of the k tuples `ids` of `array` changed (O(k) plus the components).
+  /// A producer calls it with k = 0 on a new array to start recording.
   static void ValuesChanged(vtkDataArray* array, const vtkIdType* ids, vtkIdType k);
 
   /// The number of ValuesChanged() calls on `array` (0 before any).

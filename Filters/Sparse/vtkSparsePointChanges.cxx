@@ -1,5 +1,7 @@
 #include "vtkSparsePointChanges.h"
 
+#include "vtkSparseArrayChanges.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -45,13 +47,16 @@ void vtkSparsePointChanges::AppendSignature(
          static_cast<vtkDataSetAttributes*>(data->GetCellData()) })
   {
     signature.push_back(std::uintptr_t(fields->GetNumberOfArrays()));
-    vtkDataArray* normals = fields == data->GetPointData() ? fields->GetNormals() : nullptr;
+    const bool points = fields == data->GetPointData();
+    vtkDataArray* normals = points ? fields->GetNormals() : nullptr;
     for (int i = 0; i < fields->GetNumberOfArrays(); ++i)
     {
       vtkAbstractArray* array = fields->GetAbstractArray(i);
-      if (array == normals)
+      if (array == normals ||
+          (points && vtkSparseArrayChanges::GetGeneration(vtkDataArray::SafeDownCast(array)) > 0))
       {
-        signature.push_back(reinterpret_cast<std::uintptr_t>(array)); // values may change
+        // Values may change: listed with the points (normals) or by the array itself.
+        signature.push_back(reinterpret_cast<std::uintptr_t>(array));
         continue;
       }
       AppendObject(array, signature);

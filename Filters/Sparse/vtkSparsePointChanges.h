@@ -6,9 +6,11 @@
  * consumer that keeps a copy of a data set (an extracted surface, GPU buffers) may
  * apply only those when nothing else about the data set changed. AppendSignature()
  * lists that "nothing else": the point and cell counts, the cell arrays and every point
- * and cell data array (each object and its modification time; for the active point
- * normals the object only). Two equal signatures mean the data sets can differ only in
- * the coordinates and the normals of points, which the producer lists together.
+ * and cell data array (each object and its modification time; the object only for the
+ * active point normals and for point arrays that record their changes with
+ * vtkSparseArrayChanges). Two equal signatures mean the data sets can differ only in
+ * point coordinates and normals, which the producer lists together, and in the values
+ * of recording arrays, which the consumer follows with vtkSparseArrayChanges.
  */
 #ifndef vtkSparsePointChanges_h
 #define vtkSparsePointChanges_h

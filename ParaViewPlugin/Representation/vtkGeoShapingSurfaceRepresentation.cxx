@@ -10,6 +10,7 @@
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
+#include "vtkSparseArrayChanges.h"
 #include "vtkSparseCompositeMapper.h"
 #include "vtkSparsePointChanges.h"
 #include "vtkSparseSurface.h"
@@ -81,6 +82,10 @@ bool vtkGeoShapingSurfaceRepresentation::FollowSparse(vtkPointSet* input)
   {
     return false;
   }
+  if (!this->FollowArrays(input))
+  {
+    return false;
+  }
   if (this->SharedCoordinates)
   {
     this->Surface->PointsChanged(nullptr); // the input's points already list the change
@@ -90,6 +95,56 @@ bool vtkGeoShapingSurfaceRepresentation::FollowSparse(vtkPointSet* input)
     return false;
   }
   this->InputGeneration = this->InputPoints->GetGeneration();
+  return true;
+}
+
+bool vtkGeoShapingSurfaceRepresentation::FollowArrays(vtkPointSet* input)
+{
+  // Point arrays that record their changed values (a paint dab): copy those values to
+  // the surface's own array, unless it shares the input's, and record them there.
+  vtkPointData* fields = input->GetPointData();
+  for (int i = 0; i < fields->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = fields->GetArray(i);
+    const int generation = vtkSparseArrayChanges::GetGeneration(array);
+    auto seen = this->ArrayGenerations.find(array);
+    if (generation == 0 || (seen != this->ArrayGenerations.end() && seen->second == generation))
+    {
+      continue;
+    }
+    vtkIdTypeArray* changed = seen == this->ArrayGenerations.end()
+                                ? nullptr
+                                : vtkSparseArrayChanges::ChangesAfter(array, seen->second);
+    if (!changed)
+    {
+      return false;
+    }
+    vtkDataArray* to =
+      array->GetName() ? this->Surface->GetPointData()->GetArray(array->GetName()) : nullptr;
+    if (to != array)
+    {
+      if (!to || to->GetNumberOfComponents() != array->GetNumberOfComponents())
+      {
+        return false;
+      }
+      this->SurfaceChanged->SetNumberOfTuples(0);
+      for (vtkIdType j = 0; j < changed->GetNumberOfTuples(); ++j)
+      {
+        const vtkIdType v = changed->GetValue(j);
+        const vtkIdType s = v >= 0 && v < vtkIdType(this->InputToSurface.size())
+                              ? this->InputToSurface[std::size_t(v)]
+                              : -1;
+        if (s >= 0)
+        {
+          to->SetTuple(s, v, array);
+          this->SurfaceChanged->InsertNextValue(s);
+        }
+      }
+      vtkSparseArrayChanges::ValuesChanged(
+        to, this->SurfaceChanged->GetPointer(0), this->SurfaceChanged->GetNumberOfTuples());
+    }
+    seen->second = generation;
+  }
   return true;
 }
 
@@ -186,4 +241,13 @@ void vtkGeoShapingSurfaceRepresentation::Adopt(vtkPointSet* input)
   this->InputGeneration = points->GetGeneration();
   this->InputSignature.clear();
   vtkSparsePointChanges::AppendSignature(input, this->InputSignature);
+  this->ArrayGenerations.clear();
+  vtkPointData* fields = input->GetPointData();
+  for (int i = 0; i < fields->GetNumberOfArrays(); ++i)
+  {
+    if (const int generation = vtkSparseArrayChanges::GetGeneration(fields->GetArray(i)))
+    {
+      this->ArrayGenerations[fields->GetArray(i)] = generation;
+    }
+  }
 }

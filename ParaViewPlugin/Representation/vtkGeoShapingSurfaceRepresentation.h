@@ -14,7 +14,9 @@
  *   vtkSparsePointChanges::AppendSignature), it skips the geometry filter and copies the
  *   listed points into the extracted surface through the surface-to-input point map
  *   (`vtkOriginalPointIds`, identity for polydata), O(changed). A vtkUnstructuredGrid is
- *   extracted once; later frames touch only its moved surface points.
+ *   extracted once; later frames touch only its moved surface points. Point arrays that
+ *   record their changed values (vtkSparseArrayChanges: the malleability a paint dab
+ *   changed) are followed the same way, and the mapper re-maps only those colours.
  * - It draws with vtkSparseCompositeMapper, which uploads only those points.
  *
  * Anything else (first update, new topology or arrays, a skipped update, composite
@@ -30,8 +32,10 @@
 #include "vtkWeakPointer.h"  // For vtkWeakPointer
 
 #include <cstdint> // For std::uintptr_t
+#include <map>     // For std::map
 #include <vector>  // For std::vector
 
+class vtkDataArray;
 class vtkGrowingBoundsPoints;
 class vtkIdTypeArray;
 class vtkPointSet;
@@ -66,6 +70,8 @@ private:
 
   // Apply the input's sparse change to the surface; false if it does not follow.
   bool FollowSparse(vtkPointSet* input);
+  // Follow the input's point arrays that record their changes; false if one does not.
+  bool FollowArrays(vtkPointSet* input);
   // Copy the changed input points to the surface through the point map.
   bool CopyChanged(vtkPointSet* input, vtkIdTypeArray* changed);
   // After the stock path: wrap its surface for sparse updates when the input allows.
@@ -76,8 +82,9 @@ private:
   vtkWeakPointer<vtkGrowingBoundsPoints> InputPoints;
   int InputGeneration = -1;
   std::vector<std::uintptr_t> InputSignature;
-  std::vector<vtkIdType> InputToSurface; // -1: not on the surface
-  bool SharedCoordinates = false;        // the surface's coordinates are the input's array
+  std::vector<vtkIdType> InputToSurface;         // -1: not on the surface
+  std::map<vtkDataArray*, int> ArrayGenerations; // recording arrays: the change last seen
+  bool SharedCoordinates = false;                // the surface's coordinates are the input's array
   vtkNew<vtkIdTypeArray> SurfaceChanged;
   int NumberOfSparseUpdates = 0;
   int NumberOfFullUpdates = 0;

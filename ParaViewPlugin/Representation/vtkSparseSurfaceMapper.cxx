@@ -1,6 +1,7 @@
 #include "vtkSparseSurfaceMapper.h"
 
 #include "vtkActor.h"
+#include "vtkFloatArray.h"
 #include "vtkGrowingBoundsPoints.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -9,15 +10,19 @@
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkScalarsToColors.h"
 #include "vtkSelection.h"
+#include "vtkSparseArrayChanges.h"
 #include "vtkSparsePointChanges.h"
 #include "vtkTexture.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cstring>
 #include <functional>
 #include <string>
 
@@ -65,7 +70,8 @@ void vtkSparseSurfaceMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
     auto* points = vtkGrowingBoundsPoints::SafeDownCast(poly->GetPoints());
     vtkIdTypeArray* ids =
       points && points == this->BuiltPoints ? points->ChangesAfter(this->BuiltGeneration) : nullptr;
-    if (ids && this->Signature(poly, act) == this->BuiltFrom && this->UploadChanged(poly, ids))
+    if (ids && this->Signature(poly, act) == this->BuiltFrom && this->UploadChanged(poly, ids) &&
+        this->UploadChangedColors(poly))
     {
       this->BuiltGeneration = points->GetGeneration();
       this->VBOBuildTime.Modified();
@@ -80,6 +86,7 @@ void vtkSparseSurfaceMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor* act)
   auto* points = vtkGrowingBoundsPoints::SafeDownCast(poly ? poly->GetPoints() : nullptr);
   this->BuiltPoints = points;
   this->BuiltGeneration = points ? points->GetGeneration() : -1;
+  this->BuiltScalarsGeneration = vtkSparseArrayChanges::GetGeneration(this->ColorScalars(poly));
 }
 
 bool vtkSparseSurfaceMapper::UploadChanged(vtkPolyData* poly, vtkIdTypeArray* ids)
@@ -111,6 +118,88 @@ bool vtkSparseSurfaceMapper::UploadChanged(vtkPolyData* poly, vtkIdTypeArray* id
   return true;
 }
 
+vtkDataArray* vtkSparseSurfaceMapper::ColorScalars(vtkPolyData* poly)
+{
+  int cellFlag = 0;
+  vtkDataArray* scalars =
+    poly && this->ScalarVisibility
+      ? vtkDataArray::SafeDownCast(vtkAbstractMapper::GetAbstractScalars(
+          poly, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag))
+      : nullptr;
+  return cellFlag == 0 ? scalars : nullptr;
+}
+
+bool vtkSparseSurfaceMapper::UploadChangedColors(vtkPolyData* poly)
+{
+  vtkDataArray* scalars = this->ColorScalars(poly);
+  const int generation = vtkSparseArrayChanges::GetGeneration(scalars);
+  if (generation == this->BuiltScalarsGeneration)
+  {
+    return true; // the colours did not change
+  }
+  vtkIdTypeArray* ids = vtkSparseArrayChanges::ChangesAfter(scalars, this->BuiltScalarsGeneration);
+  vtkOpenGLVertexBufferObject* vbo = this->ColorCoordinates ? this->VBOs->GetVBO("tcoord")
+                                     : this->Colors         ? this->VBOs->GetVBO("scalarColor")
+                                                            : nullptr;
+  const vtkIdType n = poly->GetNumberOfPoints();
+  if (!ids || !vbo || vtkIdType(vbo->GetNumberOfTuples()) != n)
+  {
+    return false;
+  }
+  // The changed values, mapped by VTK's own MapScalars with this mapper's settings (the
+  // lookup table's range, not the data's, so a subset maps as the whole does).
+  const vtkIdType k = ids->GetNumberOfTuples();
+  vtkNew<vtkPolyData> subset;
+  vtkNew<vtkPoints> points;
+  points->SetNumberOfPoints(k);
+  subset->SetPoints(points);
+  auto values = vtk::TakeSmartPointer(scalars->NewInstance());
+  values->SetName(scalars->GetName());
+  values->SetNumberOfComponents(scalars->GetNumberOfComponents());
+  values->SetNumberOfTuples(k);
+  for (vtkIdType i = 0; i < k; ++i)
+  {
+    const vtkIdType v = ids->GetValue(i);
+    if (v < 0 || v >= n)
+    {
+      return false;
+    }
+    values->SetTuple(i, v, scalars);
+  }
+  subset->GetPointData()->AddArray(values);
+  if (scalars == poly->GetPointData()->GetScalars())
+  {
+    subset->GetPointData()->SetScalars(values);
+  }
+  this->ColorHelper->ShallowCopy(this);
+  this->ColorHelper->SetInputArrayToProcess(0, this->GetInputArrayInformation(0));
+  vtkUnsignedCharArray* colors = this->ColorHelper->MapScalars(subset, 1.0);
+  vtkDataArray* mapped = this->ColorCoordinates
+                           ? static_cast<vtkDataArray*>(this->ColorHelper->GetColorCoordinates())
+                           : static_cast<vtkDataArray*>(colors);
+  if (!mapped || mapped->GetNumberOfTuples() != k ||
+      mapped->GetNumberOfComponents() != int(vbo->GetNumberOfComponents()))
+  {
+    return false;
+  }
+  // Write through the full-size array the next full build would upload, then upload.
+  vtkDataArray* full = this->ColorCoordinates ? static_cast<vtkDataArray*>(this->ColorCoordinates)
+                                              : static_cast<vtkDataArray*>(this->Colors);
+  if (full->GetNumberOfTuples() != n)
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < k; ++i)
+  {
+    full->SetTuple(ids->GetValue(i), i, mapped);
+  }
+  this->Sorted.assign(ids->GetPointer(0), ids->GetPointer(0) + k);
+  std::sort(this->Sorted.begin(), this->Sorted.end());
+  this->UploadRuns(vbo, full);
+  this->BuiltScalarsGeneration = generation;
+  return true;
+}
+
 bool vtkSparseSurfaceMapper::Writable(vtkOpenGLVertexBufferObject* vbo, vtkIdType n)
 {
   // One float triple per point, as vtkOpenGLVertexBufferObject packs a 3-component array.
@@ -121,20 +210,26 @@ bool vtkSparseSurfaceMapper::Writable(vtkOpenGLVertexBufferObject* vbo, vtkIdTyp
 
 void vtkSparseSurfaceMapper::UploadRuns(vtkOpenGLVertexBufferObject* vbo, vtkDataArray* values)
 {
-  const vtkIdType block = vbo->GetStride() / sizeof(float);
-  double shift[3] = { 0, 0, 0 }, scale[3] = { 1, 1, 1 };
+  // The buffer's layout: one tuple of `nc` floats (shifted and scaled for positions) or
+  // unsigned chars per point, `stride` bytes apart.
+  const int nc = int(vbo->GetNumberOfComponents());
+  const vtkIdType stride = vbo->GetStride();
+  const bool bytes = vbo->GetDataType() == VTK_UNSIGNED_CHAR;
+  double shift[4] = { 0, 0, 0, 0 }, scale[4] = { 1, 1, 1, 1 };
   if (vbo->GetCoordShiftAndScaleEnabled())
   {
     const std::vector<double>& s = vbo->GetShift();
     const std::vector<double>& c = vbo->GetScale();
-    for (int k = 0; k < 3 && k < int(s.size()) && k < int(c.size()); ++k)
+    for (int k = 0; k < nc && k < int(s.size()) && k < int(c.size()); ++k)
     {
       shift[k] = s[k];
       scale[k] = c[k];
     }
   }
   std::vector<float>& packed = vbo->GetPackedVBO();
-  const bool keepPacked = vtkIdType(packed.size()) == values->GetNumberOfTuples() * block;
+  const bool keepPacked =
+    vtkIdType(packed.size() * sizeof(float)) == values->GetNumberOfTuples() * stride;
+  double x[4];
   vbo->Bind();
   for (std::size_t i = 0; i < this->Sorted.size();)
   {
@@ -145,22 +240,30 @@ void vtkSparseSurfaceMapper::UploadRuns(vtkOpenGLVertexBufferObject* vbo, vtkDat
     {
       last = this->Sorted[i++];
     }
-    this->Staging.assign(std::size_t((last - first + 1) * block), 0.0f);
+    this->Staging.assign(std::size_t((last - first + 1) * stride), 0);
     for (vtkIdType v = first; v <= last; ++v)
     {
-      double x[3];
       values->GetTuple(v, x);
-      float* to = this->Staging.data() + (v - first) * block;
-      for (int k = 0; k < 3; ++k)
+      unsigned char* to = this->Staging.data() + (v - first) * stride;
+      for (int k = 0; k < nc; ++k)
       {
-        to[k] = static_cast<float>((x[k] - shift[k]) * scale[k]);
+        if (bytes)
+        {
+          to[k] = static_cast<unsigned char>(x[k]);
+        }
+        else
+        {
+          const float f = static_cast<float>((x[k] - shift[k]) * scale[k]);
+          std::memcpy(to + k * sizeof(float), &f, sizeof(float));
+        }
       }
     }
-    glBufferSubData(GL_ARRAY_BUFFER, GLintptr(first * vbo->GetStride()),
-      GLsizeiptr(this->Staging.size() * sizeof(float)), this->Staging.data());
+    glBufferSubData(GL_ARRAY_BUFFER, GLintptr(first * stride), GLsizeiptr(this->Staging.size()),
+      this->Staging.data());
     if (keepPacked)
     {
-      std::copy(this->Staging.begin(), this->Staging.end(), packed.begin() + first * block);
+      std::memcpy(reinterpret_cast<unsigned char*>(packed.data()) + first * stride,
+        this->Staging.data(), this->Staging.size());
     }
   }
   vbo->Release();

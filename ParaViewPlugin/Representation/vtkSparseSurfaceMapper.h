@@ -10,8 +10,10 @@
  * changed (see Signature()), this mapper writes only the listed positions (and normals,
  * which the producer lists with them) into their buffers (glBufferSubData over runs of
  * nearby ids, with the buffer's own shift and scale) and keeps every other buffer (index,
- * colours): O(changed). Anything else takes the full
- * build, so what is drawn is always what the stock mapper draws.
+ * colours): O(changed). When the colouring array records changed values
+ * (vtkSparseArrayChanges: a paint dab), only those are re-mapped, by VTK's own
+ * MapScalars on the changed subset, and uploaded into the colour buffer. Anything else takes the
+ * full build, so what is drawn is always what the stock mapper draws.
  *
  * Cost of a sparse update: sort the k ids, O(k log k); one glBufferSubData per run,
  * where ids closer than MergeGap are one run (the unchanged points between them are
@@ -21,6 +23,7 @@
 #define vtkSparseSurfaceMapper_h
 
 #include "GeoShapingRenderingSparseModule.h" // For export macro
+#include "vtkNew.h"                          // For vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkWeakPointer.h" // For vtkWeakPointer
 
@@ -68,6 +71,11 @@ private:
   std::vector<std::uintptr_t> Signature(vtkPolyData* poly, vtkActor* act);
   // Write the positions (and normals) of `ids` into their buffers; false if it cannot.
   bool UploadChanged(vtkPolyData* poly, vtkIdTypeArray* ids);
+  // The point scalars this mapper colours by (nullptr: none, or cell scalars).
+  vtkDataArray* ColorScalars(vtkPolyData* poly);
+  // Re-map and upload the colours of the scalars' changed tuples (vtkSparseArrayChanges);
+  // true if none changed; false if it cannot (a full build follows).
+  bool UploadChangedColors(vtkPolyData* poly);
   // A buffer this writes: one float triple per point.
   static bool Writable(vtkOpenGLVertexBufferObject* vbo, vtkIdType n);
   // Write the Sorted ids' values into `vbo`, in runs, with its shift and scale.
@@ -77,7 +85,9 @@ private:
   vtkWeakPointer<vtkGrowingBoundsPoints> BuiltPoints;
   int BuiltGeneration = -1;
   std::vector<vtkIdType> Sorted;
-  std::vector<float> Staging;
+  std::vector<unsigned char> Staging;
+  int BuiltScalarsGeneration = 0;
+  vtkNew<vtkPolyDataMapper> ColorHelper; // maps the changed scalars only
   vtkIdType MergeGap = 64;
   int NumberOfFullBuilds = 0;
   int NumberOfSparseBuilds = 0;
