@@ -21,30 +21,8 @@ void SparseNormals::set_mesh(
       this->vertex_faces_[std::size_t(fill[std::size_t(this->face_vertices_[std::size_t(j)])]++)] =
         f;
   this->seen_.assign(std::size_t(vertices), 0);
-}
-
-void SparseNormals::affected(const index_t* moved, std::size_t k, std::vector<index_t>& out)
-{
-  const std::size_t start = out.size();
-  for (std::size_t i = 0; i < k; ++i)
-  {
-    const index_t u = moved[i];
-    for (std::int64_t a = this->vertex_offsets_[u]; a < this->vertex_offsets_[u + 1]; ++a)
-    {
-      const index_t f = this->vertex_faces_[std::size_t(a)];
-      for (std::int64_t j = this->face_offsets_[f]; j < this->face_offsets_[f + 1]; ++j)
-      {
-        const index_t v = this->face_vertices_[std::size_t(j)];
-        if (!this->seen_[std::size_t(v)])
-        {
-          this->seen_[std::size_t(v)] = 1;
-          out.push_back(v);
-        }
-      }
-    }
-  }
-  for (std::size_t i = start; i < out.size(); ++i)
-    this->seen_[std::size_t(out[i])] = 0;
+  this->face_seen_.assign(std::size_t(faces), 0);
+  this->face_normals_.assign(std::size_t(faces), Eigen::Vector3f::Zero());
 }
 
 } // namespace geoshaping

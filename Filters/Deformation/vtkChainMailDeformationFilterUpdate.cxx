@@ -3,6 +3,7 @@
 
 #include "vtkArrayDispatch.h"
 #include "vtkDataArrayRange.h"
+#include "vtkFloatArray.h"
 
 using namespace vtkChainMailDeformationFilterDetail;
 
@@ -116,6 +117,9 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
         vtkGeoShapingAdapter::BuildFaces(input, faceOffsets, faceVertices))
     {
       in.Normals.set_mesh(std::move(faceOffsets), std::move(faceVertices), geoshaping::index_t(n));
+      const double* rest = xyz.data();
+      in.Normals.set_positions(
+        [rest](geoshaping::index_t v) { return Eigen::Vector3d(rest + 3 * v); });
       in.OutputNormals = vtk::TakeSmartPointer(normals->NewInstance());
       in.OutputNormals->DeepCopy(normals);
     }
@@ -358,18 +362,36 @@ void vtkChainMailDeformationFilter::UpdateNormals(vtkIdTypeArray* changed)
   const std::vector<geoshaping::index_t> moved(
     changed->GetPointer(0), changed->GetPointer(0) + changed->GetNumberOfTuples());
   in.Affected.clear();
-  in.Normals.affected(moved.data(), moved.size(), in.Affected);
-  vtkDataArray* points = in.OutputPoints->GetData();
-  const auto position = [points](geoshaping::index_t v)
+  const auto update = [&in, &moved](const auto& position)
   {
-    Eigen::Vector3d x;
-    points->GetTuple(v, x.data());
-    return x;
+    in.Normals.moved(moved.data(), moved.size(), position, in.Affected);
+    for (geoshaping::index_t v : in.Affected)
+    {
+      const Eigen::Vector3d normal = in.Normals.normal(v);
+      in.OutputNormals->SetTuple(v, normal.data());
+    }
   };
-  for (geoshaping::index_t v : in.Affected)
+  vtkDataArray* points = in.OutputPoints->GetData();
+  if (auto* floats = vtkFloatArray::FastDownCast(points))
   {
-    const Eigen::Vector3d normal = in.Normals.normal(v, position);
-    in.OutputNormals->SetTuple(v, normal.data());
+    const float* x = floats->GetPointer(0);
+    update(
+      [x](geoshaping::index_t v) { return Eigen::Vector3d(x[3 * v], x[3 * v + 1], x[3 * v + 2]); });
+  }
+  else if (auto* doubles = vtkDoubleArray::FastDownCast(points))
+  {
+    const double* x = doubles->GetPointer(0);
+    update([x](geoshaping::index_t v) { return Eigen::Vector3d(x + 3 * v); });
+  }
+  else
+  {
+    update(
+      [points](geoshaping::index_t v)
+      {
+        Eigen::Vector3d x;
+        points->GetTuple(v, x.data());
+        return x;
+      });
   }
   changed->SetNumberOfTuples(vtkIdType(in.Affected.size()));
   std::copy(in.Affected.begin(), in.Affected.end(), changed->GetPointer(0));

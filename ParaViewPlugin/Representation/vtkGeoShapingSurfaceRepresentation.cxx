@@ -7,6 +7,7 @@
 #include "vtkInformationVector.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVView.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -58,6 +59,23 @@ int vtkGeoShapingSurfaceRepresentation::RequestData(
   ++this->NumberOfFullUpdates;
   this->Adopt(input);
   return ok;
+}
+
+int vtkGeoShapingSurfaceRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  const int result = this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
+  if (result && request == vtkPVView::REQUEST_RENDER() && !this->NoticedRemote &&
+      this->NumberOfSparseUpdates + this->NumberOfFullUpdates == 0 &&
+      vtkPVView::GetDeliveredPiece(inInfo, this))
+  {
+    // Drawn here, extracted elsewhere: every delivery is a new copy.
+    vtkWarningMacro("GeoShaping Surface: this process renders geometry delivered from the "
+                    "server, so each frame uploads the whole surface (stock path). Remote "
+                    "rendering (the server renders) keeps frames in O(moved).");
+    this->NoticedRemote = true;
+  }
+  return result;
 }
 
 bool vtkGeoShapingSurfaceRepresentation::FollowSparse(vtkPointSet* input)

@@ -21,6 +21,9 @@
  *
  * Anything else (first update, new topology or arrays, a skipped update, composite
  * data) takes the stock path, so what is drawn is always the input's current shape.
+ * So does a process that draws geometry delivered from another one (a client rendering
+ * a remote pvserver's data locally): it says so once. With remote rendering the server
+ * draws, and the sparse path applies there.
  */
 #ifndef vtkGeoShapingSurfaceRepresentation_h
 #define vtkGeoShapingSurfaceRepresentation_h
@@ -64,6 +67,12 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+public:
+  /// Overridden to say once when this process draws data another process extracted
+  /// (a client rendering a remote server's geometry): those frames take the stock path.
+  int ProcessViewRequest(
+    vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo) override;
+
 private:
   vtkGeoShapingSurfaceRepresentation(const vtkGeoShapingSurfaceRepresentation&) = delete;
   void operator=(const vtkGeoShapingSurfaceRepresentation&) = delete;
@@ -88,6 +97,7 @@ private:
   vtkNew<vtkIdTypeArray> SurfaceChanged;
   int NumberOfSparseUpdates = 0;
   int NumberOfFullUpdates = 0;
+  bool NoticedRemote = false;
 };
 
 #endif

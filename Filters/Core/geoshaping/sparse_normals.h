@@ -15,9 +15,11 @@
 // zero gets (0, 0, 0), never NaN.
 //
 // Moving vertex u changes n_f for every face that uses u, hence n_v for every vertex v
-// of those faces: affected() lists them. Cost: affected() O(sum of the face sizes around
-// the moved vertices); normal(v) O(sum of the sizes of v's faces). Memory: the faces
-// (offsets + vertex ids) and a vertex-to-face map, both O(mesh), built once.
+// of those faces. The unit face normals are kept (3 floats per face, computed once by
+// set_positions), so moved() recomputes each affected face once and each affected vertex
+// from its faces' kept normals. Cost of moved(): O(sum of the sizes of the faces around
+// the moved vertices + the face counts of the affected vertices); memory O(mesh): the
+// faces, a vertex-to-face map and the face normals, built once.
 #include "geoshaping/adjacency.h"
 
 #include <Eigen/Core>
@@ -38,32 +40,80 @@ public:
 
   bool empty() const { return this->face_offsets_.size() < 2; }
 
-  // Appends to `out`, once each, every vertex whose normal depends on the position of
-  // any of the k vertices `moved` (those sharing a face with one of them).
-  void affected(const index_t* moved, std::size_t k, std::vector<index_t>& out);
-
-  // n_v for positions given by `position(index_t) -> Eigen::Vector3d`.
+  // Every face's unit normal from the positions `position(index_t) -> Eigen::Vector3d`.
   template<class Position>
-  Eigen::Vector3d normal(index_t v, const Position& position) const
+  void set_positions(const Position& position)
   {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (std::int64_t i = this->vertex_offsets_[v]; i < this->vertex_offsets_[v + 1]; ++i)
-    {
-      const index_t f = this->vertex_faces_[std::size_t(i)];
-      const std::int64_t first = this->face_offsets_[f], last = this->face_offsets_[f + 1];
-      Eigen::Vector3d newell = Eigen::Vector3d::Zero();
-      for (std::int64_t j = first; j < last; ++j)
+    const index_t faces = index_t(this->face_offsets_.size() - 1);
+    this->face_normals_.resize(std::size_t(faces));
+    for (index_t f = 0; f < faces; ++f)
+      this->face_normals_[std::size_t(f)] = this->face_normal(f, position);
+  }
+
+  // The k vertices `moved` moved to `position`: refreshes the normals of the faces that
+  // use them and appends to `affected`, once each, the vertices of those faces (whose
+  // normal() changed).
+  template<class Position>
+  void moved(
+    const index_t* moved, std::size_t k, const Position& position, std::vector<index_t>& affected)
+  {
+    this->faces_.clear();
+    for (std::size_t i = 0; i < k; ++i)
+      for (std::int64_t a = this->vertex_offsets_[moved[i]];
+           a < this->vertex_offsets_[moved[i] + 1]; ++a)
       {
-        const std::int64_t next = j + 1 < last ? j + 1 : first;
-        newell += position(this->face_vertices_[std::size_t(j)])
-                    .cross(position(this->face_vertices_[std::size_t(next)]));
+        const index_t f = this->vertex_faces_[std::size_t(a)];
+        if (!this->face_seen_[std::size_t(f)])
+        {
+          this->face_seen_[std::size_t(f)] = 1;
+          this->faces_.push_back(f);
+        }
       }
-      const double length = newell.norm();
-      if (length > 0.0)
-        sum += newell / length;
+    const std::size_t start = affected.size();
+    for (index_t f : this->faces_)
+    {
+      this->face_seen_[std::size_t(f)] = 0;
+      this->face_normals_[std::size_t(f)] = this->face_normal(f, position);
+      for (std::int64_t j = this->face_offsets_[f]; j < this->face_offsets_[f + 1]; ++j)
+      {
+        const index_t v = this->face_vertices_[std::size_t(j)];
+        if (!this->seen_[std::size_t(v)])
+        {
+          this->seen_[std::size_t(v)] = 1;
+          affected.push_back(v);
+        }
+      }
     }
-    const double length = sum.norm();
-    return length > 0.0 ? Eigen::Vector3d(sum / length) : Eigen::Vector3d::Zero();
+    for (std::size_t i = start; i < affected.size(); ++i)
+      this->seen_[std::size_t(affected[i])] = 0;
+  }
+
+  // n_v from the kept face normals.
+  Eigen::Vector3d normal(index_t v) const
+  {
+    Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+    for (std::int64_t i = this->vertex_offsets_[v]; i < this->vertex_offsets_[v + 1]; ++i)
+      sum += this->face_normals_[std::size_t(this->vertex_faces_[std::size_t(i)])];
+    const float length = sum.norm();
+    return length > 0.0f ? Eigen::Vector3d((sum / length).cast<double>()) : Eigen::Vector3d::Zero();
+  }
+
+  // n_f (zero for a degenerate face).
+  template<class Position>
+  Eigen::Vector3f face_normal(index_t f, const Position& position) const
+  {
+    const std::int64_t first = this->face_offsets_[f], last = this->face_offsets_[f + 1];
+    Eigen::Vector3d newell = Eigen::Vector3d::Zero();
+    Eigen::Vector3d p = position(this->face_vertices_[std::size_t(last - 1)]);
+    for (std::int64_t j = first; j < last; ++j)
+    {
+      const Eigen::Vector3d q = position(this->face_vertices_[std::size_t(j)]);
+      newell += p.cross(q);
+      p = q;
+    }
+    const double length = newell.norm();
+    return length > 0.0 ? Eigen::Vector3f((newell / length).cast<float>())
+                        : Eigen::Vector3f::Zero();
   }
 
 private:
@@ -71,7 +121,9 @@ private:
   std::vector<index_t> face_vertices_;
   std::vector<std::int64_t> vertex_offsets_; // vertex -> faces, CSR
   std::vector<index_t> vertex_faces_;
-  std::vector<std::uint8_t> seen_; // scratch for affected()
+  std::vector<Eigen::Vector3f> face_normals_;
+  std::vector<std::uint8_t> seen_, face_seen_; // scratch for moved()
+  std::vector<index_t> faces_;
 };
 
 } // namespace geoshaping
