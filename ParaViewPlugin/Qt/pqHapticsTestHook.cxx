@@ -5,6 +5,7 @@
 
 #include <pqActiveObjects.h>
 #include <pqCoreUtilities.h>
+#include <pqDataRepresentation.h>
 #include <pqPipelineSource.h>
 #include <pqRenderView.h>
 #include <pqView.h>
@@ -315,6 +316,24 @@ void pqHapticsTestHook::writeResults()
     out << "output_points = " << output->GetNumberOfPoints() << "\n";
     out << "moved_points = " << moved << "\n";
     out << "max_displacement = " << largest.x() << " " << largest.y() << " " << largest.z() << "\n";
+  }
+  // How the deformation was drawn (docs/rendering.md): its representation type and the
+  // GeoShaping Surface representation's counters of sparse and full updates and uploads.
+  pqView* shownIn = pqActiveObjects::instance().activeView();
+  if (pqDataRepresentation* shown = source ? source->getRepresentation(shownIn) : nullptr)
+  {
+    vtkSMProxy* display = shown->getProxy();
+    display->UpdatePropertyInformation();
+    out << "representation = " << vtkSMPropertyHelper(display, "Representation").GetAsString()
+        << "\n";
+    for (const char* counter : { "NumberOfSparseUpdates", "NumberOfFullUpdates",
+           "NumberOfSparseBuilds", "NumberOfFullBuilds" })
+    {
+      if (display->GetProperty(counter))
+      {
+        out << counter << " = " << vtkSMPropertyHelper(display, counter).GetAsInt() << "\n";
+      }
+    }
   }
   if (!this->TimedOut && this->Started && input && output)
   {

@@ -262,6 +262,17 @@ def check_edits(results):
     assert results["redo_equals_released"] == "1", "after Redo the points are not the released ones"
 
 
+def check_sparse_frames(results):
+    """The dock's drag was drawn by the GeoShaping Surface representation (the default for
+    ChainMailDeformation, docs/rendering.md) and its frames followed the moved points:
+    after the first full draw, drag frames updated and uploaded only what changed."""
+    print("representation:", {k: v for k, v in results.items() if k.startswith(("repr", "Number"))})
+    assert results.get("representation") == "GeoShaping Surface", results
+    sparse, full = int(results["NumberOfSparseUpdates"]), int(results["NumberOfFullUpdates"])
+    assert sparse >= 3 and full < sparse, results
+    assert int(results["NumberOfSparseBuilds"]) >= 3, results
+
+
 def main():
     mode = sys.argv[1] if len(sys.argv) > 1 else "replay"
     out = os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_" + mode)
@@ -300,6 +311,7 @@ def main():
         check_recording(results, out, None)
         print("GUI touch test passed")
         return
+    check_sparse_frames(results)
     check_edits(results)
     if mode == "mouse":
         check_mouse(results)
