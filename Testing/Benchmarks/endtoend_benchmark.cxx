@@ -13,6 +13,13 @@
 //   5. a SceneSnapshot (grasping, anchor, stiffness) published to the servo loop.
 // Frames run back to back (the GUI caps them at its 16 ms timer, 62.5 fps).
 //
+// Mappers: the "malleability" and "plain" rows draw with VTK's vtkPolyDataMapper, which
+// rebuilds every buffer when points move (O(mesh)). The "sparse" rows draw as ParaView's
+// GeoShaping Surface representation does (docs/rendering.md): the filter output shared by
+// a vtkSparseSurface (PointsChanged after each update: bounds grown over the moved
+// points) drawn by vtkSparseSurfaceMapper (glBufferSubData of the moved points), coloured
+// by Malleability.
+//
 // Scenes: triangle grids (spacing 1, float points) of uniform malleability. Rigid (0) ones
 // move the whole connected mesh, so the displaced count is the mesh: 100 x 100, 317 x 317,
 // 1000 x 1000. "soft_100k_in_1M": a 1000 x 1000 grid of malleability 0.5 pulled just far
@@ -26,7 +33,8 @@
 // a new device sample), force_ok (the servo ticks, from the first scene on, whose force came
 // from a fresh scene: a scene older than ForceParams::stale_after, 100 ms, renders zero),
 // coverage (the window's fraction the surface covers: the rasteriser's fill), servo_hz,
-// servo_p99_us, servo_max_us (|period - 1 ms| over the run), realtime (whether the servo
+// servo_p99_us, servo_max_us (|period - 1 ms| over the run), sparse_uploads (sparse rows:
+// the share of frames the mapper uploaded only the moved points), realtime (whether the servo
 // thread got SCHED_FIFO: asked for only in the rigid_100k/malleability/servo_fifo row; the
 // interactor does not ask for it).
 //
@@ -38,6 +46,9 @@
 // servo never using a published scene) ends with "ERROR OCCURRED".
 #include "bench_scenes.h"
 #include "vtkChainMailDeformationFilter.h"
+#include "vtkGrowingBoundsPoints.h"
+#include "vtkSparseSurface.h"
+#include "vtkSparseSurfaceMapper.h"
 #include "vtk_test_meshes.h"
 
 #include "geoshaping/haptics/force_model.h"
@@ -114,6 +125,10 @@ struct Scene
   vtkNew<vtkChainMailDeformationFilter> filter;
   vtkNew<vtkPolyDataMapper> mapper;
   vtkNew<vtkActor> actor;
+  // The sparse rows: the filter output as a vtkSparseSurface, and its mapper.
+  vtkNew<vtkSparseSurface> surface;
+  vtkNew<vtkSparseSurfaceMapper> sparseMapper;
+  vtkPoints* surfacePoints = nullptr; // the output points the surface shares
   vtkIdType grasp = 0;
   double scale = 1.0; // scene units per device metre
   double lift = 0.03; // m
@@ -176,6 +191,10 @@ Scene& GetScene(const SceneSpec& spec)
   s->mapper->SetScalarModeToUsePointFieldData();
   s->mapper->SelectColorArray("Malleability");
   s->mapper->SetScalarRange(0.0, 1.0);
+  s->sparseMapper->SetInputData(s->surface);
+  s->sparseMapper->SetScalarModeToUsePointFieldData();
+  s->sparseMapper->SelectColorArray("Malleability");
+  s->sparseMapper->SetScalarRange(0.0, 1.0);
   s->actor->SetMapper(s->mapper);
   v.renderer->AddActor(s->actor);
 
@@ -220,12 +239,35 @@ double CoveredFraction(vtkRenderWindow* window)
   return double(covered) / double(rgb->GetNumberOfTuples());
 }
 
-void BM_Frame(benchmark::State& state, const SceneSpec* spec, bool colour, bool fifo)
+// The sparse rows' surface follows the filter output: shares its points (which list
+// each update's moved ids) the first time, then only grows its bounds over them. Any
+// other output points (a full rewrite): adopt again.
+void FollowOutput(Scene& scene)
+{
+  auto* output = vtkPolyData::SafeDownCast(scene.filter->GetOutput());
+  auto* points = vtkGrowingBoundsPoints::SafeDownCast(output->GetPoints());
+  if (points && points == scene.surfacePoints)
+  {
+    scene.surface->PointsChanged(nullptr);
+    return;
+  }
+  scene.surface->Adopt(output, points);
+  scene.surfacePoints = points;
+}
+
+void BM_Frame(benchmark::State& state, const SceneSpec* spec, bool colour, bool fifo, bool sparse)
 {
   Scene& scene = GetScene(*spec);
   View& v = GetView();
   vtkChainMailDeformationFilter* filter = scene.filter;
   scene.mapper->SetScalarVisibility(colour);
+  scene.actor->SetMapper(
+    sparse ? static_cast<vtkMapper*>(scene.sparseMapper) : static_cast<vtkMapper*>(scene.mapper));
+  if (sparse)
+  {
+    scene.surfacePoints = nullptr;
+    FollowOutput(scene);
+  }
 
   ServoConfig config;
   config.realtime_priority = fifo ? 80 : 0; // the interactor's default is 0
@@ -256,6 +298,7 @@ void BM_Frame(benchmark::State& state, const SceneSpec* spec, bool colour, bool 
   }
   v.window->Render(); // the mapper's first build for this colouring, untimed
   v.window->WaitForCompletion();
+  const int sparse_builds0 = scene.sparseMapper->GetNumberOfSparseBuilds();
 
   std::uint64_t sequence = 0, fresh = 0, displaced = 0;
   // Servo ticks and zero-force ticks when the first published scene reached the servo.
@@ -281,6 +324,8 @@ void BM_Frame(benchmark::State& state, const SceneSpec* spec, bool colour, bool 
     filter->SetDisplacement(d.x(), d.y(), d.z());
     // 3. Deform.
     filter->Update();
+    if (sparse)
+      FollowOutput(scene);
     const auto t1 = Clock::now();
     // 4. Render.
     v.renderer->ResetCameraClippingRange();
@@ -383,6 +428,9 @@ void BM_Frame(benchmark::State& state, const SceneSpec* spec, bool colour, bool 
   state.counters["servo_p99_us"] = servo.p99_jitter_us;
   state.counters["servo_max_us"] = servo.max_jitter_us;
   state.counters["realtime"] = loop.realtime() ? 1.0 : 0.0;
+  if (sparse) // the share of frames whose upload was only the moved points
+    state.counters["sparse_uploads"] =
+      double(scene.sparseMapper->GetNumberOfSparseBuilds() - sparse_builds0) / n;
 }
 
 } // namespace
@@ -411,9 +459,14 @@ int main(int argc, char** argv)
         const std::string name = std::string("frame/") + spec.name +
                                  (colour ? "/malleability" : "/plain") +
                                  (fifo ? "/servo_fifo" : "");
-        benchmark::RegisterBenchmark(name.c_str(), BM_Frame, &spec, colour, fifo)
+        benchmark::RegisterBenchmark(name.c_str(), BM_Frame, &spec, colour, fifo, false)
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
+        if (colour && !fifo) // the same frame drawn as the GeoShaping Surface draws it
+          benchmark::RegisterBenchmark((std::string("frame/") + spec.name + "/sparse").c_str(),
+            BM_Frame, &spec, true, false, true)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
       }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
