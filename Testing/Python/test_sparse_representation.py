@@ -6,7 +6,10 @@ the deformation's default representation is GeoShaping Surface; after a drag of 
 frames its counters show sparse updates (surface and GPU buffers); its image equals the
 stock Surface image of the same output (vtkImageDifference, the usual 0.05 threshold); a
 frame that skips an update (two UpdatePipeline calls, one render) falls back to the full
-path and still draws the current shape. Run under xvfb-run pvbatch."""
+path and still draws the current shape. Painting during a drag re-maps only the painted
+colours. Display properties changed mid-drag (opacity, lighting, colour map, scalar bar,
+solid colour) cost one full rebuild, then the drag is sparse again and the image still
+equals the stock one. Run under xvfb-run pvbatch."""
 import os
 
 from geoshaping_testing import *  # noqa: F401,F403
@@ -164,3 +167,69 @@ SaveScreenshot(stock, view)
 error = image_error(fast, stock)
 check(error <= 0.05, "paint during drag: the sparse image equals the stock Surface image "
       "(error %g)" % error)
+
+
+# The usual display properties keep working on the fast path: mid-drag the user turns
+# down the opacity, changes the lighting and the colour map, shows the scalar bar, then
+# switches to a solid colour; the drag goes on and each image equals the stock Surface's.
+def compare_with_stock(name, display, view):
+    fast = os.path.join(TMP, "sparse_%s_fast.png" % name)
+    stock = os.path.join(TMP, "sparse_%s_stock.png" % name)
+    SaveScreenshot(fast, view)
+    display.Representation = "Surface"
+    Render(view)
+    SaveScreenshot(stock, view)
+    display.Representation = "GeoShaping Surface"
+    Render(view)
+    error = image_error(fast, stock)
+    check(error <= 0.05, "%s: the sparse image equals the stock Surface image (error %g)"
+          % (name, error))
+
+
+Delete(display)
+Delete(view)
+calc = Calculator(Input=triangulated_plane(40), ResultArrayName="Malleability",
+                  ResultArrayType="Float", Function="0.2 + 0.6 * abs(sin(coordsX / 5))")
+chain = ChainMailDeformation(Input=calc)
+chain.MalleabilityArray = ["POINTS", "Malleability"]
+chain.GraspPointId = 20 * 41 + 20
+view = CreateRenderView(ViewSize=[400, 300])
+display = Show(chain, view)
+ColorBy(display, ("POINTS", "Malleability"))
+view.CameraPosition = [-30, -60, 45]
+view.CameraFocalPoint = [20, 20, 0]
+view.CameraViewUp = [0, 0, 1]
+ResetCamera(view)
+Render(view)
+lift = [1.5]
+
+
+def drag(frames):
+    start = counters(display)
+    for _ in range(frames):
+        lift[0] += 1.5
+        chain.Displacement = [0.0, 0.0, lift[0]]
+        chain.UpdatePipeline()
+        Render(view)
+    end = counters(display)
+    return {k: end[k] - start[k] for k in end}
+
+
+drag(2)
+display.Opacity = 0.6
+display.Specular = 0.5
+display.Interpolation = "Flat"
+lut = GetColorTransferFunction("Malleability")
+lut.ApplyPreset("Viridis (matplotlib)", True)
+lut.RescaleTransferFunction(0.2, 0.8)
+display.SetScalarBarVisibility(view, True)
+moved = drag(4)
+check(moved["NumberOfSparseUpdates"] == 4 and moved["NumberOfSparseBuilds"] >= 3,
+      "restyled: the drag stays sparse after a one-off rebuild (%s)" % moved)
+compare_with_stock("restyled", display, view)
+ColorBy(display, None)
+display.DiffuseColor = [0.8, 0.5, 0.2]
+moved = drag(3)
+check(moved["NumberOfSparseUpdates"] == 3 and moved["NumberOfSparseBuilds"] >= 2,
+      "solid colour: the drag stays sparse after a one-off rebuild (%s)" % moved)
+compare_with_stock("solid", display, view)
