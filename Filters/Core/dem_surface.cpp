@@ -41,6 +41,14 @@ const char* validate(const GeographicGrid& g, index_t stride, const LocalProject
     return "the projection's centre and Earth radius must be finite (radius > 0)";
   if (double(strided(g.rows, stride)) * double(strided(g.cols, stride)) > 2147483647.0)
     return "more than 2^31 - 1 vertices";
+  // Finite bounds can still give infinite spacing or coordinates (longitudes -1e308 and
+  // 1e308): the spans and the four corners must be finite (the other samples lie between).
+  double x[4], y[4];
+  for (int k = 0; k < 4; ++k)
+    project(g, p, k & 1 ? g.lon_last : g.lon_first, k & 2 ? g.lat_last : g.lat_first, x[k], y[k]);
+  if (!std::isfinite(g.lon_last - g.lon_first) || !std::isfinite(g.lat_last - g.lat_first) ||
+      !std::isfinite(x[0] + x[1] + x[2] + x[3] + y[0] + y[1] + y[2] + y[3]))
+    return "the bounds give infinite x or y: the projected coordinates must be finite";
   return "";
 }
 

@@ -18,6 +18,7 @@
 
 #include "vtk_zlib.h" // zlib through VTK's module (the system's on Debian)
 
+#include <charconv>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -31,6 +32,11 @@ vtkStandardNewMacro(vtkNpzDEMReader);
 
 namespace
 {
+// Deflate's largest expansion: a 258-byte match in 2 bits, 1032:1, plus a few bytes for
+// the block header and a first literal.
+constexpr std::uint64_t DeflateMaxRatio = 1032;
+constexpr std::uint64_t DeflateSlack = 64;
+
 // The entries of a .npz (a zip archive of .npy files), read through its central
 // directory; stored and deflated entries. Throws std::runtime_error with what is wrong.
 class NpzArchive
@@ -75,7 +81,10 @@ public:
     }
   }
 
-  // The uncompressed bytes of entry `name`.
+  // The uncompressed bytes of entry `name`. The sizes in the zip headers are checked
+  // against what the archive's bytes can hold before anything is allocated: a stored
+  // entry is as long as its data, a deflated one at most DeflateMaxRatio times as long
+  // plus DeflateSlack (so an entry is at most about 1032 x the file's size).
   std::vector<char> Read(const std::string& name) const
   {
     auto it = this->Entries.find(name);
@@ -88,23 +97,33 @@ public:
       throw std::runtime_error(name + ": damaged local header");
     const std::size_t data = e.Local + 30 + this->U16(e.Local + 26) + this->U16(e.Local + 28);
     this->Need(data, e.Compressed);
-    std::vector<char> out(e.Size);
-    if (e.Method == 0)
-    {
-      if (e.Compressed != e.Size)
-        throw std::runtime_error(name + ": stored entry with two sizes");
-      std::memcpy(out.data(), &this->Bytes[data], e.Size);
-      return out;
-    }
-    if (e.Method != 8)
+    if (e.Method == 0 && e.Compressed != e.Size)
+      throw std::runtime_error(name + ": a stored entry of " + std::to_string(e.Compressed) +
+                               " bytes claims " + std::to_string(e.Size) + " bytes uncompressed");
+    if (e.Method == 8 &&
+        std::uint64_t(e.Size) > DeflateMaxRatio * std::uint64_t(e.Compressed) + DeflateSlack)
+      throw std::runtime_error(name + ": the entry claims " + std::to_string(e.Size) +
+                               " bytes uncompressed from " + std::to_string(e.Compressed) +
+                               " compressed bytes, more than deflate can produce (" +
+                               std::to_string(DeflateMaxRatio) + " per byte)");
+    if (e.Method != 0 && e.Method != 8)
       throw std::runtime_error(name + ": compression method " + std::to_string(e.Method) +
                                " is not supported (stored or deflated only)");
+    std::vector<char> out(e.Size);
+    const char* in = this->Bytes.data() + data;
+    if (e.Method == 0)
+    {
+      if (e.Size > 0) // memcpy from or to a null pointer is undefined, even for 0 bytes
+        std::memcpy(out.data(), in, e.Size);
+      return out;
+    }
     z_stream z{};
     if (inflateInit2(&z, -MAX_WBITS) != Z_OK)
       throw std::runtime_error(name + ": zlib inflateInit2 failed");
-    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(&this->Bytes[data]));
+    Bytef none = 0; // zlib refuses a null output buffer, even an empty one
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in));
     z.avail_in = e.Compressed;
-    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.next_out = e.Size > 0 ? reinterpret_cast<Bytef*>(out.data()) : &none;
     z.avail_out = e.Size;
     const int status = inflate(&z, Z_FINISH);
     const uLong produced = z.total_out;
@@ -161,12 +180,64 @@ std::string HeaderValue(const std::string& header, const std::string& key)
   while (v < header.size() && header[v] == ' ')
     ++v;
   const char open = v < header.size() ? header[v] : '\0';
-  const char close = open == '(' ? ')' : open == '\'' ? '\'' : ',';
-  const std::size_t end = header.find(close, v + 1);
+  if (open != '(' && open != '\'')
+  {
+    // A bare value (True, False): up to the next ',' or '}', without trailing spaces.
+    std::size_t end = header.find_first_of(",}", v);
+    if (end == std::string::npos)
+      throw std::runtime_error("npy header: unterminated value for '" + key + "'");
+    while (end > v && header[end - 1] == ' ')
+      --end;
+    return header.substr(v, end - v);
+  }
+  const std::size_t end = header.find(open == '(' ? ')' : '\'', v + 1);
   if (end == std::string::npos)
     throw std::runtime_error("npy header: unterminated value for '" + key + "'");
-  return open == '(' || open == '\'' ? header.substr(v + 1, end - v - 1)
-                                     : header.substr(v, end - v);
+  return header.substr(v + 1, end - v - 1);
+}
+
+// A tuple of sizes as numpy writes it: "", "5," or "3, 4" (the trailing comma only after
+// the last item); false for anything else (a fraction, a sign, an empty item, junk).
+bool ParseShape(const std::string& text, std::vector<std::size_t>& shape)
+{
+  std::stringstream items(text);
+  std::string item;
+  bool ended = false; // an empty item was seen: only allowed last, after a size
+  while (std::getline(items, item, ','))
+  {
+    const std::size_t first = item.find_first_not_of(' ');
+    if (first == std::string::npos)
+    {
+      if (ended || shape.empty())
+        return false;
+      ended = true;
+      continue;
+    }
+    if (ended)
+      return false;
+    const std::size_t last = item.find_last_not_of(' ');
+    const char* begin = item.data() + first;
+    const char* end = item.data() + last + 1;
+    std::size_t size = 0;
+    const auto result = std::from_chars(begin, end, size);
+    if (result.ec != std::errc() || result.ptr != end)
+      return false;
+    shape.push_back(size);
+  }
+  return true;
+}
+
+// The item size of a supported dtype string ('<f8', '|u1', ...), exactly; 0 otherwise.
+int ItemSize(const std::string& descr)
+{
+  if (descr.size() < 3 || (descr[1] != 'f' && descr[1] != 'i' && descr[1] != 'u'))
+    return 0;
+  int size = 0;
+  const char* end = descr.data() + descr.size();
+  const auto result = std::from_chars(descr.data() + 2, end, size);
+  const bool exact = result.ec == std::errc() && result.ptr == end &&
+                     descr.compare(2, std::string::npos, std::to_string(size)) == 0; // not '<f08'
+  return exact ? size : 0;
 }
 
 template<class T>
@@ -205,27 +276,35 @@ NpyArray ParseNpy(const std::vector<char>& bytes, const std::string& name)
     throw fail("truncated npy header");
   const std::string header(&bytes[start], length);
   const std::string descr = HeaderValue(header, "descr");
-  if (HeaderValue(header, "fortran_order").find("False") == std::string::npos)
+  const std::string fortranOrder = HeaderValue(header, "fortran_order");
+  if (fortranOrder == "True")
     throw fail("Fortran-ordered arrays are not supported");
+  if (fortranOrder != "False")
+    throw fail("fortran_order '" + fortranOrder + "' is not True or False");
   NpyArray array;
-  std::stringstream shape(HeaderValue(header, "shape"));
-  std::string item;
+  const std::string shape = HeaderValue(header, "shape");
+  if (!ParseShape(shape, array.Shape))
+    throw fail("shape '" + shape + "' is not a tuple of sizes");
   std::size_t count = 1;
-  while (std::getline(shape, item, ','))
+  for (const std::size_t n : array.Shape)
   {
-    if (item.find_first_not_of(' ') == std::string::npos)
-      continue;
-    array.Shape.push_back(std::stoul(item));
-    count *= array.Shape.back();
+    if (n != 0 && count > SIZE_MAX / n)
+      throw fail("the shape's size overflows (shape '" + shape + "')");
+    count *= n;
   }
   if (descr.size() < 3 || (descr[0] != '<' && descr[0] != '|' && descr[0] != '='))
     throw fail("dtype '" + descr + "' is not little-endian");
   const char kind = descr[1];
-  const int size = std::atoi(descr.c_str() + 2);
+  const int size = ItemSize(descr);
+  if (size == 0)
+    throw fail("dtype '" + descr + "' is not supported (integers or floats)");
+  // The data is exactly shape product x item size: no more, no less.
   const std::size_t data = start + length;
-  if (size <= 0 || count > (bytes.size() - data) / std::size_t(size))
-    throw fail("truncated array data");
-  const char* p = &bytes[data];
+  const std::size_t available = bytes.size() - data;
+  if (count > available / std::size_t(size) || count * std::size_t(size) != available)
+    throw fail(std::to_string(available) + " bytes of data for " + std::to_string(count) +
+               " values of " + std::to_string(size) + " bytes");
+  const char* p = bytes.data() + data;
   if (kind == 'f' && size == 4)
     Convert<float>(p, count, array.Values);
   else if (kind == 'f' && size == 8)
@@ -256,6 +335,35 @@ double Scalar(const NpzArchive& npz, const std::string& key)
     throw std::runtime_error(key + ".npy: expected one value");
   return a.Values[0];
 }
+
+// The surface of a validated grid, with its Elevation, LonLatBounds and Projection.
+void FillOutput(vtkPolyData* output, const geoshaping::GeographicGrid& grid, int stride,
+  const geoshaping::LocalProjection& projection)
+{
+  const geoshaping::SampleMesh mesh = geoshaping::dem_surface(grid, stride, projection);
+  output->SetPoints(vtkGeoShapingAdapter::MakePoints(mesh.xyz));
+  output->SetPolys(vtkGeoShapingAdapter::MakeCells(mesh.connectivity, 3));
+  vtkNew<vtkDoubleArray> elevation;
+  elevation->SetName("Elevation");
+  elevation->SetNumberOfTuples(mesh.num_points());
+  for (geoshaping::index_t i = 0; i < mesh.num_points(); ++i)
+    elevation->SetValue(i, mesh.xyz[3 * std::size_t(i) + 2]);
+  output->GetPointData()->AddArray(elevation);
+  vtkNew<vtkDoubleArray> bounds;
+  bounds->SetName("LonLatBounds");
+  for (double v : { grid.lon_first, grid.lon_last, grid.lat_first, grid.lat_last })
+    bounds->InsertNextValue(v);
+  output->GetFieldData()->AddArray(bounds);
+  vtkNew<vtkStringArray> about;
+  about->SetName("Projection");
+  std::ostringstream text;
+  text.precision(17);
+  text << "local equirectangular about the grid centre, R = " << projection.earth_radius
+       << " m, centre at " << projection.centre_easting << " E " << projection.centre_northing
+       << " N; z = elevation (m); stride " << stride;
+  about->InsertNextValue(text.str());
+  output->GetFieldData()->AddArray(about);
+}
 } // namespace
 
 vtkNpzDEMReader::vtkNpzDEMReader()
@@ -280,13 +388,21 @@ int vtkNpzDEMReader::RequestData(
     vtkErrorMacro("No FileName: give the .npz DEM to read.");
     return 0;
   }
-  geoshaping::GeographicGrid grid;
+  // Every failure, std::bad_alloc included, is an error and an empty output.
   try
   {
     const NpzArchive npz(this->FileName);
     NpyArray elevation = ParseNpy(npz.Read("elevation.npy"), "elevation.npy");
     if (elevation.Shape.size() != 2)
       throw std::runtime_error("elevation.npy: expected a 2D array");
+    // Rows and columns are int (geoshaping::index_t) from here on.
+    if (elevation.Shape[0] > std::size_t(VTK_INT_MAX) ||
+        elevation.Shape[1] > std::size_t(VTK_INT_MAX))
+      throw std::runtime_error("elevation.npy: " + std::to_string(elevation.Shape[0]) + " x " +
+                               std::to_string(elevation.Shape[1]) +
+                               " is too large a grid (at most " + std::to_string(VTK_INT_MAX) +
+                               " rows and columns)");
+    geoshaping::GeographicGrid grid;
     grid.rows = geoshaping::index_t(elevation.Shape[0]);
     grid.cols = geoshaping::index_t(elevation.Shape[1]);
     grid.elevation = std::move(elevation.Values);
@@ -296,43 +412,19 @@ int vtkNpzDEMReader::RequestData(
     grid.lon_last = Scalar(npz, "xmax");
     grid.lat_first = Scalar(npz, "ymin");
     grid.lat_last = Scalar(npz, "ymax");
+    geoshaping::LocalProjection projection;
+    projection.centre_easting = this->CentreEasting;
+    projection.centre_northing = this->CentreNorthing;
+    if (const char* why = geoshaping::validate(grid, this->Stride, projection); *why)
+      throw std::runtime_error(why);
+    FillOutput(output, grid, this->Stride, projection);
   }
   catch (const std::exception& e)
   {
+    output->Initialize();
     vtkErrorMacro(<< this->FileName << ": " << e.what());
     return 0;
   }
-  geoshaping::LocalProjection projection;
-  projection.centre_easting = this->CentreEasting;
-  projection.centre_northing = this->CentreNorthing;
-  if (const char* why = geoshaping::validate(grid, this->Stride, projection); *why)
-  {
-    vtkErrorMacro(<< this->FileName << ": " << why);
-    return 0;
-  }
-  const geoshaping::SampleMesh mesh = geoshaping::dem_surface(grid, this->Stride, projection);
-  output->SetPoints(vtkGeoShapingAdapter::MakePoints(mesh.xyz));
-  output->SetPolys(vtkGeoShapingAdapter::MakeCells(mesh.connectivity, 3));
-  vtkNew<vtkDoubleArray> elevation;
-  elevation->SetName("Elevation");
-  elevation->SetNumberOfTuples(mesh.num_points());
-  for (geoshaping::index_t i = 0; i < mesh.num_points(); ++i)
-    elevation->SetValue(i, mesh.xyz[3 * std::size_t(i) + 2]);
-  output->GetPointData()->AddArray(elevation);
-  vtkNew<vtkDoubleArray> bounds;
-  bounds->SetName("LonLatBounds");
-  for (double v : { grid.lon_first, grid.lon_last, grid.lat_first, grid.lat_last })
-    bounds->InsertNextValue(v);
-  output->GetFieldData()->AddArray(bounds);
-  vtkNew<vtkStringArray> about;
-  about->SetName("Projection");
-  std::ostringstream text;
-  text.precision(17);
-  text << "local equirectangular about the grid centre, R = " << projection.earth_radius
-       << " m, centre at " << projection.centre_easting << " E " << projection.centre_northing
-       << " N; z = elevation (m); stride " << this->Stride;
-  about->InsertNextValue(text.str());
-  output->GetFieldData()->AddArray(about);
   return 1;
 }
 

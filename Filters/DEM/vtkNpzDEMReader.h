@@ -15,7 +15,10 @@
  * column is kept. docs/painting.md has the formula and its accuracy.
  *
  * The archive is read with zlib (stored and deflated entries); a damaged or
- * unsupported file gives an error naming the entry and an empty output.
+ * unsupported file gives an error naming the entry and an empty output. Sizes read from
+ * the file are checked against what it can hold before any allocation (a deflated entry
+ * at most 1032 x its compressed size), .npy headers must be exact, and no exception
+ * escapes; docs/painting.md gives the memory and time bounds.
  */
 #ifndef vtkNpzDEMReader_h
 #define vtkNpzDEMReader_h

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <unordered_map>
 
 using namespace vtkGocadTSurfText;
@@ -14,6 +15,15 @@ constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 // A text line of a TSurf is short; a longer one means binary data without newlines.
 constexpr std::size_t MaxLineLength = 1 << 20;
 constexpr int MaxComponents = 1024;
+// Memory is bounded by the file's size (docs/tsurf.md, "Memory and time"): every point
+// holds a value of every property of the file, and a vertex line that does not give them
+// (a VRTX, or a PVRTX of a surface without them) is padded with NaN; a property new to a
+// later surface is padded on every earlier point. So that a few short lines cannot make
+// gigabytes of padding (64 properties of ESIZES 1024 gave 65,536 NaN per 14-byte VRTX),
+// the values stored over all properties and points may not exceed the number of bytes
+// read so far plus PaddingPerPoint per point; checked before they are stored. A PVRTX
+// giving its values always fits (each value takes at least 2 bytes of its line).
+constexpr std::uint64_t PaddingPerPoint = 64;
 
 struct ParseFailure
 {
@@ -49,6 +59,9 @@ public:
       this->Fail("no 'GOCAD TSurf' object in the file");
   }
 
+  // The line being read or handled.
+  std::size_t GetLineNumber() const { return this->LineNumber; }
+
 private:
   // State of the surface being read; vertex ids are local to a surface.
   struct SurfaceState
@@ -75,9 +88,13 @@ private:
 
   bool NextLine()
   {
-    if (!std::getline(this->Input, this->Line))
-      return false;
     ++this->LineNumber;
+    if (!std::getline(this->Input, this->Line))
+    {
+      --this->LineNumber;
+      return false;
+    }
+    this->BytesRead += this->Line.size() + 1;
     if (!this->Line.empty() && this->Line.back() == '\r')
       this->Line.pop_back();
     if (this->Line.size() > MaxLineLength)
@@ -118,7 +135,7 @@ private:
   void SkipObject(const std::string& type)
   {
     this->Data.Warnings.push_back("line " + std::to_string(this->LineNumber) +
-      ": skipped a GOCAD " + type + " object (only TSurf is read)");
+                                  ": skipped a GOCAD " + type + " object (only TSurf is read)");
     while (this->NextLine())
     {
       const Tokens t = Tokenize(this->Line);
@@ -152,10 +169,7 @@ private:
       this->S.TFaceSeen = true;
     }
     else if (k == "PROPERTIES")
-    {
-      this->S.PropertyNames.assign(t.begin() + 1, t.end());
-      this->S.Resolved = false;
-    }
+      this->ReadPropertyNames(t);
     else if (k == "ESIZES")
       this->ReadESizes(t);
     else if (k == "NO_DATA_VALUES")
@@ -197,6 +211,41 @@ private:
         this->Fail("unexpected end of file inside a { } block (truncated file?)");
       text = this->Line;
     }
+  }
+
+  // An empty name ("") would give an unnamed array, which the writer leaves out: it is
+  // named unnamed_<position> instead (with '_' appended until no other name is the same).
+  void ReadPropertyNames(const Tokens& t)
+  {
+    Tokens& names = this->S.PropertyNames;
+    names.assign(t.begin() + 1, t.end());
+    for (std::size_t i = 0; i < names.size(); ++i)
+    {
+      if (!names[i].empty())
+        continue;
+      std::string name = "unnamed_" + std::to_string(i + 1);
+      while (std::find(names.begin(), names.end(), name) != names.end())
+        name += '_';
+      names[i] = name;
+      this->Data.Warnings.push_back("line " + std::to_string(this->LineNumber) + ": property " +
+                                    std::to_string(i + 1) + " has an empty name, read as " +
+                                    Quote(name));
+    }
+    this->S.Resolved = false;
+  }
+
+  // Refuses (before storing them) property values beyond the bound of PaddingPerPoint.
+  void CheckPropertyValues(
+    std::uint64_t values, std::uint64_t points, const std::string& what) const
+  {
+    const std::uint64_t allowed = this->BytesRead + PaddingPerPoint * points;
+    if (values > allowed)
+      this->Fail(what + " would make the properties hold " + std::to_string(values) +
+                 " values for " + std::to_string(points) + " points from " +
+                 std::to_string(this->BytesRead) + " bytes, more than the " +
+                 std::to_string(allowed) + " allowed (one per byte read plus " +
+                 std::to_string(PaddingPerPoint) +
+                 " per point; the values a vertex line does not give are padded with NaN)");
   }
 
   void ReadESizes(const Tokens& t)
@@ -247,30 +296,38 @@ private:
       s.ESizes.assign(n, 1);
     if (s.ESizes.size() != n)
       this->Fail("ESIZES gives " + std::to_string(s.ESizes.size()) + " sizes for " +
-        std::to_string(n) + " PROPERTIES");
+                 std::to_string(n) + " PROPERTIES");
     if (!s.NoData.empty() && s.NoData.size() != n)
       this->Fail("NO_DATA_VALUES gives " + std::to_string(s.NoData.size()) + " values for " +
-        std::to_string(n) + " PROPERTIES");
+                 std::to_string(n) + " PROPERTIES");
     auto& global = this->Data.Properties;
     s.LocalOffset.assign(n, 0);
     s.TotalComponents = 0;
     std::vector<int> localToGlobal(n);
+    // The padding of the new properties on the points already read, checked first.
+    const std::uint64_t points = this->Data.GetNumberOfPoints();
+    std::uint64_t padding = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (this->PropertyIndex.count(s.PropertyNames[i]) == 0)
+        padding += points * static_cast<std::uint64_t>(s.ESizes[i]);
+    this->CheckPropertyValues(
+      this->PropertyValues + padding, points, "the new properties of this surface");
     for (std::size_t i = 0; i < n; ++i)
     {
       s.LocalOffset[i] = s.TotalComponents;
       s.TotalComponents += s.ESizes[i];
-      auto it = std::find_if(global.begin(), global.end(),
-        [&](const vtkGocadTSurfProperty& p) { return p.Name == s.PropertyNames[i]; });
-      if (it == global.end())
+      const auto found = this->PropertyIndex.emplace(s.PropertyNames[i], global.size());
+      if (found.second)
       {
         vtkGocadTSurfProperty p{ s.PropertyNames[i], s.ESizes[i], {} };
-        p.Values.assign(this->Data.GetNumberOfPoints() * s.ESizes[i], NaN);
+        p.Values.assign(points * s.ESizes[i], NaN);
         global.push_back(std::move(p));
-        it = global.end() - 1;
+        this->PropertyValues += points * s.ESizes[i];
+        this->ComponentsPerPoint += s.ESizes[i];
       }
-      else if (it->NumberOfComponents != s.ESizes[i])
-        this->Fail("property " + Quote(it->Name) + " changes its number of components");
-      localToGlobal[i] = static_cast<int>(it - global.begin());
+      else if (global[found.first->second].NumberOfComponents != s.ESizes[i])
+        this->Fail("property " + Quote(s.PropertyNames[i]) + " changes its number of components");
+      localToGlobal[i] = static_cast<int>(found.first->second);
     }
     s.GlobalToLocal.assign(global.size(), -1);
     for (std::size_t i = 0; i < n; ++i)
@@ -287,14 +344,17 @@ private:
     const int expected = withProperties ? this->S.TotalComponents : 0;
     if (withProperties && t.size() != static_cast<std::size_t>(5 + expected))
       this->Fail("PVRTX needs " + std::to_string(expected) + " property values, found " +
-        std::to_string(t.size() - 5));
+                 std::to_string(t.size() - 5));
     const std::int64_t id = this->Id(t[1]);
     double xyz[3];
     for (int c = 0; c < 3; ++c)
       xyz[c] = this->Number(t[2 + c], "coordinate");
     const auto point = static_cast<std::int64_t>(this->Data.GetNumberOfPoints());
+    this->CheckPropertyValues(this->PropertyValues + this->ComponentsPerPoint,
+      static_cast<std::uint64_t>(point) + 1, t[0] + " " + t[1]);
     if (!this->S.IdToPoint.emplace(id, point).second)
       this->Fail("vertex id " + std::to_string(id) + " is defined twice");
+    this->PropertyValues += this->ComponentsPerPoint;
     this->Data.Points.insert(this->Data.Points.end(), xyz, xyz + 3);
     for (std::size_t g = 0; g < this->Data.Properties.size(); ++g)
     {
@@ -323,8 +383,8 @@ private:
     const std::int64_t ref = this->Id(t[2]);
     const auto it = this->S.IdToPoint.find(ref);
     if (it == this->S.IdToPoint.end())
-      this->Fail(t[0] + " " + std::to_string(id) + " refers to unknown vertex id " +
-        std::to_string(ref));
+      this->Fail(
+        t[0] + " " + std::to_string(id) + " refers to unknown vertex id " + std::to_string(ref));
     if (!this->S.IdToPoint.emplace(id, it->second).second)
       this->Fail("vertex id " + std::to_string(id) + " is defined twice");
   }
@@ -351,21 +411,36 @@ private:
   std::string Line;
   std::size_t LineNumber = 0;
   SurfaceState S;
+  std::uint64_t BytesRead = 0;          // lines read so far, with their line ends
+  std::uint64_t PropertyValues = 0;     // values stored over all properties and points
+  std::uint64_t ComponentsPerPoint = 0; // sum of NumberOfComponents over all properties
+  std::unordered_map<std::string, std::size_t> PropertyIndex; // name -> Data.Properties
 };
 }
 
 bool vtkGocadTSurfParse(std::istream& input, vtkGocadTSurfData& data, std::string& error)
 {
+  Parser parser(input, data);
   try
   {
-    Parser(input, data).Run();
+    parser.Run();
     return true;
   }
   catch (const ParseFailure& failure)
   {
     error = failure.Message;
-    return false;
   }
+  // Nothing may escape into the caller (ParaView): an allocation that fails, or any other
+  // exception from the stream or the standard library, is an error of the file's line.
+  catch (const std::bad_alloc&)
+  {
+    error = "line " + std::to_string(parser.GetLineNumber()) + ": out of memory";
+  }
+  catch (const std::exception& e)
+  {
+    error = "line " + std::to_string(parser.GetLineNumber()) + ": " + e.what();
+  }
+  return false;
 }
 
 bool vtkGocadTSurfLooksLikeTSurf(std::istream& input)

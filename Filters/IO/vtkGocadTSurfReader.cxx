@@ -18,13 +18,14 @@
 
 #include "vtkGocadTSurfParser.h"
 
+#include <exception>
 #include <fstream>
 
 vtkStandardNewMacro(vtkGocadTSurfReader);
 
 namespace
 {
-template <typename ArrayT, typename ValueT>
+template<typename ArrayT, typename ValueT>
 vtkNew<ArrayT> MakeArray(const char* name, const std::vector<ValueT>& values, int components)
 {
   vtkNew<ArrayT> array;
@@ -126,17 +127,29 @@ int vtkGocadTSurfReader::RequestData(
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
     return 0;
   }
-  vtkGocadTSurfData data;
-  std::string error;
-  if (!vtkGocadTSurfParse(file, data, error))
+  // No exception may escape into ParaView: the parser turns its own into errors, and an
+  // allocation failing here (std::bad_alloc) is an error too.
+  try
   {
-    vtkErrorMacro("GOCAD TSurf file '" << this->FileName << "', " << error);
-    this->SetErrorCode(vtkErrorCode::FileFormatError);
+    vtkGocadTSurfData data;
+    std::string error;
+    if (!vtkGocadTSurfParse(file, data, error))
+    {
+      vtkErrorMacro("GOCAD TSurf file '" << this->FileName << "', " << error);
+      this->SetErrorCode(vtkErrorCode::FileFormatError);
+      return 0;
+    }
+    for (const auto& warning : data.Warnings)
+      vtkWarningMacro("GOCAD TSurf file '" << this->FileName << "', " << warning);
+    Fill(output, data);
+  }
+  catch (const std::exception& e)
+  {
+    output->Initialize();
+    vtkErrorMacro("GOCAD TSurf file '" << this->FileName << "': " << e.what());
+    this->SetErrorCode(vtkErrorCode::UnknownError);
     return 0;
   }
-  for (const auto& warning : data.Warnings)
-    vtkWarningMacro("GOCAD TSurf file '" << this->FileName << "', " << warning);
-  Fill(output, data);
   return 1;
 }
 

@@ -100,4 +100,12 @@ TEST(DemSurface, BadGridsAreRefusedWithAReason)
   LocalProjection bad;
   bad.earth_radius = 0.0;
   EXPECT_NE(std::string(validate(small_grid(), 1, bad)).find("radius"), std::string::npos);
+  // Finite bounds, infinite span (issue 13) or infinite projected x.
+  g = small_grid();
+  g.lon_first = -1e308;
+  g.lon_last = 1e308;
+  EXPECT_NE(std::string(validate(g, 1, p)).find("coordinates must be finite"), std::string::npos);
+  g.lon_first = 1e305;
+  g.lon_last = 1.5e305;
+  EXPECT_NE(std::string(validate(g, 1, p)).find("coordinates must be finite"), std::string::npos);
 }

@@ -108,6 +108,26 @@ TEST(GocadTSurfReader, EsizesGiveMultiComponentArrays)
   EXPECT_EQ(r.Output->GetPointData()->GetArray("Scalar")->GetComponent(2, 0), 12.0);
 }
 
+// An empty name ("") was read as an unnamed array, which the writer leaves out: lost on
+// write then read. It is named after its position, with a warning.
+TEST(GocadTSurfReader, APropertyWithAnEmptyNameIsNamedWithAWarning)
+{
+  const auto r = Read(WriteText("empty_name.ts",
+    "GOCAD TSurf 1\nPROPERTIES \"\" b unnamed_1\n"
+    "PVRTX 1 0 0 0 1 2 3\nPVRTX 2 1 0 0 4 5 6\nPVRTX 3 0 1 0 7 8 9\nTRGL 1 2 3\nEND\n"));
+  ASSERT_EQ(r.Errors, "");
+  EXPECT_NE(r.Warnings.find("line 2: property 1 has an empty name, read as 'unnamed_1_'"),
+    std::string::npos)
+    << r.Warnings;
+  vtkDataArray* a = r.Output->GetPointData()->GetArray("unnamed_1_");
+  ASSERT_TRUE(a);
+  EXPECT_EQ(a->GetComponent(2, 0), 7.0);
+  EXPECT_EQ(r.Output->GetPointData()->GetArray("unnamed_1")->GetComponent(2, 0), 9.0);
+  const auto back = gocadtest::WriteAndRead(r.Output, "empty_name_back.ts");
+  EXPECT_EQ(back->GetPointData()->GetNumberOfArrays(), 3);
+  gocadtest::ExpectSameSurface(r.Output, back, "empty name, written and read back");
+}
+
 TEST(GocadTSurfReader, AtomSharesThePointItRefersTo)
 {
   const auto r = Read(WriteText("atom.ts",
@@ -130,12 +150,12 @@ TEST(GocadTSurfReader, TwoTFacesAreNumberedInTheTFaceArray)
 
 TEST(GocadTSurfReader, TwoSurfacesInOneFileAreConcatenatedWithTheirNames)
 {
-  const auto r = Read(WriteText("two.ts",
-    "GOCAD TSurf 1\nHEADER {\nname:first\n}\nPROPERTIES A\n"
-    "PVRTX 1 0 0 0 5\nPVRTX 2 1 0 0 6\nPVRTX 3 0 1 0 7\nTRGL 1 2 3\nEND\n"
-    "# a comment between objects\n\n"
-    "GOCAD TSurf 1\nHEADER {\nname:second\n}\n"
-    "VRTX 1 0 0 1\nVRTX 2 1 0 1\nVRTX 3 0 1 1\nTRGL 3 2 1\nEND\n"));
+  const auto r =
+    Read(WriteText("two.ts", "GOCAD TSurf 1\nHEADER {\nname:first\n}\nPROPERTIES A\n"
+                             "PVRTX 1 0 0 0 5\nPVRTX 2 1 0 0 6\nPVRTX 3 0 1 0 7\nTRGL 1 2 3\nEND\n"
+                             "# a comment between objects\n\n"
+                             "GOCAD TSurf 1\nHEADER {\nname:second\n}\n"
+                             "VRTX 1 0 0 1\nVRTX 2 1 0 1\nVRTX 3 0 1 1\nTRGL 3 2 1\nEND\n"));
   ASSERT_EQ(r.Errors, "");
   ASSERT_EQ(r.Output->GetNumberOfPoints(), 6);
   EXPECT_EQ(CellPoints(r.Output, 1), (std::vector<vtkIdType>{ 5, 4, 3 }));
@@ -194,8 +214,8 @@ TEST(GocadTSurfReader, IgnoresCommentsBordersStonesAndPropertyClassHeaders)
 
 TEST(GocadTSurfReader, SkipsOtherGocadObjectsWithAWarning)
 {
-  const auto r = Read(WriteText("pline.ts",
-    std::string("GOCAD PLine 1\nILINE\nVRTX 1 0 0 0\nEND\n") + Triangle));
+  const auto r = Read(
+    WriteText("pline.ts", std::string("GOCAD PLine 1\nILINE\nVRTX 1 0 0 0\nEND\n") + Triangle));
   ASSERT_EQ(r.Errors, "");
   EXPECT_EQ(r.Output->GetNumberOfPoints(), 3);
   EXPECT_NE(r.Warnings.find("PLine"), std::string::npos);

@@ -1,9 +1,12 @@
 // Every damaged file gives an error naming its line and an empty output.
 #include "GocadTestUtilities.h"
+#include "vtkGocadTSurfParser.h"
 
 #include <gtest/gtest.h>
 
+#include <new>
 #include <random>
+#include <streambuf>
 
 using gocadtest::Read;
 using gocadtest::WriteText;
@@ -25,8 +28,7 @@ void PrintTo(const BadFile& bad, std::ostream* os)
 
 std::string WithVertex(const std::string& vertexLine)
 {
-  return "GOCAD TSurf 1\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\n" + vertexLine +
-    "\nTRGL 1 2 3\nEND\n";
+  return "GOCAD TSurf 1\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\n" + vertexLine + "\nTRGL 1 2 3\nEND\n";
 }
 
 std::string BinaryJunk()
@@ -36,6 +38,39 @@ std::string BinaryJunk()
   for (int i = 0; i < 4096; ++i)
     junk += static_cast<char>(random() & 0xff);
   return junk;
+}
+
+// The finding had 64 properties of 1024 components, one PVRTX giving them, then 3,000
+// VRTX lines: each padded 65,536 NaN, 3.2 GB from 179 KB. Here 64 x 16 and 200 VRTX
+// lines, so that a missing bound costs 1.6 MB, not gigabytes.
+std::string PaddingBeyondTheFileSize()
+{
+  std::string s = "GOCAD TSurf 1\nPROPERTIES";
+  for (int i = 0; i < 64; ++i)
+    s += " p" + std::to_string(i);
+  s += "\nESIZES";
+  for (int i = 0; i < 64; ++i)
+    s += " 16";
+  s += "\nPVRTX 1 0 0 0";
+  for (int i = 0; i < 64 * 16; ++i)
+    s += " 0";
+  s += "\n";
+  for (int id = 2; id <= 201; ++id)
+    s += "VRTX " + std::to_string(id) + " 0 0 0\n";
+  return s + "END\n";
+}
+
+// A property new to the second surface is padded with NaN on every point of the first:
+// 1,000 points x 1,024 components from 18 KB.
+std::string BackfillBeyondTheFileSize()
+{
+  std::string s = "GOCAD TSurf 1\n";
+  for (int id = 1; id <= 1000; ++id)
+    s += "VRTX " + std::to_string(id) + " 0 0 0\n";
+  s += "END\nGOCAD TSurf 1\nPROPERTIES spectrum\nESIZES 1024\nPVRTX 1 0 0 0";
+  for (int i = 0; i < 1024; ++i)
+    s += " 0";
+  return s + "\nEND\n";
 }
 
 std::vector<BadFile> BadFiles()
@@ -57,8 +92,7 @@ std::vector<BadFile> BadFiles()
     { "MissingCoordinate", WithVertex("VRTX 3 0 1"), "line 5: VRTX needs an id and three" },
     { "DuplicateVertexId", WithVertex("VRTX 2 0 1 0"), "line 5: vertex id 2 is defined twice" },
     { "AtomToUnknownVertex", WithVertex("ATOM 3 7"), "line 5: ATOM 3 refers to unknown vertex" },
-    { "PvrtxWithTooFewValues",
-      "GOCAD TSurf 1\nPROPERTIES a b\nPVRTX 1 0 0 0 1\nEND\n",
+    { "PvrtxWithTooFewValues", "GOCAD TSurf 1\nPROPERTIES a b\nPVRTX 1 0 0 0 1\nEND\n",
       "line 3: PVRTX needs 2 property values, found 1" },
     { "EsizesForOtherProperties",
       "GOCAD TSurf 1\nPROPERTIES a b\nESIZES 1\nPVRTX 1 0 0 0 1 2\nEND\n",
@@ -79,6 +113,10 @@ std::vector<BadFile> BadFiles()
     { "BinaryJunk", BinaryJunk(), "binary data" },
     { "NulInsideAValidFile", WithVertex(std::string("VRTX 3 0 1 0\0", 13)), "line 5: binary" },
     { "BadZPositive", "GOCAD TSurf 1\nZPOSITIVE Up\nEND\n", "line 2: ZPOSITIVE must be" },
+    { "PaddingBeyondTheFileSize", PaddingBeyondTheFileSize(),
+      "line 6: VRTX 3 would make the properties hold 3072 values" },
+    { "BackfillBeyondTheFileSize", BackfillBeyondTheFileSize(),
+      "line 1006: the new properties of this surface would make the properties hold 1024000" },
   };
 }
 
@@ -121,4 +159,45 @@ TEST(GocadTSurfReader, AGoodFileAfterABadOneReadsNormally)
   reader->Update();
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 3);
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPolys(), 1);
+}
+
+namespace
+{
+// A stream whose reads throw std::bad_alloc, as an allocation deep in the parser would.
+class ThrowingBuffer : public std::streambuf
+{
+protected:
+  int_type underflow() override { throw std::bad_alloc(); }
+};
+}
+
+TEST(GocadTSurfParser, AnExceptionInsideTheParserBecomesAnError)
+{
+  ThrowingBuffer buffer;
+  std::istream input(&buffer);
+  input.exceptions(std::ios::badbit); // rethrow what the buffer throws
+  vtkGocadTSurfData data;
+  std::string error;
+  bool parsed = true;
+  EXPECT_NO_THROW(parsed = vtkGocadTSurfParse(input, data, error));
+  EXPECT_FALSE(parsed);
+  EXPECT_NE(error.find("line 1: out of memory"), std::string::npos) << error;
+}
+
+TEST(GocadTSurfReader, TheAllowanceOfPaddingStillReadsMixedSurfaces)
+{
+  // 64 components per point from the first surface, padded on 100 short VRTX lines.
+  std::string s = "GOCAD TSurf 1\nPROPERTIES v\nESIZES 64\nPVRTX 1 0 0 0";
+  for (int i = 0; i < 64; ++i)
+    s += " 1";
+  s += "\nEND\nGOCAD TSurf 1\n";
+  for (int id = 1; id <= 100; ++id)
+    s += "VRTX " + std::to_string(id) + " 0 0 0\n";
+  const auto r = Read(WriteText("padding_allowance.ts", s + "END\n"));
+  EXPECT_EQ(r.Errors, "");
+  ASSERT_EQ(r.Output->GetNumberOfPoints(), 101);
+  vtkDataArray* v = r.Output->GetPointData()->GetArray("v");
+  ASSERT_TRUE(v);
+  EXPECT_EQ(v->GetComponent(0, 63), 1.0);
+  EXPECT_TRUE(std::isnan(v->GetComponent(100, 63)));
 }

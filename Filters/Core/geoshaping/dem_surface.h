@@ -36,7 +36,9 @@ struct LocalProjection
 
 // Why the grid cannot make a surface ("" when it can): fewer than 2 x 2 samples (after
 // the stride), a size that does not match the elevations, non-finite bounds or a zero
-// span, latitudes outside [-90, 90], a stride < 1 or a non-finite projection.
+// span, latitudes outside [-90, 90], a stride < 1, a non-finite projection, or bounds
+// that project to infinite coordinates (longitudes -1e308 and 1e308: finite, but not
+// their span).
 const char* validate(const GeographicGrid& grid, index_t stride, const LocalProjection& p);
 
 // Every `stride`-th row and column (always starting at 0), as triangles: the quad of
