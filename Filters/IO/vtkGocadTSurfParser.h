@@ -20,11 +20,11 @@
 
 struct vtkGocadTSurfSurfaceInfo
 {
-  std::string Name;                  // HEADER name:
-  std::string CoordinateSystemName;  // NAME inside GOCAD_ORIGINAL_COORDINATE_SYSTEM
+  std::string Name;                     // HEADER name:
+  std::string CoordinateSystemName;     // NAME inside GOCAD_ORIGINAL_COORDINATE_SYSTEM
   std::array<std::string, 3> AxisNames; // empty when the file gives none
   std::array<std::string, 3> AxisUnits;
-  std::string ZPositive;             // as written in the file ("" when absent)
+  std::string ZPositive; // as written in the file ("" when absent)
 };
 
 struct vtkGocadTSurfProperty
@@ -36,10 +36,10 @@ struct vtkGocadTSurfProperty
 
 struct vtkGocadTSurfData
 {
-  std::vector<double> Points;         // x y z per point, z = elevation
+  std::vector<double> Points;          // x y z per point, z = elevation
   std::vector<std::int64_t> Triangles; // 3 point indices per triangle
-  std::vector<int> TFace;             // per triangle: TFACE index within its surface
-  std::vector<int> Surface;           // per triangle: index into Surfaces
+  std::vector<int> TFace;              // per triangle: TFACE index within its surface
+  std::vector<int> Surface;            // per triangle: index into Surfaces
   std::vector<vtkGocadTSurfSurfaceInfo> Surfaces;
   std::vector<vtkGocadTSurfProperty> Properties; // union over all surfaces
   std::vector<std::string> Warnings;
