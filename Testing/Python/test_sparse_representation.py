@@ -43,22 +43,44 @@ def image_error(a, b):
     return diff.GetThresholdedError()
 
 
+def show_coloured(chain, focal):
+    """A 400 x 300 view of `chain` coloured by Malleability, seen from the south-west."""
+    view = CreateRenderView(ViewSize=[400, 300])
+    display = Show(chain, view)
+    ColorBy(display, ("POINTS", "Malleability"))
+    view.CameraPosition = [-30, -60, 45]
+    view.CameraFocalPoint = focal
+    view.CameraViewUp = [0, 0, 1]
+    ResetCamera(view)
+    return view, display
+
+
+def compare_with_stock(name, display, view):
+    """The view's image against the same output drawn by the stock Surface
+    representation; the display is left as GeoShaping Surface."""
+    fast = os.path.join(TMP, "sparse_%s_fast.png" % name)
+    stock = os.path.join(TMP, "sparse_%s_stock.png" % name)
+    SaveScreenshot(fast, view)
+    display.Representation = "Surface"
+    Render(view)
+    SaveScreenshot(stock, view)
+    display.Representation = "GeoShaping Surface"
+    Render(view)
+    error = image_error(fast, stock)
+    check(error <= 0.05, "%s: the sparse image equals the stock Surface image (error %g)"
+          % (name, error))
+
+
 def drag_and_compare(name, source, grasp, direction, frames=6):
     calc = Calculator(Input=source, ResultArrayName="Malleability", ResultArrayType="Float",
                       Function="0.2 + 0.6 * abs(sin(coordsX / 5))")
     chain = ChainMailDeformation(Input=calc)
     chain.MalleabilityArray = ["POINTS", "Malleability"]
     chain.GraspPointId = grasp
-    view = CreateRenderView(ViewSize=[400, 300])
-    display = Show(chain, view)
+    view, display = show_coloured(chain, [10, 10, 0])
     check(display.Representation == "GeoShaping Surface",
           "%s: the deformation is shown as GeoShaping Surface by default" % name)
-    ColorBy(display, ("POINTS", "Malleability"))
     display.RescaleTransferFunctionToDataRange(True)
-    view.CameraPosition = [-30, -60, 45]
-    view.CameraFocalPoint = [10, 10, 0]
-    view.CameraViewUp = [0, 0, 1]
-    ResetCamera(view)
     Render(view)
     before = counters(display)
     for f in range(1, frames + 1):
@@ -88,15 +110,7 @@ def drag_and_compare(name, source, grasp, direction, frames=6):
     check(counters(display)["NumberOfSparseBuilds"] == skipped["NumberOfSparseBuilds"] + 1,
           "%s: the next frame is sparse again" % name)
 
-    fast = os.path.join(TMP, "sparse_%s_fast.png" % name)
-    stock = os.path.join(TMP, "sparse_%s_stock.png" % name)
-    SaveScreenshot(fast, view)
-    display.Representation = "Surface"
-    Render(view)
-    SaveScreenshot(stock, view)
-    error = image_error(fast, stock)
-    check(error <= 0.05, "%s: the sparse image equals the stock Surface image (error %g)"
-          % (name, error))
+    compare_with_stock(name, display, view)
     Delete(display)
     Delete(view)
 
@@ -121,15 +135,9 @@ paint.Falloff = "Smooth"
 chain = ChainMailDeformation(Input=paint)
 chain.MalleabilityArray = ["POINTS", "Malleability"]
 chain.GraspPointId = 20 * 41 + 20
-view = CreateRenderView(ViewSize=[400, 300])
-display = Show(chain, view)
-ColorBy(display, ("POINTS", "Malleability"))
+view, display = show_coloured(chain, [20, 20, 0])
 lut = GetColorTransferFunction("Malleability")
 lut.RescaleTransferFunction(0.0, 1.0)
-view.CameraPosition = [-30, -60, 45]
-view.CameraFocalPoint = [20, 20, 0]
-view.CameraViewUp = [0, 0, 1]
-ResetCamera(view)
 Render(view)
 before = counters(display)
 paint.UpdatePropertyInformation()
@@ -158,34 +166,12 @@ incremental = sm.Fetch(paint).GetPointData().GetArray("Malleability")
 full = sm.Fetch(fresh).GetPointData().GetArray("Malleability")
 check(all(incremental.GetValue(i) == full.GetValue(i) for i in range(full.GetNumberOfTuples())),
       "paint during drag: the incremental array equals a full paint bit for bit")
-fast = os.path.join(TMP, "sparse_paint_fast.png")
-stock = os.path.join(TMP, "sparse_paint_stock.png")
-SaveScreenshot(fast, view)
-display.Representation = "Surface"
-Render(view)
-SaveScreenshot(stock, view)
-error = image_error(fast, stock)
-check(error <= 0.05, "paint during drag: the sparse image equals the stock Surface image "
-      "(error %g)" % error)
+compare_with_stock("paint", display, view)
 
 
 # The usual display properties keep working on the fast path: mid-drag the user turns
 # down the opacity, changes the lighting and the colour map, shows the scalar bar, then
 # switches to a solid colour; the drag goes on and each image equals the stock Surface's.
-def compare_with_stock(name, display, view):
-    fast = os.path.join(TMP, "sparse_%s_fast.png" % name)
-    stock = os.path.join(TMP, "sparse_%s_stock.png" % name)
-    SaveScreenshot(fast, view)
-    display.Representation = "Surface"
-    Render(view)
-    SaveScreenshot(stock, view)
-    display.Representation = "GeoShaping Surface"
-    Render(view)
-    error = image_error(fast, stock)
-    check(error <= 0.05, "%s: the sparse image equals the stock Surface image (error %g)"
-          % (name, error))
-
-
 Delete(display)
 Delete(view)
 calc = Calculator(Input=triangulated_plane(40), ResultArrayName="Malleability",
@@ -193,13 +179,7 @@ calc = Calculator(Input=triangulated_plane(40), ResultArrayName="Malleability",
 chain = ChainMailDeformation(Input=calc)
 chain.MalleabilityArray = ["POINTS", "Malleability"]
 chain.GraspPointId = 20 * 41 + 20
-view = CreateRenderView(ViewSize=[400, 300])
-display = Show(chain, view)
-ColorBy(display, ("POINTS", "Malleability"))
-view.CameraPosition = [-30, -60, 45]
-view.CameraFocalPoint = [20, 20, 0]
-view.CameraViewUp = [0, 0, 1]
-ResetCamera(view)
+view, display = show_coloured(chain, [20, 20, 0])
 Render(view)
 lift = [1.5]
 
