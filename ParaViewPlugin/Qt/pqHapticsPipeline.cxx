@@ -9,6 +9,7 @@
 #include <pqServerManagerModel.h>
 
 #include "vtkGeoShapingAdapter.h"
+#include "vtkSMChainMailDeformationProxy.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCamera.h>
@@ -414,79 +415,26 @@ void pqHapticsPipeline::appendDabs(const std::vector<std::array<double, 6>>& dab
   this->PaintModified = true;
 }
 
-namespace
-{
-// EditProxy over the ChainMailDeformation's server-manager proxy.
-class SMEditProxy : public geoshaping::interactor::EditProxy
-{
-public:
-  explicit SMEditProxy(vtkSMProxy* proxy)
-    : Proxy(proxy)
-  {
-  }
-  void invoke(const char* command) override { this->Proxy->InvokeCommand(command); }
-  void update_information() override { this->Proxy->UpdatePropertyInformation(); }
-  std::string last_edit() override
-  {
-    const char* s = vtkSMPropertyHelper(this->Proxy, "LastEdit").GetAsString();
-    return s ? s : "";
-  }
-  int number_of_edits() override
-  {
-    return vtkSMPropertyHelper(this->Proxy, "NumberOfEdits").GetAsInt();
-  }
-  int number_of_redoable_edits() override
-  {
-    return vtkSMPropertyHelper(this->Proxy, "NumberOfRedoableEdits").GetAsInt();
-  }
-  std::vector<std::string> history() override
-  {
-    vtkSMPropertyHelper helper(this->Proxy, "EditHistory");
-    std::vector<std::string> records;
-    for (unsigned int i = 0; i < helper.GetNumberOfElements(); ++i)
-    {
-      const char* s = helper.GetAsString(i);
-      records.emplace_back(s ? s : "");
-    }
-    return records;
-  }
-  void set_history(const std::vector<std::string>& records) override
-  {
-    vtkSMPropertyHelper helper(this->Proxy, "EditHistory");
-    helper.SetNumberOfElements(static_cast<unsigned int>(records.size()));
-    for (std::size_t i = 0; i < records.size(); ++i)
-    {
-      helper.Set(static_cast<unsigned int>(i), records[i].c_str());
-    }
-  }
-  void release() override
-  {
-    vtkSMPropertyHelper(this->Proxy, "GraspMode").Set(0); // Point Id
-    vtkSMPropertyHelper(this->Proxy, "GraspPointId").Set(static_cast<vtkIdType>(-1));
-    const double zero[3] = { 0.0, 0.0, 0.0 };
-    vtkSMPropertyHelper(this->Proxy, "Displacement").Set(zero, 3);
-  }
-  void push() override { this->Proxy->UpdateVTKObjects(); }
-
-private:
-  vtkSMProxy* Proxy;
-};
-}
-
 geoshaping::interactor::EditResult pqHapticsPipeline::runEdit(
   geoshaping::interactor::EditCommand command)
 {
-  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
-  if (!proxy || !proxy->GetProperty("EditHistory"))
+  geoshaping::interactor::EditResult result;
+  auto* proxy = vtkSMChainMailDeformationProxy::SafeDownCast(
+    this->Deformation ? this->Deformation->getProxy() : nullptr);
+  if (!proxy)
   {
-    geoshaping::interactor::EditResult none;
-    none.message = "no ChainMailDeformation";
-    return none;
+    result.message = "no ChainMailDeformation";
+    return result;
   }
   // CommitEdit commits the shape of the filter's last update: the one rendered last
-  // frame, which is what the user saw at the release.
-  SMEditProxy edits(proxy);
-  return geoshaping::interactor::run_edit(command, edits);
+  // frame, which is what the user saw at the release. The proxy keeps EditHistory in step
+  // (the same path as the panel's buttons and Python).
+  proxy->InvokeCommand(geoshaping::interactor::command_property(command));
+  result.changed = proxy->GetLastEditChanged();
+  result.edits = static_cast<std::size_t>(this->numberOfEdits());
+  result.redoable = proxy->GetLastEditRedoable();
+  result.message = proxy->GetLastEditMessage();
+  return result;
 }
 
 int pqHapticsPipeline::numberOfEdits() const

@@ -4,6 +4,7 @@
 // UpdateVTKObjects, as ParaView's CAVEInteraction plugin does).
 #include "EditControl.h"
 #include "HapticsControl.h"
+#include "edit_commands.h"
 
 #include <pqPipelineSource.h>
 #include <pqRenderView.h>

@@ -1,6 +1,8 @@
-// The client side of the edit history (ParaViewPlugin/Qt/EditControl.h) against a model
-// of vtkChainMailDeformationFilter's commands (docs/editing.md), and the point dabs.
+// The client side of the edit history (ParaViewPlugin/ServerManager/edit_commands.h)
+// against a model of vtkChainMailDeformationFilter's commands (docs/editing.md), and the
+// point dabs (ParaViewPlugin/Qt/EditControl.h).
 #include "EditControl.h"
+#include "edit_commands.h"
 
 #include "geoshaping/brush.h"
 
@@ -29,16 +31,15 @@ public:
   long long grasp_point_id = 7;
   double displacement = 1.0;
   int pushes = 0;
-  std::vector<std::string> invoked;
   // Information as last fetched.
   int info_edits = -1, info_redoable = -1;
   std::string info_last;
 
   void grasp() { deformed = true; }
 
-  void invoke(const char* command) override
+  // The server runs a command (what vtkSMProxy::InvokeCommand sends).
+  void invoke(const char* command)
   {
-    invoked.emplace_back(command);
     const std::string c = command;
     if (c == "CommitEdit")
     {
@@ -87,6 +88,14 @@ public:
       all = client;
   }
 };
+
+// What vtkSMChainMailDeformationProxy does for any InvokeCommand: the server runs the
+// command, then the client follows.
+gi::EditResult run(gi::EditCommand command, FakeFilter& f)
+{
+  f.invoke(gi::command_property(command));
+  return gi::follow_edit(command, f);
+}
 }
 
 TEST(EditControl, CommandProperties)
@@ -95,13 +104,23 @@ TEST(EditControl, CommandProperties)
   EXPECT_STREQ(gi::command_property(gi::EditCommand::undo), "UndoEdit");
   EXPECT_STREQ(gi::command_property(gi::EditCommand::redo), "RedoEdit");
   EXPECT_STREQ(gi::command_property(gi::EditCommand::reset), "ResetEdits");
+  for (auto c : { gi::EditCommand::commit, gi::EditCommand::undo, gi::EditCommand::redo,
+         gi::EditCommand::reset })
+  {
+    gi::EditCommand parsed = gi::EditCommand::reset;
+    EXPECT_TRUE(gi::is_edit_command(gi::command_property(c), parsed));
+    EXPECT_EQ(parsed, c);
+  }
+  gi::EditCommand unused;
+  EXPECT_FALSE(gi::is_edit_command("Displacement", unused));
+  EXPECT_FALSE(gi::is_edit_command("", unused));
 }
 
 TEST(EditControl, CommitAppendsLastEditAndReleases)
 {
   FakeFilter f;
   f.grasp();
-  const gi::EditResult r = gi::run_edit(gi::EditCommand::commit, f);
+  const gi::EditResult r = run(gi::EditCommand::commit, f);
   EXPECT_TRUE(r.changed);
   EXPECT_EQ(r.edits, 1u);
   EXPECT_EQ(r.redoable, 0);
@@ -118,9 +137,9 @@ TEST(EditControl, CommitWithNothingToCommitDoesNotDuplicateTheLastRecord)
 {
   FakeFilter f;
   f.grasp();
-  gi::run_edit(gi::EditCommand::commit, f);
+  run(gi::EditCommand::commit, f);
   // Press and release without a deformation: LastEdit is still the first edit.
-  const gi::EditResult r = gi::run_edit(gi::EditCommand::commit, f);
+  const gi::EditResult r = run(gi::EditCommand::commit, f);
   EXPECT_FALSE(r.changed);
   EXPECT_EQ(r.message, "nothing to commit");
   EXPECT_EQ(f.client.size(), 1u);
@@ -133,74 +152,80 @@ TEST(EditControl, UndoRedoResetKeepTheClientListInStep)
   for (int i = 0; i < 3; ++i)
   {
     f.grasp();
-    gi::run_edit(gi::EditCommand::commit, f);
+    run(gi::EditCommand::commit, f);
   }
   const std::vector<std::string> all = f.client;
   ASSERT_EQ(all.size(), 3u);
 
-  gi::EditResult r = gi::run_edit(gi::EditCommand::undo, f);
+  gi::EditResult r = run(gi::EditCommand::undo, f);
   EXPECT_TRUE(r.changed);
   EXPECT_EQ(f.client, std::vector<std::string>(all.begin(), all.begin() + 2));
   EXPECT_EQ(r.redoable, 1);
-  r = gi::run_edit(gi::EditCommand::undo, f);
+  r = run(gi::EditCommand::undo, f);
   EXPECT_EQ(f.client, std::vector<std::string>(all.begin(), all.begin() + 1));
   EXPECT_EQ(r.redoable, 2);
 
-  r = gi::run_edit(gi::EditCommand::redo, f);
+  r = run(gi::EditCommand::redo, f);
   EXPECT_TRUE(r.changed);
   EXPECT_EQ(f.client, std::vector<std::string>(all.begin(), all.begin() + 2));
   EXPECT_EQ(r.redoable, 1);
 
-  r = gi::run_edit(gi::EditCommand::reset, f);
+  r = run(gi::EditCommand::reset, f);
   EXPECT_TRUE(r.changed);
   EXPECT_TRUE(f.client.empty());
   EXPECT_EQ(r.redoable, 3);
 
   for (int i = 0; i < 3; ++i)
-    gi::run_edit(gi::EditCommand::redo, f);
+    run(gi::EditCommand::redo, f);
   EXPECT_EQ(f.client, all);
-  r = gi::run_edit(gi::EditCommand::redo, f);
+  r = run(gi::EditCommand::redo, f);
   EXPECT_FALSE(r.changed);
   EXPECT_EQ(r.message, "nothing to redo");
   EXPECT_EQ(f.client, all);
 }
 
-TEST(EditControl, UndoOnAnEmptyListSendsNothing)
+TEST(EditControl, UndoOnAnEmptyListSaysSo)
 {
   FakeFilter f;
-  const gi::EditResult r = gi::run_edit(gi::EditCommand::undo, f);
+  const gi::EditResult r = run(gi::EditCommand::undo, f);
   EXPECT_FALSE(r.changed);
   EXPECT_EQ(r.message, "nothing to undo");
-  EXPECT_TRUE(f.invoked.empty());
+  EXPECT_TRUE(f.client.empty());
+  EXPECT_TRUE(f.records.empty());
 }
 
 TEST(EditControl, CommitAfterUndoDropsTheRedoTail)
 {
   FakeFilter f;
   f.grasp();
-  gi::run_edit(gi::EditCommand::commit, f);
+  run(gi::EditCommand::commit, f);
   f.grasp();
-  gi::run_edit(gi::EditCommand::commit, f);
-  gi::run_edit(gi::EditCommand::undo, f);
+  run(gi::EditCommand::commit, f);
+  run(gi::EditCommand::undo, f);
   f.grasp();
-  const gi::EditResult r = gi::run_edit(gi::EditCommand::commit, f);
+  const gi::EditResult r = run(gi::EditCommand::commit, f);
   EXPECT_EQ(r.edits, 2u);
   EXPECT_EQ(r.redoable, 0);
   EXPECT_EQ(f.client.back(), "GSE1 edit2");
 }
 
-TEST(EditControl, ServerOutOfStepIsReportedAndTheClientListWins)
+TEST(EditControl, EveryCommandSenderKeepsTheListInStep)
 {
+  // The panel's Undo button used to change the server only; now every InvokeCommand is
+  // followed, so after any mix of senders the client's list is the server's.
   FakeFilter f;
+  for (int i = 0; i < 3; ++i)
+  {
+    f.grasp();
+    run(gi::EditCommand::commit, f);
+  }
+  run(gi::EditCommand::undo, f);
   f.grasp();
-  gi::run_edit(gi::EditCommand::commit, f);
-  f.invoke("UndoEdit"); // a panel button: the server changed, the client list did not
-  f.grasp();
-  const gi::EditResult r = gi::run_edit(gi::EditCommand::commit, f);
-  EXPECT_NE(r.message.find("the server had 0 edits"), std::string::npos) << r.message;
-  EXPECT_TRUE(r.changed);
-  EXPECT_EQ(f.client.size(), 2u);
+  const gi::EditResult r = run(gi::EditCommand::commit, f);
+  EXPECT_TRUE(r.message.empty()) << r.message;
+  EXPECT_EQ(f.client.size(), 3u);
   EXPECT_EQ(f.records, f.client);
+  EXPECT_EQ(f.client.back(), "GSE1 edit3");
 }
 
 TEST(PointDabs, FalloffMatchesTheCore)

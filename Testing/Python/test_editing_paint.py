@@ -26,12 +26,12 @@ def array(proxy, name):
     return a, vtk_to_numpy(a).astype(float)
 
 
-def commit(chain):  # docs/editing.md
+def commit(chain):  # docs/editing.md: the proxy appends the record and releases
+    before = len(chain.EditHistory)
     chain.InvokeCommand("CommitEdit")
-    chain.UpdatePropertyInformation()
-    chain.EditHistory = list(chain.EditHistory) + [chain.GetProperty("LastEdit").GetElement(0)]
-    chain.GraspPointId = -1
-    chain.Displacement = [0.0, 0.0, 0.0]
+    check(len(chain.EditHistory) == before + 1, "the commit is recorded once in EditHistory")
+    check(chain.GraspPointId == -1 and list(chain.Displacement) == [0.0, 0.0, 0.0],
+          "the proxy is released")
 
 
 # --- painting during a drag ---------------------------------------------------------
@@ -78,7 +78,8 @@ for g, d in [(15 * N + 15, [0.0, 0.0, 5.0]), (15 * N + 23, [0.0, 0.0, -3.0]),
     check(np.array_equal(x[pinned_ids], rest[pinned_ids]), "pinned vertices unchanged while dragging")
     commit(chain)
     check(np.array_equal(points(chain)[pinned_ids], rest[pinned_ids]), "and after the commit")
-chain.EditHistory = list(chain.EditHistory)[:-1]
+chain.InvokeCommand("UndoEdit")
+check(len(chain.EditHistory) == 2, "the undo dropped one record")
 check(np.array_equal(points(chain)[pinned_ids], rest[pinned_ids]), "and after an undo")
 
 # Pins shown apart from the heat map: exactly the pinned vertices, as cyan points.

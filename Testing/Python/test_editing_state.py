@@ -1,4 +1,5 @@
-"""Grasps with commits, undo, redo and reset; after every step SaveState, and a fresh
+"""Grasps with commits, undo, redo and reset, each run as the panel's buttons run it (the
+command invoked on the proxy, nothing else); after every step SaveState, and a fresh
 pvpython process that LoadStates each file gives the identical points (bit-exact)."""
 import os
 import shutil
@@ -13,31 +14,27 @@ from paraview.simple import *  # noqa: F401,F403
 TMP = os.environ["GEOSHAPING_TEST_TMP"]
 
 
-# The Python API of docs/editing.md: the server command, then the client keeps its
-# EditHistory property in step so that SaveState holds it.
+# Each edit as the properties panel's buttons run it: the command invoked on the proxy and
+# nothing else. The proxy (vtkSMChainMailDeformationProxy) keeps its EditHistory in step
+# (docs/editing.md), so SaveState holds every edit whatever ran the command.
+def invoke(chain, command):
+    chain.SMProxy.InvokeCommand(command)
+
+
 def commit(chain):
-    chain.InvokeCommand("CommitEdit")
-    chain.UpdatePropertyInformation()
-    record = chain.GetProperty("LastEdit").GetElement(0)
-    chain.EditHistory = list(chain.EditHistory) + [record]
-    chain.GraspPointId = -1
-    chain.Displacement = [0.0, 0.0, 0.0]
+    invoke(chain, "CommitEdit")
 
 
 def undo(chain):
-    chain.InvokeCommand("UndoEdit")
-    chain.EditHistory = list(chain.EditHistory)[:-1]
+    invoke(chain, "UndoEdit")
 
 
 def redo(chain):
-    chain.InvokeCommand("RedoEdit")
-    chain.UpdatePropertyInformation()
-    chain.EditHistory = list(chain.EditHistory) + [chain.GetProperty("LastEdit").GetElement(0)]
+    invoke(chain, "RedoEdit")
 
 
 def reset(chain):
-    chain.InvokeCommand("ResetEdits")
-    chain.EditHistory = []
+    invoke(chain, "ResetEdits")
 
 
 if len(sys.argv) > 1:  # the fresh session: load each state, write its points
@@ -89,10 +86,12 @@ step("two edits")
 drag(5 * 31 + 20, [0.0, 0.0, -4.0])
 commit(chain)
 step("three edits")
+check(len(chain.EditHistory) == 3, "the proxy's EditHistory holds the three commits")
 three = points(chain)
 undo(chain)
 check(np.array_equal(points(chain), steps[2][1]), "undo restores the previous points bit-exactly")
 step("undone")
+check(len(chain.EditHistory) == 2, "the proxy's EditHistory lost the undone edit")
 undo(chain)
 check(np.array_equal(points(chain), steps[1][1]), "a second undo goes one step further")
 redo(chain)

@@ -1,0 +1,107 @@
+#include "vtkSMChainMailDeformationProxy.h"
+
+#include "edit_commands.h"
+
+#include "vtkCommand.h"
+#include "vtkObjectFactory.h"
+#include "vtkSMPropertyHelper.h"
+
+#include <vector>
+
+namespace gi = geoshaping::interactor;
+
+namespace
+{
+// EditProxy over a server-manager proxy.
+class SMEditProxy : public gi::EditProxy
+{
+public:
+  explicit SMEditProxy(vtkSMProxy* proxy)
+    : Proxy(proxy)
+  {
+  }
+  void update_information() override { this->Proxy->UpdatePropertyInformation(); }
+  std::string last_edit() override
+  {
+    const char* s = vtkSMPropertyHelper(this->Proxy, "LastEdit").GetAsString();
+    return s ? s : "";
+  }
+  int number_of_edits() override
+  {
+    return vtkSMPropertyHelper(this->Proxy, "NumberOfEdits").GetAsInt();
+  }
+  int number_of_redoable_edits() override
+  {
+    return vtkSMPropertyHelper(this->Proxy, "NumberOfRedoableEdits").GetAsInt();
+  }
+  std::vector<std::string> history() override
+  {
+    vtkSMPropertyHelper helper(this->Proxy, "EditHistory");
+    std::vector<std::string> records;
+    for (unsigned int i = 0; i < helper.GetNumberOfElements(); ++i)
+    {
+      const char* s = helper.GetAsString(i);
+      records.emplace_back(s ? s : "");
+    }
+    return records;
+  }
+  void set_history(const std::vector<std::string>& records) override
+  {
+    vtkSMPropertyHelper helper(this->Proxy, "EditHistory");
+    helper.SetNumberOfElements(static_cast<unsigned int>(records.size()));
+    for (std::size_t i = 0; i < records.size(); ++i)
+    {
+      helper.Set(static_cast<unsigned int>(i), records[i].c_str());
+    }
+  }
+  void release() override
+  {
+    vtkSMPropertyHelper(this->Proxy, "GraspMode").Set(0); // Point Id
+    vtkSMPropertyHelper(this->Proxy, "GraspPointId").Set(static_cast<vtkIdType>(-1));
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    vtkSMPropertyHelper(this->Proxy, "Displacement").Set(zero, 3);
+  }
+  void push() override { this->Proxy->UpdateVTKObjects(); }
+
+private:
+  vtkSMProxy* Proxy;
+};
+}
+
+vtkStandardNewMacro(vtkSMChainMailDeformationProxy);
+
+vtkSMChainMailDeformationProxy::vtkSMChainMailDeformationProxy()
+{
+  this->AddObserver(
+    vtkCommand::UpdatePropertyEvent, this, &vtkSMChainMailDeformationProxy::PropertyPushed);
+}
+
+vtkSMChainMailDeformationProxy::~vtkSMChainMailDeformationProxy() = default;
+
+void vtkSMChainMailDeformationProxy::PropertyPushed(vtkObject*, unsigned long, void* name)
+{
+  gi::EditCommand command;
+  // InvokeCommand (UpdateProperty) fires this after the server ran the command.
+  // UpdateVTKObjects fires it before its push and never carries a user's command (the
+  // panel's buttons, the dock and Python all invoke): it is left alone.
+  if (!name || this->InUpdateVTKObjects || this->Following ||
+      !gi::is_edit_command(static_cast<const char*>(name), command))
+  {
+    return;
+  }
+  this->Following = true;
+  SMEditProxy edits(this);
+  const gi::EditResult result = gi::follow_edit(command, edits);
+  this->Following = false;
+  this->LastEditChanged = result.changed;
+  this->LastEditRedoable = result.redoable;
+  this->LastEditMessage = result.message;
+}
+
+void vtkSMChainMailDeformationProxy::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LastEditChanged: " << this->LastEditChanged << "\n";
+  os << indent << "LastEditRedoable: " << this->LastEditRedoable << "\n";
+  os << indent << "LastEditMessage: " << this->LastEditMessage << "\n";
+}

@@ -1,0 +1,54 @@
+#pragma once
+/**
+ * @class vtkSMChainMailDeformationProxy
+ * @brief The client-side proxy of ChainMailDeformation: every edit command keeps the
+ *        `EditHistory` property in step with the filter.
+ *
+ * The filter keeps the committed edits on the server; the client owns the `EditHistory`
+ * list that SaveState and Python traces write. Whoever invokes CommitEdit, UndoEdit,
+ * RedoEdit or ResetEdits on this proxy — the properties panel's buttons, the Haptics
+ * dock and its shortcuts, `proxy.SMProxy.InvokeCommand(...)` from Python — this class
+ * then copies the change into `EditHistory` (geoshaping::interactor::follow_edit), so
+ * there is one path for every edit and a saved state holds what the view shows
+ * (docs/editing.md). ParaView instantiates it from the XML element
+ * `<ChainMailDeformationProxy>`.
+ */
+#include "GeoShapingServerManagerModule.h"
+#include "vtkSMSourceProxy.h"
+
+#include <string>
+
+class GEOSHAPINGSERVERMANAGER_EXPORT vtkSMChainMailDeformationProxy : public vtkSMSourceProxy
+{
+public:
+  static vtkSMChainMailDeformationProxy* New();
+  vtkTypeMacro(vtkSMChainMailDeformationProxy, vtkSMSourceProxy);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * What the last edit command did: whether `EditHistory` changed, its length after,
+   * how many edits RedoEdit can still re-apply, and why nothing changed (empty when
+   * something did). The Haptics dock shows these.
+   */
+  vtkGetMacro(LastEditChanged, bool);
+  vtkGetMacro(LastEditRedoable, int);
+  const char* GetLastEditMessage() const { return this->LastEditMessage.c_str(); }
+  ///@}
+
+protected:
+  vtkSMChainMailDeformationProxy();
+  ~vtkSMChainMailDeformationProxy() override;
+
+private:
+  vtkSMChainMailDeformationProxy(const vtkSMChainMailDeformationProxy&) = delete;
+  void operator=(const vtkSMChainMailDeformationProxy&) = delete;
+
+  // vtkCommand::UpdatePropertyEvent: a property was pushed to the server.
+  void PropertyPushed(vtkObject*, unsigned long, void* name);
+
+  bool LastEditChanged = false;
+  int LastEditRedoable = 0;
+  std::string LastEditMessage;
+  bool Following = false;
+};
