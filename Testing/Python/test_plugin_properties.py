@@ -1,4 +1,6 @@
 """The plugin loads in pvpython and exposes the public names of DESIGN.md section 5."""
+import numpy as np
+
 from geoshaping_testing import check, load
 from paraview.simple import *  # noqa: F401,F403
 
@@ -21,3 +23,21 @@ check(chain.SMProxy.GetProperty("GraspPointId").IsA("vtkSMIntVectorProperty"),
 for queue in ["FIFO", "Priority", "FIFO Priority", "Max Violation"]:
     chain.CandidateQueue = queue
     check(chain.CandidateQueue == queue, "queue %s accepted" % queue)
+
+# A script creates the filter before its input has run: ParaView knows no arrays yet, and
+# the array domain would pick None (uniform 0.5). The default stays Malleability, and the
+# filter reads the painted array once the pipeline runs.
+from geoshaping_testing import points, triangulated_plane  # noqa: E402
+
+plane = triangulated_plane(20)
+paint = MalleabilityPaint(Input=plane, Falloff="Constant",  # noqa: F405
+                          Dabs=[10.0, 10.0, 0.0, 4.0, 0.0, 1.0])
+fresh = ChainMailDeformation(Input=paint)  # noqa: F405
+check(list(fresh.MalleabilityArray) == ["POINTS", "Malleability"],
+      "MalleabilityArray is Malleability when the filter is created before its input ran")
+fresh.GraspPointId = 10 * 21 + 10  # the centre of the rigid (painted 0) disc
+fresh.Displacement = [0.0, 0.0, 3.0]
+moved = points(fresh) - points(plane)
+disc = np.linalg.norm(points(plane)[:, :2] - [10.0, 10.0], axis=1) < 2.0
+check(np.allclose(moved[disc], [0.0, 0.0, 3.0]),
+      "the painted rigid disc moves as one: the painted array was used")
