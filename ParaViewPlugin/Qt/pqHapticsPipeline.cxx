@@ -41,17 +41,28 @@ bool isA(pqPipelineSource* source, const char* xmlName)
 }
 }
 
-pqPipelineSource* pqHapticsFindSource(const char* xmlName)
+pqPipelineSource* pqHapticsFindSource(const char* xmlName, pqView* view)
 {
   auto* model = pqApplicationCore::instance()->getServerManagerModel();
+  pqPipelineSource* first = nullptr;
   for (pqPipelineSource* source : model->findItems<pqPipelineSource*>())
   {
-    if (isA(source, xmlName))
+    if (!isA(source, xmlName))
+    {
+      continue;
+    }
+    if (!view)
+    {
+      return source;
+    }
+    first = first ? first : source;
+    pqDataRepresentation* shown = source->getRepresentation(view);
+    if (shown && shown->isVisible())
     {
       return source;
     }
   }
-  return nullptr;
+  return first;
 }
 
 namespace
@@ -92,7 +103,7 @@ void pqHapticsPipeline::refresh()
   pqPipelineSource* deformation = active.activeSource();
   if (!isA(deformation, "ChainMailDeformation"))
   {
-    deformation = pqHapticsFindSource("ChainMailDeformation");
+    deformation = pqHapticsFindSource("ChainMailDeformation", this->View);
   }
   if (deformation != this->Deformation)
   {
