@@ -41,3 +41,42 @@ moved = points(fresh) - points(plane)
 disc = np.linalg.norm(points(plane)[:, :2] - [10.0, 10.0], axis=1) < 2.0
 check(np.allclose(moved[disc], [0.0, 0.0, 3.0]),
       "the painted rigid disc moves as one: the painted array was used")
+
+# The properties panel (issue 11): groups, ranges with domains, labelled table columns.
+sm_chain = fresh.SMProxy
+groups = {}
+for i in range(sm_chain.GetNumberOfPropertyGroups()):
+    group = sm_chain.GetPropertyGroup(i)
+    groups[group.GetXMLLabel()] = [sm_chain.GetPropertyName(group.GetProperty(k))
+                                   for k in range(group.GetNumberOfProperties())]
+check(list(groups) == ["Malleability", "Grasp", "Queue and transfer", "Pins", "Refinement",
+                       "Editing", "Diagnostics"], "ChainMailDeformation's groups: %s" % list(groups))
+check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displacement"] and
+      groups["Editing"] == ["CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"],
+      "the grasp and edit groups hold their properties")
+grouped = [name for names in groups.values() for name in names]
+panel = [name for name in fresh.ListProperties()
+         if sm_chain.GetProperty(name).GetPanelVisibility() != "never"
+         and not sm_chain.GetProperty(name).GetInformationOnly() and name != "Input"]
+check(sorted(grouped) == sorted(panel), "every panel property is in exactly one group")
+for name, low, high in [("StretchRange", 1.0, None), ("CompressionRange", 0.0, 1.0),
+                        ("ShearRange", 0.0, None)]:
+    domain = sm_chain.GetProperty(name).GetDomain("range")
+    check(domain is not None and all(domain.GetMinimum(k) == low for k in (0, 1)) and
+          (high is None or all(domain.GetMaximum(k) == high for k in (0, 1))),
+          "%s has a range domain from %s" % (name, low))
+
+
+def column_labels(proxy, name):
+    hints = proxy.SMProxy.GetProperty(name).GetHints()
+    element = hints.FindNestedElementByName("ShowComponentLabels") if hints else None
+    return [element.GetNestedElement(k).GetAttribute("label")
+            for k in range(element.GetNumberOfNestedElements())] if element else []
+
+
+check(column_labels(fresh, "StretchCurve") == ["Malleability", "Stretch"] and
+      column_labels(fresh, "ShearCurve") == ["Malleability", "Shear"],
+      "the curve tables have column labels")
+check(column_labels(paint, "Dabs") == ["x", "y", "z", "Radius", "Value", "Strength"] and
+      column_labels(paint, "PointDabs") == ["Point Id", "Value", "Weight"],
+      "the dab tables have column labels")
