@@ -390,7 +390,10 @@ void pqHapticsPipeline::appendDabs(const std::vector<std::array<double, 6>>& dab
   if (locator)
   {
     vtkPointSet* shown = this->shownSurface();
-    const int falloff = vtkSMPropertyHelper(proxy, "Falloff").GetAsInt();
+    // MalleabilityPaint's Falloff entries are the core's enum, value for value
+    // (Filters.Enumerations.XmlEntriesMatchTheCore).
+    const auto falloff = static_cast<geoshaping::Falloff>(
+      std::clamp(vtkSMPropertyHelper(proxy, "Falloff").GetAsInt(), 0, 3));
     vtkNew<vtkIdList> found;
     std::vector<long long> ids;
     std::vector<double> distances;
