@@ -1,5 +1,6 @@
 #include "malleability_colormap.h"
 
+#include "geoshaping/malleability_preset.h" // its name and points, for the core
 #include "geoshaping_malleability_preset.h" // ../Presets/Malleability_black-body.json
 
 #include "vtkLogger.h"
@@ -23,7 +24,7 @@ constexpr double settings_priority = 0.25;
 
 const char* malleability_preset_name()
 {
-  return "Malleability (black-body)";
+  return geoshaping::malleability_preset_name;
 }
 
 bool register_malleability_colormap()

@@ -41,6 +41,11 @@ bool parse_distance_mode_name(const char* name, DistanceMode& m); // "Euclidean"
 
 double falloff_weight(Falloff f, double r);
 
+// The black-body heat map's colour at malleability m (RGB in [0, 1]): linear in RGB
+// between the preset's control points (geoshaping/malleability_preset.h), as ParaView maps
+// it; m is clamped to [0, 1] and NaN reads as 0 (rigid, black).
+Eigen::Vector3d malleability_color(double m);
+
 struct Dab
 {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
@@ -83,8 +88,8 @@ void apply_dab(const Dab& dab, Falloff falloff, const Reach& reach, float* malle
 class GeodesicReach
 {
 public:
-  void compute(const Adjacency& adjacency, const double* xyz, index_t source,
-    double start_distance, double radius, Reach& out);
+  void compute(const Adjacency& adjacency, const double* xyz, index_t source, double start_distance,
+    double radius, Reach& out);
 
 private:
   std::vector<double> distance_; // +inf except for the vertices of the last call
@@ -130,8 +135,8 @@ class Painter
 public:
   Painter(const double* xyz, index_t n, const Adjacency* adjacency, PointQueries queries);
 
-  PaintReport paint(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode,
-    float* malleability);
+  PaintReport paint(
+    const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode, float* malleability);
   // The vertices one dab reaches, with distances (also used by paint()).
   void reach(const Dab& dab, DistanceMode mode, Reach& out);
 
