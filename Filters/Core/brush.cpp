@@ -268,23 +268,32 @@ Eigen::Vector3d malleability_color(double m)
          f * Eigen::Vector3d(b[1] - a[1], b[2] - a[2], b[3] - a[3]);
 }
 
-PaintReport Painter::paint(
-  const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode, float* malleability)
+PaintReport Painter::paint(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode,
+  float* malleability, const Progress& progress)
 {
   PaintReport report;
+  ProgressTicker ticker(progress, dabs.size());
   for (std::size_t i = 0; i < dabs.size(); ++i)
   {
     const char* problem = validate_dab(dabs[i]);
     if (*problem)
     {
       report.rejected.emplace_back(i, problem);
-      continue;
     }
-    reach(dabs[i], mode, reach_);
-    apply_dab(dabs[i], falloff, reach_, malleability);
-    ++report.applied;
-    report.painted += reach_.vertices.size();
+    else
+    {
+      reach(dabs[i], mode, reach_);
+      apply_dab(dabs[i], falloff, reach_, malleability);
+      ++report.applied;
+      report.painted += reach_.vertices.size();
+    }
+    if (!ticker.tick(i + 1))
+    {
+      report.aborted = i + 1 < dabs.size();
+      return report;
+    }
   }
+  ticker.finish(); // every dab applied: a stop asked now has nothing left to stop
   return report;
 }
 

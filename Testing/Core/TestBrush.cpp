@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -302,4 +303,41 @@ TEST(MalleabilityColor, FollowsTheBlackBodyPreset)
   expect(7.0, { 1.0, 1.0, 1.0 });                                      // clamped
   expect(-1.0, { 0.0, 0.0, 0.0 });                                     // clamped
   expect(std::numeric_limits<double>::quiet_NaN(), { 0.0, 0.0, 0.0 }); // NaN is rigid
+}
+
+TEST(Painter, ReportsProgressAndStopsWhenAsked)
+{
+  const geoshaping::testing::Mesh s = geoshaping::testing::triangle_grid(30, 30, 1.0);
+  std::vector<Dab> dabs;
+  for (int i = 0; i < 250; ++i)
+    dabs.push_back({ Eigen::Vector3d(i % 30, (i / 30) % 30, 0.0), 2.0, 0.0, 1.0 });
+  std::vector<float> m(std::size_t(s.size()), 0.5f);
+  Painter painter(s.xyz.data(), s.size(), nullptr, brute_force_queries(s.xyz.data(), s.size()));
+
+  std::vector<double> seen;
+  PaintReport all = painter.paint(dabs, Falloff::constant, DistanceMode::euclidean, m.data(),
+    [&](double f)
+    {
+      seen.push_back(f);
+      return true;
+    });
+  EXPECT_FALSE(all.aborted);
+  EXPECT_EQ(all.applied, dabs.size());
+  // Every third dab (250 / 100 + 1), then the end: monotone, at most 101 calls, ends at 1.
+  ASSERT_EQ(seen.size(), 250u / 3u + 1u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_DOUBLE_EQ(seen.front(), 3.0 / 250.0);
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+
+  // Stop at the second report: six dabs applied, exactly as painting those six alone.
+  std::vector<float> stopped(m.size(), 0.5f);
+  int calls = 0;
+  const PaintReport part = painter.paint(dabs, Falloff::constant, DistanceMode::euclidean,
+    stopped.data(), [&](double) { return ++calls < 2; });
+  EXPECT_TRUE(part.aborted);
+  EXPECT_EQ(part.applied, 6u);
+  std::vector<float> six(m.size(), 0.5f);
+  painter.paint(std::vector<Dab>(dabs.begin(), dabs.begin() + 6), Falloff::constant,
+    DistanceMode::euclidean, six.data());
+  EXPECT_EQ(stopped, six);
 }

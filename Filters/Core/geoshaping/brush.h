@@ -1,6 +1,7 @@
 #pragma once
 // Malleability painting: a brush dab moves the values under it toward its value.
 #include "geoshaping/adjacency.h"
+#include "geoshaping/progress.h"
 
 #include <Eigen/Core>
 
@@ -120,6 +121,7 @@ PointQueries brute_force_queries(const double* xyz, index_t n);
 
 struct PaintReport
 {
+  bool aborted = false; // the Progress asked to stop: dabs from `applied` on were not applied
   std::size_t applied = 0;
   std::size_t painted = 0; // vertex values written (a vertex under two dabs counts twice)
   std::vector<std::pair<std::size_t, std::string>> rejected; // (dab index, reason)
@@ -135,8 +137,10 @@ class Painter
 public:
   Painter(const double* xyz, index_t n, const Adjacency* adjacency, PointQueries queries);
 
-  PaintReport paint(
-    const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode, float* malleability);
+  // `progress` (optional) is told the fraction of dabs done and can stop the painting
+  // between dabs (geoshaping/progress.h).
+  PaintReport paint(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode,
+    float* malleability, const Progress& progress = {});
   // The vertices one dab reaches, with distances (also used by paint()).
   void reach(const Dab& dab, DistanceMode mode, Reach& out);
 
