@@ -31,6 +31,7 @@
 
 #include <chrono>
 #include <initializer_list>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,7 @@ struct vtkChainMailDeformationFilter::vtkInternals
 {
   geoshaping::ChainMailDeformer Deformer;
   geoshaping::Curve StretchCurve, CompressionCurve, ShearCurve; // only .points used
+  vtkGeoShapingRecordList<2> StretchValues, CompressionValues, ShearValues;
 
   // What the cached core state was built from.
   vtkPoints* GeometryPoints = nullptr;
@@ -89,6 +91,7 @@ struct vtkChainMailDeformationFilter::vtkInternals
   std::vector<geoshaping::index_t> Affected;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   bool WarnedParallel = false;
+  std::set<std::string> Warned; // WarnOnce's messages, cleared when the geometry changes
 };
 
 namespace vtkChainMailDeformationFilterDetail
@@ -104,6 +107,15 @@ inline void SetCurvePoints(geoshaping::Curve& curve, vtkPiecewiseFunction* f)
     f->GetNodeValue(i, node);
     curve.points.emplace_back(node[0], node[1]);
   }
+}
+
+// One value of a curve's flat (malleability, value) list; every second one adds a point.
+inline void AddCurveValue(
+  geoshaping::Curve& curve, vtkGeoShapingRecordList<2>& values, double value)
+{
+  double point[2];
+  if (values.Add(value, point))
+    curve.points.emplace_back(point[0], point[1]);
 }
 
 using IdList = std::vector<geoshaping::index_t>;
