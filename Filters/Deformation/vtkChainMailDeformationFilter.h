@@ -65,7 +65,6 @@
 
 class vtkIdTypeArray;
 class vtkPiecewiseFunction;
-class vtkPoints;
 
 class GEOSHAPINGFILTERSDEFORMATION_EXPORT vtkChainMailDeformationFilter
   : public vtkPointSetAlgorithm
@@ -298,7 +297,7 @@ private:
   bool UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
   std::vector<int> UpdateEdits(std::vector<int>& stale);
   void Deform(vtkPointSet* input, std::vector<int>& stale);
-  bool OutputFits(vtkPoints* inPoints);
+  bool OutputFits();
   // A quiet fall-back is reported once per distinct message, not on every drag frame.
   void WarnOnce(const std::string& message);
   void UpdateNormals(vtkIdTypeArray* changed);

@@ -76,6 +76,16 @@ struct vtkChainMailDeformationFilter::vtkInternals
     return this->Refining ? this->Projector->displacement(v) : this->Deformer.displacement(v);
   }
 
+  // Whether input point v moved by u lands where the output's point type holds it:
+  // positions are computed in double, and a double beyond FLT_MAX cast to float is
+  // undefined behaviour (in practice inf). x receives the position.
+  bool Fits(geoshaping::index_t v, const Eigen::Vector3d& u, Eigen::Vector3d& x) const
+  {
+    this->GeometryPoints->GetPoint(v, x.data());
+    x += u;
+    return x.cwiseAbs().maxCoeff() <= this->OutputPoints->GetData()->GetDataTypeMax();
+  }
+
   // The output points persist between updates; each update rewrites only the changed
   // vertices and lists them (vtkGrowingBoundsPoints::PointsChanged), so bounds and a
   // consumer that saw the previous update (the GeoShaping Surface representation)

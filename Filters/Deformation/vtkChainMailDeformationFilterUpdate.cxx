@@ -251,7 +251,10 @@ std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& st
   {
     stale = in.Deformer.moved();
     std::string error;
-    if (!in.History.synchronize(in.Deformer, in.EditRecords, error))
+    Eigen::Vector3d x;
+    const auto fits = [&in, &x](geoshaping::index_t v)
+    { return in.Fits(v, in.Deformer.committed_offset(v), x); };
+    if (!in.History.synchronize(in.Deformer, in.EditRecords, error, fits))
     {
       vtkErrorMacro("EditHistory: " << error << "; the edits before it are applied.");
     }
@@ -352,7 +355,7 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       {
         this->Refine(grasp);
       }
-      if (r.ok && !this->OutputFits(input->GetPoints()))
+      if (r.ok && !this->OutputFits())
       {
         // The last frame's vertices are still shown: restore them with the stale ones.
         const IdList& shown = in.Deformer.previously_moved();
@@ -367,21 +370,16 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
   }
 }
 
-bool vtkChainMailDeformationFilter::OutputFits(vtkPoints* inPoints)
+bool vtkChainMailDeformationFilter::OutputFits()
 {
-  // Positions are computed in double; the output's point type must hold every one
-  // (a double above FLT_MAX cast to float is undefined behaviour, in practice inf).
   vtkInternals& in = *this->Internals;
-  const double limit = in.OutputPoints->GetData()->GetDataTypeMax();
   const IdList none;
   for (const IdList* list :
     IdLists{ &in.Deformer.moved(), in.Refining ? &in.Projector->changed() : &none })
     for (geoshaping::index_t v : *list)
     {
       Eigen::Vector3d x;
-      inPoints->GetPoint(v, x.data());
-      x += in.Deformer.committed_offset(v) + in.FinalDisplacement(v);
-      if (!(x.cwiseAbs().maxCoeff() <= limit))
+      if (!in.Fits(v, in.Deformer.committed_offset(v) + in.FinalDisplacement(v), x))
       {
         vtkErrorMacro("No deformation: Displacement ("
                       << this->Displacement[0] << ", " << this->Displacement[1] << ", "

@@ -3,6 +3,7 @@
 // an out-of-bounds read or a non-finite coordinate.
 #include "vtkChainMailDeformationFilter.h"
 
+#include "geoshaping/edit_history.h"
 #include "vtk_test_meshes.h"
 
 #include "vtkCallbackCommand.h"
@@ -151,6 +152,31 @@ TEST(ChainMailDeformationBadInput, DisplacementBeyondFloatPointsIsRefusedAndNoth
   const double moved = Difference(w.Run(), grid);
   EXPECT_FALSE(w.Observer->GetError());
   EXPECT_TRUE(std::isfinite(moved) && moved >= 1e39);
+}
+
+// A hand-made EditHistory record is checked like a drag: its positions must fit too.
+TEST(ChainMailDeformationBadInput, EditRecordBeyondFloatPointsIsRefused)
+{
+  auto grid = Grid(VTK_FLOAT);
+  geoshaping::Edit good, huge;
+  good.vertices = huge.vertices = { 14, 15 };
+  good.displacements = { { 0, 0, 1 }, { 0, 0, 1 } };
+  huge.displacements = { { 0, 0, 1 }, { 0, 0, 1e39 } };
+  Watched w(grid);
+  w.Filter->SetGraspPointId(-1);
+  w.Filter->AddEdit(geoshaping::encode_edit(good).c_str());
+  w.Filter->AddEdit(geoshaping::encode_edit(huge).c_str());
+  vtkPointSet* out = w.Run();
+  EXPECT_NE(w.Observer->GetErrorMessage().find(
+              "edit 1 moves vertex 15 beyond what the output's points hold"),
+    std::string::npos)
+    << w.Observer->GetErrorMessage();
+  double p[3];
+  out->GetPoint(15, p);
+  EXPECT_EQ(p[2], 1.0f); // the edit before it is applied, this one is not
+  out->GetPoint(14, p);
+  EXPECT_EQ(p[2], 1.0f);
+  EXPECT_TRUE(std::isfinite(Difference(out, grid)));
 }
 
 TEST(ChainMailDeformationBadInput, RefinementIterationsAreCappedAtThePluginsRange)
