@@ -41,6 +41,9 @@ bool SameDab(const geoshaping::Dab& a, const geoshaping::Dab& b)
 
 struct vtkMalleabilityPaintFilter::vtkInternals
 {
+  // The last painted output (shallow): what an aborted painting leaves in place, since
+  // the executive empties the output before each execution.
+  vtkSmartPointer<vtkPointSet> LastOutput;
   std::vector<geoshaping::Dab> Dabs;
   std::vector<double> PointDabs; // id value weight
   vtkGeoShapingRecordList<6> DabValues;
@@ -271,6 +274,8 @@ int vtkMalleabilityPaintFilter::RequestData(
   if (!this->PaintPins && this->PaintIncrementally(input, output, name))
   {
     ++this->NumberOfIncrementalUpdates;
+    this->Internals->LastOutput = vtk::TakeSmartPointer(output->NewInstance());
+    this->Internals->LastOutput->ShallowCopy(output);
     return 1;
   }
 
@@ -321,7 +326,18 @@ int vtkMalleabilityPaintFilter::RequestData(
   {
     malleability->Fill(this->PaintPins ? 0.0 : this->InitialMalleability);
   }
-  this->ApplyDabs(input, m);
+  if (!this->ApplyDabs(input, m))
+  {
+    // Keep what was shown: the executive would otherwise empty the output on an abort.
+    output->ShallowCopy(this->Internals->LastOutput ? this->Internals->LastOutput.Get()
+                                                    : static_cast<vtkPointSet*>(input));
+    this->SetAbortOutput(false);
+    this->SetAbortExecute(0);
+    vtkErrorMacro("Painting was aborted after "
+                  << this->NumberOfAppliedDabs << " of " << this->Internals->Dabs.size()
+                  << " dabs; the output is the previous one (change a property to paint again).");
+    return 1;
+  }
   this->ApplyPointDabs(n, m);
   if (this->PaintPins)
   {
@@ -344,6 +360,8 @@ int vtkMalleabilityPaintFilter::RequestData(
     in.AppliedDabList = in.Dabs;
     in.AppliedPointDabs = in.PointDabs;
   }
+  this->Internals->LastOutput = vtk::TakeSmartPointer(output->NewInstance());
+  this->Internals->LastOutput->ShallowCopy(output);
   return 1;
 }
 
@@ -410,14 +428,14 @@ void vtkMalleabilityPaintFilter::ApplyPointDabs(
   }
 }
 
-void vtkMalleabilityPaintFilter::ApplyDabs(
+bool vtkMalleabilityPaintFilter::ApplyDabs(
   vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched)
 {
   vtkInternals& in = *this->Internals;
   const vtkIdType n = input->GetNumberOfPoints();
   if (n == 0 || first >= in.Dabs.size() || !in.Update(input, this))
   {
-    return;
+    return true;
   }
   const auto mode = static_cast<geoshaping::DistanceMode>(this->DistanceMode);
   if (mode == geoshaping::DistanceMode::geodesic && !in.AdjacencyValid)
@@ -449,7 +467,13 @@ void vtkMalleabilityPaintFilter::ApplyDabs(
     }
   }
   const geoshaping::PaintReport report =
-    painter.paint(dabs, static_cast<geoshaping::Falloff>(this->Falloff), mode, m);
+    painter.paint(dabs, static_cast<geoshaping::Falloff>(this->Falloff), mode, m,
+      touched ? geoshaping::Progress() // appended dabs: a few, painted in place
+              : [this](double done)
+      {
+        this->UpdateProgress(done);
+        return !this->CheckAbort();
+      });
   this->LastPaintMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfAppliedDabs = static_cast<int>(report.applied);
@@ -472,6 +496,7 @@ void vtkMalleabilityPaintFilter::ApplyDabs(
       msg << "\n  ...";
     vtkErrorMacro(<< msg.str());
   }
+  return !report.aborted;
 }
 
 void vtkMalleabilityPaintFilter::PrintSelf(ostream& os, vtkIndent indent)

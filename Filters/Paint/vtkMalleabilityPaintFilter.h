@@ -173,8 +173,9 @@ private:
   void operator=(const vtkMalleabilityPaintFilter&) = delete;
 
   // Apply the dabs from `first` on (point dabs: from triplet `first` on) to m; append
-  // the vertices they reach to `touched` when given.
-  void ApplyDabs(
+  // the vertices they reach to `touched` when given. ApplyDabs reports progress and
+  // returns false when the pipeline asked to abort (CheckAbort) before the last dab.
+  bool ApplyDabs(
     vtkPointSet* input, float* m, std::size_t first = 0, std::vector<vtkIdType>* touched = nullptr);
   void ApplyPointDabs(
     vtkIdType n, float* m, std::size_t first = 0, std::vector<vtkIdType>* touched = nullptr);

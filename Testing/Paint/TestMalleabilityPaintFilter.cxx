@@ -2,6 +2,7 @@
 #include "vtkFaultStepHorizonSource.h"
 #include "vtkMalleabilityPaintFilter.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellType.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
@@ -18,9 +19,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <vector>
 
 namespace
 {
@@ -319,4 +322,47 @@ TEST(MalleabilityPaint, IncompleteLastDabWarnsThatItIsIgnored)
   EXPECT_NE(
     warnings->GetWarningMessage().find("incomplete point dab (1 of 3 values)"), std::string::npos);
   EXPECT_EQ(Malleability(paint->GetOutputDataObject(0))->GetValue(3), 1.0f);
+}
+
+TEST(MalleabilityPaint, ReportsProgressAndAnAbortLeavesThePreviousOutput)
+{
+  vtkNew<vtkMalleabilityPaintFilter> paint;
+  paint->SetInputData(Scene(false));
+  paint->SetFalloff(vtkMalleabilityPaintFilter::CONSTANT);
+  AddFigure5CDabs(paint); // hundreds of dabs
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progress);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* client, void* call)
+    { static_cast<std::vector<double>*>(client)->push_back(*static_cast<double*>(call)); });
+  paint->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  paint->Update();
+  ASSERT_GT(progress.size(), 50u);
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_EQ(progress.back(), 1.0);
+  vtkNew<vtkFloatArray> before;
+  before->DeepCopy(Malleability(paint->GetOutputDataObject(0)));
+
+  // Another painting, aborted from the progress bar half way: the output stays the last
+  // one, with an error saying so.
+  paint->SetInitialMalleability(0.9); // a full repaint
+  vtkNew<vtkCallbackCommand> abortHalfWay;
+  abortHalfWay->SetCallback(
+    [](vtkObject* caller, unsigned long, void*, void* call)
+    {
+      if (*static_cast<double*>(call) > 0.5 && *static_cast<double*>(call) < 1.0)
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    });
+  paint->AddObserver(vtkCommand::ProgressEvent, abortHalfWay);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  paint->AddObserver(vtkCommand::ErrorEvent, errors);
+  paint->Update();
+  ASSERT_TRUE(errors->GetError());
+  EXPECT_NE(errors->GetErrorMessage().find("aborted"), std::string::npos)
+    << errors->GetErrorMessage();
+  vtkFloatArray* after = Malleability(paint->GetOutputDataObject(0));
+  ASSERT_NE(after, nullptr);
+  ASSERT_EQ(after->GetNumberOfValues(), before->GetNumberOfValues());
+  for (vtkIdType i = 0; i < after->GetNumberOfValues(); ++i)
+    ASSERT_EQ(after->GetValue(i), before->GetValue(i)) << i;
 }
