@@ -1,6 +1,8 @@
 // Refinement and editing (commit, undo, redo) of vtkChainMailDeformationFilter.
 #include "vtkChainMailDeformationFilterInternals.h"
 
+#include <algorithm>
+
 using namespace vtkChainMailDeformationFilterDetail;
 
 void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
@@ -14,8 +16,27 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
     in.Projector = std::make_unique<geoshaping::LinkProjector>(in.Links);
   }
   const auto start = std::chrono::steady_clock::now();
+  // Asked after every sweep: the progress bar moves, and an abort stops the sweeps.
+  int sweeps = 0;
+  bool aborted = false;
   const geoshaping::ProjectionReport report = geoshaping::refine_links(*in.Projector, in.Deformer,
-    geoshaping::index_t(grasp), this->RefinementIterations, [this] { return this->CheckAbort(); });
+    geoshaping::index_t(grasp), this->RefinementIterations,
+    [this, &sweeps, &aborted]
+    {
+      this->UpdateProgress(double(++sweeps) / std::max(1, this->RefinementIterations));
+      aborted = this->CheckAbort();
+      return aborted;
+    });
+  if (aborted)
+  {
+    // Each sweep only lowers the link error: the result so far is a valid deformation,
+    // kept rather than emptied by the executive.
+    this->SetAbortOutput(false);
+    this->SetAbortExecute(0);
+    vtkWarningMacro("Refinement stopped after " << report.iterations << " of "
+                                                << this->RefinementIterations
+                                                << " sweeps at the user's request.");
+  }
   this->LastRefinementMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfRefinementSweeps = report.iterations;

@@ -226,8 +226,17 @@ TEST(ChainMailDeformationBadInput, RefinementStopsAfterTheSweepWhenThePipelineAb
   abort->SetCallback([](vtkObject* caller, unsigned long, void*, void*)
     { static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1); });
   w.Filter->AddObserver(vtkCommand::ProgressEvent, abort);
-  w.Run();
+  vtkPointSet* out = w.Run();
   EXPECT_EQ(w.Filter->GetNumberOfRefinementSweeps(), 1);
+  // The deformation refined that far is kept (not emptied by the executive) and the
+  // stop is reported.
+  ASSERT_EQ(out->GetNumberOfPoints(), grid->GetNumberOfPoints());
+  double moved[3];
+  out->GetPoint(14, moved);
+  EXPECT_EQ(moved[2], 2.0);
+  EXPECT_NE(w.Observer->GetWarningMessage().find("Refinement stopped after 1 of 64 sweeps"),
+    std::string::npos)
+    << w.Observer->GetWarningMessage();
 }
 
 TEST(ChainMailDeformationBadInput, MalleabilityThatIsNotNumericPointDataWarnsOnceAndUsesTheDefault)
