@@ -2,6 +2,7 @@
 // projection, rigid exactness, analytic chains and cones in any orientation, and
 // rotation invariance of whole frames on a triangle horizon and a tetrahedral slab.
 #include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/error_metrics.h"
 #include "geoshaping/sample_scenes.h"
 #include "geoshaping/valid_region.h"
 #include "test_meshes.h"
@@ -398,6 +399,30 @@ TEST(ValidRegionFrame, LinkFrameMovesEachVertexOnceIntoItsSponsorsCylinder)
       // On the cylinder's surface (it moved: its rest position was outside).
       EXPECT_GT(region_distance(ValidRegionFrame::link, o, d.params(v), -d.displacement(sp)), 0.0);
     }
+    // The error metrics measure against the deformer's frame. Its sponsor links hold in
+    // the Link frame and in the box too: the cylinder lies inside the box
+    // (valid_region.h). An Axes frame's result leaves the cylinders.
+    LinkMesh lm = link_mesh(d);
+    ASSERT_EQ(lm.frame, ValidRegionFrame::link);
+    auto sponsor_links = [](const ChainMailDeformer& def, const LinkMesh& mesh)
+    {
+      const Displacements u = displacements(def);
+      double e = 0.0;
+      for (index_t v : def.moved())
+        if (def.sponsor(v) >= 0)
+          e = std::max(e, link_distance(mesh, u, v, def.sponsor(v)));
+      return e;
+    };
+    EXPECT_LE(sponsor_links(d, lm), 1e-12) << queue_name(q);
+    lm.frame = ValidRegionFrame::axes;
+    EXPECT_LE(sponsor_links(d, lm), 1e-12) << queue_name(q);
+    ChainMailDeformer axes = make(s.xyz, s.adjacency, ValidRegionFrame::axes);
+    axes.set_malleability(s.malleability.data());
+    axes.set_queue(q);
+    ASSERT_TRUE(axes.deform(s.grasp, s.pull).ok);
+    EXPECT_LE(sponsor_links(axes, lm), 1e-12) << queue_name(q);
+    lm.frame = ValidRegionFrame::link;
+    EXPECT_GT(sponsor_links(axes, lm), 0.1) << queue_name(q);
   }
 }
 

@@ -90,10 +90,13 @@ inline Box valid_region(
 // the mesh maps the region of o onto the region of R o: rotation invariant. For a link
 // along an axis its along-link interval is the box's interval on that axis and its
 // radius the box's half-width h l across it (the box's cross-section is the square
-// circumscribing the disc). Why a cylinder: it keeps the paper's three parameters with
-// their meaning (stretch and compression of the link length, shear as sideways slide
-// relative to the link length) and, being a product of an interval and a disc in
-// orthonormal coordinates, has a closed-form exact projection.
+// circumscribing the disc). In general the cylinder lies inside the box: along axis i
+// a e_i spans [k o_i, t o_i] (or reversed), and p perpendicular to e has
+// |p_i| = |p.(x_i - e_i e)| <= h l sqrt(1 - e_i^2) = h sqrt(sum_{j!=i} o_j^2) <= h S_i;
+// so a Link result also satisfies the paper's box on its sponsor links. Why a cylinder: it keeps
+// the paper's three parameters with their meaning (stretch and compression of the link length,
+// shear as sideways slide relative to the link length) and, being a product of an interval and a
+// disc in orthonormal coordinates, has a closed-form exact projection.
 //
 // In displacements w = u[c] - u[s] (d = o + w, and o.e = l, o has no part across e):
 //
