@@ -326,6 +326,17 @@ constexpr index_t prefetch_distance = 8;
 template<class Queue>
 void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& result)
 {
+  // The frame is a template argument: the axes loop is the same code as before the
+  // option existed.
+  if (frame_kind_ == ValidRegionFrame::link)
+    propagate<ValidRegionFrame::link>(queue, grasp, result);
+  else
+    propagate<ValidRegionFrame::axes>(queue, grasp, result);
+}
+
+template<ValidRegionFrame Frame, class Queue>
+void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& result)
+{
   Node* const nodes = nodes_.data();
   const RankParams* const params = rank_params_.data();
   const std::uint32_t* const offsets = offsets_.data();
@@ -333,16 +344,29 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
   const std::uint8_t* const pinned = pinned_inner_.empty() ? nullptr : pinned_inner_.data();
   const std::uint32_t frame = frame_;
 
-  // Where candidate c must move given sponsor s: the nearest point of the box to its
-  // rest position, in displacements u[s] + [lo - o, hi - o] (valid_region.h).
+  // Where candidate c must move given sponsor s: the nearest point of the region to its
+  // rest position. Axes: in displacements u[s] + [lo - o, hi - o] (valid_region.h).
+  // Link: u[s] + the projection of -u[s] onto the cylinder, exactly u[s] when c is rigid
+  // (required_displacement() in valid_region.h, with the per-rank parameters).
   auto required_displacement = [&](const Node& c, const Node& s, const Eigen::Vector3d& su)
   {
     const Eigen::Vector3d o = c.rest - s.rest;
     if (!o.allFinite())
       return Eigen::Vector3d::Zero().eval();
-    Eigen::Vector3d lo, hi;
-    bounds(o, params[c.rank], lo, hi);
-    return Eigen::Vector3d::Zero().cwiseMax(su + lo).cwiseMin(su + hi).eval();
+    const RankParams& p = params[c.rank];
+    if constexpr (Frame == ValidRegionFrame::link)
+    {
+      if (p.stretch1 == 0.0 && p.compression1 == 0.0 && p.shear == 0.0)
+        return su;
+      return (su + link_displacement_projection(o, p.stretch1, p.compression1, p.shear, -su))
+        .eval();
+    }
+    else
+    {
+      Eigen::Vector3d lo, hi;
+      bounds(o, p, lo, hi);
+      return Eigen::Vector3d::Zero().cwiseMax(su + lo).cwiseMin(su + hi).eval();
+    }
   };
   auto sponsor_neighbours = [&](index_t s, index_t s_slot)
   {

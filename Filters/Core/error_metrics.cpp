@@ -103,6 +103,7 @@ LinkMesh link_mesh(const ChainMailDeformer& d)
       m.pinned[v] = d.pinned(v);
   }
   m.mean_edge = mean_edge_length(m.rest, d.adjacency());
+  m.frame = d.valid_region_frame();
   return m;
 }
 
@@ -152,9 +153,8 @@ double link_distance(const LinkMesh& m, const Displacements& u, index_t c, index
   const Eigen::Vector3d o = m.rest[std::size_t(c)] - m.rest[std::size_t(s)];
   if (!o.allFinite())
     return 0.0;
-  const Box b = displacement_bounds(o, m.params[std::size_t(c)]);
   const Eigen::Vector3d r = u[std::size_t(c)] - u[std::size_t(s)];
-  return finite_or_inf((r - b.clamp(r)).norm());
+  return finite_or_inf(region_distance(m.frame, o, m.params[std::size_t(c)], r));
 }
 
 double rigid_error(const LinkMesh& m, const Displacements& u)

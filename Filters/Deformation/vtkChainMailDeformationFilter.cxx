@@ -163,6 +163,9 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DefaultMalleability: " << this->DefaultMalleability << "\n";
   os << indent << "CandidateQueue: "
      << geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) << "\n";
+  os << indent << "ValidRegionFrame: "
+     << geoshaping::frame_name(static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame))
+     << "\n";
   os << indent << "StretchRange: " << this->StretchRange[0] << " " << this->StretchRange[1] << "\n";
   os << indent << "CompressionRange: " << this->CompressionRange[0] << " "
      << this->CompressionRange[1] << "\n";

@@ -13,6 +13,8 @@
  * which candidates are examined: FIFO, Priority, FIFO Priority (default; deformation
  * flows through stiff regions before soft ones, so rigid regions keep their shape) or
  * Max Violation. See DESIGN.md section 4 and the core's chainmail_deformer.h.
+ * `ValidRegionFrame` selects the shape of the valid region: Axes (default, the paper's
+ * axis-aligned box) or Link (a cylinder aligned with the rest link: rotation invariant).
  *
  * An optional second array (SetInputArrayToProcess(1, ...)) marks pinned vertices
  * (non-zero = never moves; propagation stops at them).
@@ -81,6 +83,11 @@ public:
     FIFO_PRIORITY = 2,
     MAX_VIOLATION = 3
   };
+  enum ValidRegionFrames
+  {
+    AXES = 0,
+    LINK = 1
+  };
   enum CurveShapes
   {
     LINEAR = 0,
@@ -128,6 +135,15 @@ public:
   /// Candidate structure: FIFO, PRIORITY, FIFO_PRIORITY (default), MAX_VIOLATION.
   vtkSetClampMacro(CandidateQueue, int, FIFO, MAX_VIOLATION);
   vtkGetMacro(CandidateQueue, int);
+  ///@}
+
+  ///@{
+  /// Shape of each vertex's valid region (geoshaping/valid_region.h): AXES (default), the
+  /// paper's box aligned with the coordinate axes; LINK, a cylinder aligned with the rest
+  /// link (stretch and compression along it, shear across it), so rotating the mesh and
+  /// the displacement rotates the result. Rigid regions translate exactly in both.
+  vtkSetClampMacro(ValidRegionFrame, int, AXES, LINK);
+  vtkGetMacro(ValidRegionFrame, int);
   ///@}
 
   ///@{
@@ -266,6 +282,7 @@ protected:
   double Displacement[3] = { 0.0, 0.0, 0.0 };
   double DefaultMalleability = 0.5;
   int CandidateQueue = FIFO_PRIORITY;
+  int ValidRegionFrame = AXES;
   double StretchRange[2] = { 1.0, 2.0 };
   double CompressionRange[2] = { 1.0, 0.5 };
   double ShearRange[2] = { 0.0, 0.5 };

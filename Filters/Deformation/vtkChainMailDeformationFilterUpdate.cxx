@@ -281,7 +281,7 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
 {
   vtkInternals& in = *this->Internals;
   const vtkIdType n = input->GetNumberOfPoints();
-  // 4. Transfer function and queue, cheap to set every time.
+  // 4. Transfer function, queue and frame, cheap to set every time.
   geoshaping::TransferFunction tf;
   tf.stretch =
     MakeCurve(this->StretchRange, this->TransferCurveShape, this->StepThreshold, in.StretchCurve);
@@ -307,6 +307,8 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
   {
     in.Deformer.set_transfer_function(tf);
     in.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
+    in.Deformer.set_valid_region_frame(
+      static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame));
 
     // 5. Grasp and deform.
     vtkIdType grasp = this->GraspPointId;

@@ -1,12 +1,16 @@
 // Per-frame cost of the ChainMail core for each candidate queue at the paper's Table 1
 // displaced-vertex counts and at 1,000,000, the bare BFS floor over the same region,
-// and a 1,000-vertex grasp on a 4,000,000-vertex mesh.
+// and a 1,000-vertex grasp on a 4,000,000-vertex mesh. BM_Frame's last argument is the
+// valid region frame (0 Axes, the paper's box; 1 Link, the rotation-invariant cylinder);
+// each frame's pull is calibrated on its own to displace the target count.
 #include "bench_scenes.h"
 
 #include <benchmark/benchmark.h>
 
 #include <map>
 #include <memory>
+#include <string>
+#include <tuple>
 
 using namespace geoshaping;
 
@@ -19,11 +23,11 @@ struct Scene
   double pull;
 };
 
-// Scenes are built once per (mesh side, target) and shared by the queues.
-Scene& scene(index_t side, std::size_t target)
+// Scenes are built once per (mesh side, target, frame) and shared by the queues.
+Scene& scene(index_t side, std::size_t target, ValidRegionFrame frame = ValidRegionFrame::axes)
 {
-  static std::map<std::pair<index_t, std::size_t>, Scene> cache;
-  auto it = cache.find({ side, target });
+  static std::map<std::tuple<index_t, std::size_t, ValidRegionFrame>, Scene> cache;
+  auto it = cache.find({ side, target, frame });
   if (it != cache.end())
     return it->second;
   std::vector<float> m;
@@ -31,9 +35,10 @@ Scene& scene(index_t side, std::size_t target)
   auto d = std::make_unique<ChainMailDeformer>();
   d->set_mesh(mesh.xyz.data(), mesh.size(), std::move(mesh.adjacency));
   d->set_malleability(m.data());
+  d->set_valid_region_frame(frame);
   const index_t grasp = (side / 2) * side + side / 2;
   const double pull = bench::pull_for_count(*d, grasp, target);
-  return cache[{ side, target }] = Scene{ std::move(d), grasp, pull };
+  return cache[{ side, target, frame }] = Scene{ std::move(d), grasp, pull };
 }
 
 index_t side_for(std::size_t target)
@@ -46,7 +51,8 @@ void BM_Frame(benchmark::State& state)
   const auto queue = static_cast<QueueKind>(state.range(0));
   const std::size_t target = std::size_t(state.range(1));
   const index_t side = state.range(2) ? index_t(state.range(2)) : side_for(target);
-  Scene& s = scene(side, target);
+  const auto frame = static_cast<ValidRegionFrame>(state.range(3));
+  Scene& s = scene(side, target, frame);
   s.deformer->set_queue(queue);
   FrameResult r;
   for (auto _ : state)
@@ -58,7 +64,7 @@ void BM_Frame(benchmark::State& state)
   state.counters["mesh_vertices"] = double(s.deformer->size());
   state.counters["bytes_per_vertex"] =
     double(s.deformer->memory_bytes()) / double(s.deformer->size());
-  state.SetLabel(queue_name(queue));
+  state.SetLabel(std::string(queue_name(queue)) + " " + frame_name(frame));
 }
 
 void BM_BfsFloor(benchmark::State& state)
@@ -85,10 +91,13 @@ void TableArgs(benchmark::internal::Benchmark* b)
 {
   for (int q = 0; q < 4; ++q)
     for (long n : { 9152L, 14088L, 17289L, 18225L, 29241L, 1000000L })
-      b->Args({ q, n, 0 });
+      b->Args({ q, n, 0, 0 });
+  for (int q = 0; q < 4; ++q)
+    for (long n : { 9152L, 29241L })
+      b->Args({ q, n, 0, 1 });
   // A 1,000-vertex grasp on a 4,000,000-vertex mesh: the frame ignores the mesh size.
-  b->Args({ 2, 1000, 2000 });
-  b->Args({ 2, 1000, 200 });
+  b->Args({ 2, 1000, 2000, 0 });
+  b->Args({ 2, 1000, 200, 0 });
 }
 } // namespace
 

@@ -59,7 +59,8 @@ public:
       disp_[v].setZero();
   }
 
-  FrameResult deform(index_t g, const Eigen::Vector3d& d, QueueKind q, const TransferFunction& tf)
+  FrameResult deform(index_t g, const Eigen::Vector3d& d, QueueKind q, const TransferFunction& tf,
+    ValidRegionFrame frame = ValidRegionFrame::axes)
   {
     for (index_t v : moved_)
     {
@@ -107,6 +108,8 @@ public:
       const Eigen::Vector3d o = rest_[c] - rest_[s];
       if (!o.allFinite())
         return Eigen::Vector3d::Zero().eval();
+      if (frame == ValidRegionFrame::link) // valid_region.h's own function for either frame
+        return required_displacement(frame, o, tf(malleability_[c]), disp_[s]);
       const Box b = displacement_bounds(o, tf(malleability_[c]));
       return Eigen::Vector3d::Zero().cwiseMax(disp_[s] + b.lo).cwiseMin(disp_[s] + b.hi).eval();
     };
@@ -221,8 +224,9 @@ void expect_same_frame(ChainMailDeformer& d, Reference& ref, index_t g, const Ei
 {
   const std::vector<index_t> before = d.moved();
   const FrameResult a = d.deform(g, u);
-  const FrameResult b = ref.deform(g, u, d.queue(), d.transfer_function());
-  const std::string where = what + " / " + queue_name(d.queue());
+  const FrameResult b = ref.deform(g, u, d.queue(), d.transfer_function(), d.valid_region_frame());
+  const std::string where =
+    what + " / " + queue_name(d.queue()) + " / " + frame_name(d.valid_region_frame());
   ASSERT_EQ(a.ok, b.ok) << where;
   EXPECT_EQ(d.previously_moved(), before) << where;
   if (!a.ok)
@@ -243,6 +247,7 @@ void expect_same_frame(ChainMailDeformer& d, Reference& ref, index_t g, const Ei
   }
 }
 
+constexpr ValidRegionFrame all_frames[] = { ValidRegionFrame::axes, ValidRegionFrame::link };
 constexpr QueueKind all_queues[] = { QueueKind::fifo, QueueKind::priority, QueueKind::fifo_priority,
   QueueKind::max_violation };
 
@@ -273,20 +278,22 @@ TEST(ChainMailReference, PaintedGridMatchesForEveryQueueAndPull)
     }
   for (const auto* m : { &banded, &smooth })
     for (QueueKind q : all_queues)
-    {
-      ChainMailDeformer d;
-      d.set_mesh(mesh.xyz.data(), mesh.size(), mesh.adjacency);
-      d.set_malleability(m->data());
-      d.set_queue(q);
-      Reference ref(d, mesh.adjacency);
-      ref.set_malleability(*m);
-      for (double pull : { 0.5, 3.0, 12.0, 40.0 })
-        expect_same_frame(d, ref, (n / 2) * n + n / 3, { 0.1 * pull, -0.05 * pull, pull },
-          "painted grid pull " + std::to_string(pull));
-      // Frames in a row reuse the stamps and the sparse reset.
-      expect_same_frame(d, ref, 5, { 2.0, 1.0, -3.0 }, "corner");
-      expect_same_frame(d, ref, n * n - 1, { 0.0, 0.0, 0.0 }, "zero pull");
-    }
+      for (ValidRegionFrame f : all_frames)
+      {
+        ChainMailDeformer d;
+        d.set_mesh(mesh.xyz.data(), mesh.size(), mesh.adjacency);
+        d.set_malleability(m->data());
+        d.set_queue(q);
+        d.set_valid_region_frame(f);
+        Reference ref(d, mesh.adjacency);
+        ref.set_malleability(*m);
+        for (double pull : { 0.5, 3.0, 12.0, 40.0 })
+          expect_same_frame(d, ref, (n / 2) * n + n / 3, { 0.1 * pull, -0.05 * pull, pull },
+            "painted grid pull " + std::to_string(pull));
+        // Frames in a row reuse the stamps and the sparse reset.
+        expect_same_frame(d, ref, 5, { 2.0, 1.0, -3.0 }, "corner");
+        expect_same_frame(d, ref, n * n - 1, { 0.0, 0.0, 0.0 }, "zero pull");
+      }
 }
 
 TEST(ChainMailReference, RigidIslandTetsAndTransferCurvesMatch)
@@ -299,17 +306,19 @@ TEST(ChainMailReference, RigidIslandTetsAndTransferCurvesMatch)
     { { 0.0, 1.0 }, { 0.3, 0.9 }, { 0.7, 0.4 }, { 1.0, 0.2 } } };
   for (const TransferFunction& tf : { TransferFunction(), smooth })
     for (QueueKind q : all_queues)
-    {
-      ChainMailDeformer d;
-      d.set_mesh(island.mesh.xyz.data(), island.mesh.size(), island.mesh.adjacency);
-      d.set_malleability(island.malleability.data());
-      d.set_transfer_function(tf);
-      d.set_queue(q);
-      Reference ref(d, island.mesh.adjacency);
-      ref.set_malleability(island.malleability);
-      expect_same_frame(d, ref, island.grasp, Eigen::Vector3d(island.pull), "rigid island");
-      expect_same_frame(d, ref, 0, { -3.0, 2.0, 9.0 }, "island corner");
-    }
+      for (ValidRegionFrame f : all_frames)
+      {
+        ChainMailDeformer d;
+        d.set_mesh(island.mesh.xyz.data(), island.mesh.size(), island.mesh.adjacency);
+        d.set_malleability(island.malleability.data());
+        d.set_transfer_function(tf);
+        d.set_queue(q);
+        d.set_valid_region_frame(f);
+        Reference ref(d, island.mesh.adjacency);
+        ref.set_malleability(island.malleability);
+        expect_same_frame(d, ref, island.grasp, Eigen::Vector3d(island.pull), "rigid island");
+        expect_same_frame(d, ref, 0, { -3.0, 2.0, 9.0 }, "island corner");
+      }
 
   // A random tetrahedral-like graph: jittered 3-D lattice with diagonal edges.
   const index_t nx = 14, ny = 12, nz = 9;
@@ -342,16 +351,18 @@ TEST(ChainMailReference, RigidIslandTetsAndTransferCurvesMatch)
     x = um(rng);
   m[17] = std::numeric_limits<float>::quiet_NaN();
   for (QueueKind q : all_queues)
-  {
-    ChainMailDeformer d;
-    d.set_mesh(xyz.data(), nv, adj);
-    d.set_malleability(m.data());
-    d.set_queue(q);
-    Reference ref(d, adj);
-    ref.set_malleability(m);
-    expect_same_frame(d, ref, id(7, 6, 4), { 1.0, -2.0, 4.0 }, "tets");
-    expect_same_frame(d, ref, id(0, 0, 0), { 0.5, 0.5, 0.5 }, "tets corner");
-  }
+    for (ValidRegionFrame f : all_frames)
+    {
+      ChainMailDeformer d;
+      d.set_mesh(xyz.data(), nv, adj);
+      d.set_malleability(m.data());
+      d.set_queue(q);
+      d.set_valid_region_frame(f);
+      Reference ref(d, adj);
+      ref.set_malleability(m);
+      expect_same_frame(d, ref, id(7, 6, 4), { 1.0, -2.0, 4.0 }, "tets");
+      expect_same_frame(d, ref, id(0, 0, 0), { 0.5, 0.5, 0.5 }, "tets corner");
+    }
 }
 
 TEST(ChainMailReference, PinsCommitsSetRestAndErrorsMatch)

@@ -588,3 +588,74 @@ TEST(ChainMailDeformationFilter, CommitWithoutADeformationOrWithABadRecordWarns)
   EXPECT_TRUE(observer->GetError());
   EXPECT_EQ(MaxPointDifference(f->GetOutput(), grid), 0.0);
 }
+
+TEST(ChainMailDeformationFilter, ValidRegionFrameLinkRotatesWithTheMeshAndAxesIsTheDefault)
+{
+  // A rotation about z by 30 degrees (exactly representable enough for 1e-9 relative).
+  const double c = std::cos(0.5235987755982988), s = std::sin(0.5235987755982988);
+  auto turn = [&](const double p[3], double q[3])
+  {
+    q[0] = c * p[0] - s * p[1];
+    q[1] = s * p[0] + c * p[1];
+    q[2] = p[2];
+  };
+  auto grid = TriangleGrid(25, 25, 1.0, [](int i, int j) { return (i + j) % 5 == 0 ? 0.2 : 0.8; });
+  vtkNew<vtkPolyData> turned;
+  turned->DeepCopy(grid);
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    grid->GetPoint(i, p);
+    turn(p, q);
+    turned->GetPoints()->SetPoint(i, q);
+  }
+  const double d[3] = { 3.0, -1.0, 6.0 };
+  double dt[3];
+  turn(d, dt);
+  auto run = [&](vtkPolyData* mesh, const double* disp, int frame)
+  {
+    vtkNew<vtkChainMailDeformationFilter> f;
+    EXPECT_EQ(f->GetValidRegionFrame(), vtkChainMailDeformationFilter::AXES);
+    f->SetValidRegionFrame(frame);
+    f->SetGraspPointId(12 * 25 + 12);
+    f->SetDisplacement(disp[0], disp[1], disp[2]);
+    Deform(f, mesh);
+    EXPECT_GT(f->GetNumberOfDisplacedPoints(), 50);
+    vtkSmartPointer<vtkPointSet> out;
+    out.TakeReference(f->GetOutput()->NewInstance());
+    out->DeepCopy(f->GetOutput());
+    return out;
+  };
+  auto defect = [&](int frame)
+  {
+    auto a = run(grid, d, frame);
+    auto b = run(turned, dt, frame);
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3], r[3];
+      a->GetPoint(i, p);
+      turn(p, q);
+      b->GetPoint(i, r);
+      worst = std::max(worst, std::hypot(q[0] - r[0], q[1] - r[1], q[2] - r[2]));
+    }
+    return worst / (24.0 * std::sqrt(2.0));
+  };
+  EXPECT_LE(defect(vtkChainMailDeformationFilter::LINK), 1e-9);
+  EXPECT_GT(defect(vtkChainMailDeformationFilter::AXES), 1e-3);
+
+  // Switching the frame reuses the adjacency and equals a fresh filter with that frame.
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetGraspPointId(12 * 25 + 12);
+  f->SetDisplacement(d[0], d[1], d[2]);
+  Deform(f, grid);
+  f->SetValidRegionFrame(vtkChainMailDeformationFilter::LINK);
+  f->Update();
+  EXPECT_EQ(f->GetNumberOfRebuilds(), 1);
+  EXPECT_EQ(
+    MaxPointDifference(f->GetOutput(), run(grid, d, vtkChainMailDeformationFilter::LINK)), 0.0);
+  f->SetValidRegionFrame(7); // clamped
+  EXPECT_EQ(f->GetValidRegionFrame(), vtkChainMailDeformationFilter::LINK);
+  f->SetValidRegionFrame(-1);
+  EXPECT_EQ(f->GetValidRegionFrame(), vtkChainMailDeformationFilter::AXES);
+}

@@ -23,6 +23,10 @@ check(chain.SMProxy.GetProperty("GraspPointId").IsA("vtkSMIntVectorProperty"),
 for queue in ["FIFO", "Priority", "FIFO Priority", "Max Violation"]:
     chain.CandidateQueue = queue
     check(chain.CandidateQueue == queue, "queue %s accepted" % queue)
+check(chain.ValidRegionFrame == "Axes", "default valid region frame is Axes")
+chain.ValidRegionFrame = "Link"
+check(chain.ValidRegionFrame == "Link", "valid region frame Link accepted")
+chain.ValidRegionFrame = "Axes"
 
 # A script creates the filter before its input has run: ParaView knows no arrays yet, and
 # the array domain would pick None (uniform 0.5). The default stays Malleability, and the
@@ -54,6 +58,8 @@ check(list(groups) == ["Malleability", "Grasp", "Queue and transfer", "Pins", "R
 check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displacement"] and
       groups["Editing"] == ["CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"],
       "the grasp and edit groups hold their properties")
+check(groups["Queue and transfer"][:2] == ["CandidateQueue", "ValidRegionFrame"],
+      "ValidRegionFrame is in the queue and transfer group, after CandidateQueue")
 grouped = [name for names in groups.values() for name in names]
 panel = [name for name in fresh.ListProperties()
          if sm_chain.GetProperty(name).GetPanelVisibility() != "never"

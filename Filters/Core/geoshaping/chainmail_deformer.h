@@ -3,6 +3,7 @@
 #include "geoshaping/adjacency.h"
 #include "geoshaping/candidate_queue.h"
 #include "geoshaping/transfer_function.h"
+#include "geoshaping/valid_region.h"
 
 #include <Eigen/Core>
 
@@ -30,6 +31,10 @@ struct FrameResult
 //   box = valid region of c w.r.t. s from c's own (t, k, h);
 //   if x0[c] lies outside the box, move c to the nearest point of the box and queue
 //   its neighbours that have not moved, with c as sponsor.
+//
+// The region is the paper's axis-aligned box (ValidRegionFrame::axes, the default) or
+// the cylinder in the frame of the rest link (ValidRegionFrame::link, rotation
+// invariant); both in valid_region.h.
 //
 // Decisions the design leaves open, fixed here:
 // - A candidate found inside its box is NOT marked: when another neighbour moves later
@@ -76,6 +81,9 @@ public:
   const TransferFunction& transfer_function() const { return transfer_; }
   void set_queue(QueueKind q) { queue_kind_ = q; }
   QueueKind queue() const { return queue_kind_; }
+  // Shape of the valid region (valid_region.h): axes (default) or link.
+  void set_valid_region_frame(ValidRegionFrame f) { frame_kind_ = f; }
+  ValidRegionFrame valid_region_frame() const { return frame_kind_; }
 
   // One frame. Invalid grasp, non-finite displacement or pinned grasp: ok == false,
   // the shape returns to rest.
@@ -133,6 +141,8 @@ public:
   std::size_t memory_bytes() const;
 
 private:
+  template<ValidRegionFrame Frame, class Queue>
+  void propagate(Queue& queue, index_t grasp, FrameResult& result);
   template<class Queue>
   void propagate(Queue& queue, index_t grasp, FrameResult& result);
   void rebuild_ranks(const std::vector<float>& values);
@@ -189,6 +199,7 @@ private:
 
   TransferFunction transfer_;
   QueueKind queue_kind_ = QueueKind::fifo_priority;
+  ValidRegionFrame frame_kind_ = ValidRegionFrame::axes;
   FifoQueue fifo_;
   HeapPriorityQueue heap_;
   BucketFifoPriorityQueue buckets_;

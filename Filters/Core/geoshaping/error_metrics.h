@@ -2,6 +2,7 @@
 // Error metrics of a deformed configuration (DESIGN.md section 6).
 #include "geoshaping/adjacency.h"
 #include "geoshaping/transfer_function.h"
+#include "geoshaping/valid_region.h"
 
 #include <Eigen/Core>
 
@@ -28,6 +29,10 @@ struct LinkMesh
   std::vector<std::uint8_t> rigid;      // non-zero where malleability == 0 (for E_rigid)
   std::vector<std::uint8_t> pinned;     // non-zero = never moves; empty = none pinned
   double mean_edge = 0.0;               // mean_edge_length(rest, *adjacency)
+  // Shape of the valid regions link_distance() and link_error() measure against (the
+  // deformer's, from link_mesh(deformer)). The link projection (refinement) projects onto
+  // the axis-aligned boxes whatever this says.
+  ValidRegionFrame frame = ValidRegionFrame::axes;
 
   index_t size() const { return index_t(rest.size()); }
   bool is_pinned(index_t v) const { return !pinned.empty() && pinned[std::size_t(v)] != 0; }
@@ -58,7 +63,9 @@ double rigid_error(const LinkMesh& mesh, const Displacements& u);
 // Distance (in mesh units, not normalised) from vertex c to its valid region w.r.t. its
 // neighbour s, with c's own params (valid_region.h): for o = x0_c - x0_s and the
 // displacement bounds [lo, hi] of (o, params_c), the box is x_s + o + [lo, hi], so
-//   dist = | (u_c - u_s) - clamp(u_c - u_s, lo, hi) |.
+//   dist = | (u_c - u_s) - clamp(u_c - u_s, lo, hi) |;
+// in the Link frame the distance to the cylinder, | w - link_displacement_projection(o, w) |
+// with w = u_c - u_s.
 // 0 when o is not finite (the deformer places no constraint there either).
 double link_distance(const LinkMesh& mesh, const Displacements& u, index_t c, index_t s);
 

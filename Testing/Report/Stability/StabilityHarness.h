@@ -36,6 +36,8 @@ struct Outcome
 //   every moved vertex but the grasp has a moved sponsor that is its neighbour);
 // - each moved vertex lies in its sponsor's valid region (to 1e-9 of the scale);
 // - with the FIFO Priority queue, rigid regions (malleability 0) translate exactly.
+// The filter's ValidRegionFrame is set from the environment variable
+// GEOSHAPING_STABILITY_FRAME when it is defined (0 Axes, 1 Link).
 // `check_invariants` false: only the first two (for inputs the filter refuses).
 Outcome Check(vtkChainMailDeformationFilter* f, vtkPointSet* input, bool check_invariants = true);
 
