@@ -31,7 +31,7 @@ std::vector<std::string_view> tokens(std::string_view line)
 }
 
 // from_chars: locale-independent and exact; the whole token must be consumed.
-template <class T>
+template<class T>
 bool parse_number(std::string_view s, T& value)
 {
   const char* end = s.data() + s.size();
@@ -41,6 +41,10 @@ bool parse_number(std::string_view s, T& value)
 
 constexpr const char* field_names[] = { "t", "x", "y", "z", "qw", "qx", "qy", "qz" };
 
+// A stylus reaches tens of centimetres; the bound keeps every difference, interpolation
+// and workspace-to-scene mapping of positions finite (1e308 would interpolate to inf).
+constexpr double max_position = 1e6; // m
+
 } // namespace
 
 TraceParseResult parse_trace(std::istream& in, const std::string& source)
@@ -48,7 +52,8 @@ TraceParseResult parse_trace(std::istream& in, const std::string& source)
   TraceParseResult result;
   std::string line;
   std::size_t line_number = 0;
-  auto fail = [&](const std::string& what) {
+  auto fail = [&](const std::string& what)
+  {
     result.message = source + ":" + std::to_string(line_number) + ": " + what;
     result.samples.clear();
     return result;
@@ -71,6 +76,10 @@ TraceParseResult parse_trace(std::istream& in, const std::string& source)
       if (!std::isfinite(v[i]))
         return fail("field " + std::string(field_names[i]) + " is not finite");
     }
+    for (int i = 1; i < 4; ++i)
+      if (std::abs(v[i]) > max_position)
+        return fail("field " + std::string(field_names[i]) + " '" + std::string(f[i]) +
+                    "' is beyond the 1e6 m a stylus position may reach");
     DeviceSample s;
     if (!parse_number(f[8], s.buttons))
       return fail("buttons '" + std::string(f[8]) + "' is not an unsigned integer");
@@ -85,7 +94,7 @@ TraceParseResult parse_trace(std::istream& in, const std::string& source)
       s.orientation.coeffs() /= norm;
     if (!result.samples.empty() && s.t < result.samples.back().t)
       return fail("time goes backwards (" + std::string(f[0]) + " after " +
-        std::to_string(result.samples.back().t) + ")");
+                  std::to_string(result.samples.back().t) + ")");
     result.samples.push_back(s);
   }
   if (in.bad())

@@ -1,4 +1,5 @@
 #include "geoshaping/brush.h"
+#include "geoshaping/malleability_preset.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,7 +37,7 @@ constexpr Name falloff_names[] = { { "Constant", int(Falloff::constant) },
 constexpr Name mode_names[] = { { "Euclidean", int(DistanceMode::euclidean) },
   { "Geodesic", int(DistanceMode::geodesic) } };
 
-template <std::size_t N>
+template<std::size_t N>
 const char* name_of(const Name (&names)[N], int value)
 {
   for (const Name& n : names)
@@ -45,7 +46,7 @@ const char* name_of(const Name (&names)[N], int value)
   return "";
 }
 
-template <std::size_t N>
+template<std::size_t N>
 bool parse(const Name (&names)[N], const char* text, int& value)
 {
   for (const Name& n : names)
@@ -58,8 +59,14 @@ bool parse(const Name (&names)[N], const char* text, int& value)
 }
 } // namespace
 
-const char* falloff_name(Falloff f) { return name_of(falloff_names, int(f)); }
-const char* distance_mode_name(DistanceMode m) { return name_of(mode_names, int(m)); }
+const char* falloff_name(Falloff f)
+{
+  return name_of(falloff_names, int(f));
+}
+const char* distance_mode_name(DistanceMode m)
+{
+  return name_of(mode_names, int(m));
+}
 
 bool parse_falloff_name(const char* name, Falloff& f)
 {
@@ -143,7 +150,8 @@ void GeodesicReach::compute(const Adjacency& adjacency, const double* xyz, index
   heap_.clear();
   if (source < 0 || !(start_distance <= radius))
     return;
-  const std::size_t n = std::max<std::size_t>(std::size_t(adjacency.size()), std::size_t(source) + 1);
+  const std::size_t n =
+    std::max<std::size_t>(std::size_t(adjacency.size()), std::size_t(source) + 1);
   if (distance_.size() < n)
     distance_.resize(n, infinity);
 
@@ -181,7 +189,8 @@ void GeodesicReach::compute(const Adjacency& adjacency, const double* xyz, index
 PointQueries brute_force_queries(const double* xyz, index_t n)
 {
   PointQueries q;
-  q.nearest = [xyz, n](const Eigen::Vector3d& p) {
+  q.nearest = [xyz, n](const Eigen::Vector3d& p)
+  {
     index_t best = -1;
     double best_d = infinity;
     for (index_t v = 0; v < n; ++v)
@@ -195,7 +204,8 @@ PointQueries brute_force_queries(const double* xyz, index_t n)
     }
     return best;
   };
-  q.within = [xyz, n](const Eigen::Vector3d& p, double r, std::vector<index_t>& ids) {
+  q.within = [xyz, n](const Eigen::Vector3d& p, double r, std::vector<index_t>& ids)
+  {
     ids.clear();
     for (index_t v = 0; v < n; ++v)
       if (distance(xyz, v, p) <= r)
@@ -241,23 +251,49 @@ void Painter::reach(const Dab& dab, DistanceMode mode, Reach& out)
     distance(xyz_, source, dab.center), dab.radius, out);
 }
 
-PaintReport Painter::paint(
-  const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode, float* malleability)
+Eigen::Vector3d malleability_color(double m)
+{
+  const double* p = malleability_rgb_points;
+  const int last = malleability_rgb_point_count - 1;
+  m = std::isfinite(m) ? std::clamp(m, p[0], p[4 * last]) : p[0];
+  int i = 0;
+  while (i < last - 1 && m > p[4 * (i + 1)])
+  {
+    ++i;
+  }
+  const double* a = p + 4 * i;
+  const double* b = a + 4;
+  const double f = b[0] > a[0] ? (m - a[0]) / (b[0] - a[0]) : 0.0;
+  return Eigen::Vector3d(a[1], a[2], a[3]) +
+         f * Eigen::Vector3d(b[1] - a[1], b[2] - a[2], b[3] - a[3]);
+}
+
+PaintReport Painter::paint(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode,
+  float* malleability, const Progress& progress)
 {
   PaintReport report;
+  ProgressTicker ticker(progress, dabs.size());
   for (std::size_t i = 0; i < dabs.size(); ++i)
   {
     const char* problem = validate_dab(dabs[i]);
     if (*problem)
     {
       report.rejected.emplace_back(i, problem);
-      continue;
     }
-    reach(dabs[i], mode, reach_);
-    apply_dab(dabs[i], falloff, reach_, malleability);
-    ++report.applied;
-    report.painted += reach_.vertices.size();
+    else
+    {
+      reach(dabs[i], mode, reach_);
+      apply_dab(dabs[i], falloff, reach_, malleability);
+      ++report.applied;
+      report.painted += reach_.vertices.size();
+    }
+    if (!ticker.tick(i + 1))
+    {
+      report.aborted = i + 1 < dabs.size();
+      return report;
+    }
   }
+  ticker.finish(); // every dab applied: a stop asked now has nothing left to stop
   return report;
 }
 

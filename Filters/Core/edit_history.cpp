@@ -35,7 +35,8 @@ std::string base64(const std::vector<unsigned char>& in)
   {
     const std::size_t left = in.size() - i;
     const std::uint32_t b = (std::uint32_t(in[i]) << 16) |
-      (left > 1 ? std::uint32_t(in[i + 1]) << 8 : 0) | (left > 2 ? in[i + 2] : 0);
+                            (left > 1 ? std::uint32_t(in[i + 1]) << 8 : 0) |
+                            (left > 2 ? in[i + 2] : 0);
     out += kBase64[(b >> 18) & 63];
     out += kBase64[(b >> 12) & 63];
     out += left > 1 ? kBase64[(b >> 6) & 63] : '=';
@@ -122,8 +123,8 @@ std::string encode_edit(const Edit& e)
   for (double x : { r.displacement.x(), r.displacement.y(), r.displacement.z() })
     out << ' ' << hex(x);
   out << ' ' << r.queue;
-  for (double x : { r.stretch[0], r.stretch[1], r.compression[0], r.compression[1], r.shear[0],
-         r.shear[1] })
+  for (double x :
+    { r.stretch[0], r.stretch[1], r.compression[0], r.compression[1], r.shear[0], r.shear[1] })
     out << ' ' << hex(x);
   out << ' ' << r.curve_shape << ' ' << hex(r.step_threshold) << ' ' << r.refinement_iterations
       << ' ' << e.vertices.size() << ' ';
@@ -147,11 +148,11 @@ bool decode_edit(const std::string& record, index_t n, Edit& e, std::string& err
   long long grasp, queue, shape, refinement, count;
   in >> magic;
   bool ok = magic == "GSE1" && parse_integer(in, grasp) && parse_number(in, d[0]) &&
-    parse_number(in, d[1]) && parse_number(in, d[2]) && parse_integer(in, queue);
+            parse_number(in, d[1]) && parse_number(in, d[2]) && parse_integer(in, queue);
   for (int k = 3; ok && k < 9; ++k)
     ok = parse_number(in, d[k]);
-  ok = ok && parse_integer(in, shape) && parse_number(in, d[9]) &&
-    parse_integer(in, refinement) && parse_integer(in, count);
+  ok = ok && parse_integer(in, shape) && parse_number(in, d[9]) && parse_integer(in, refinement) &&
+       parse_integer(in, count);
   std::vector<unsigned char> bytes;
   if (ok && count > 0)
     ok = bool(in >> payload) && unbase64(payload, bytes);
@@ -260,9 +261,26 @@ bool EditHistory::redo(ChainMailDeformer& deformer)
   return true;
 }
 
-bool EditHistory::synchronize(
-  ChainMailDeformer& deformer, const std::vector<std::string>& records, std::string& error)
+bool EditHistory::synchronize(ChainMailDeformer& deformer, const std::vector<std::string>& records,
+  std::string& error, const std::function<bool(index_t)>& fits)
 {
+  // After the edit at applied_ - 1 was applied: drops it (and the redo tail) if a vertex
+  // it moved does not fit.
+  const auto refused = [&](std::size_t i)
+  {
+    if (!fits)
+      return false;
+    for (index_t v : edits_[applied_ - 1].vertices)
+      if (!fits(v))
+      {
+        undo(deformer);
+        edits_.resize(applied_);
+        error = "edit " + std::to_string(i) + " moves vertex " + std::to_string(v) +
+                " beyond what the output's points hold";
+        return true;
+      }
+    return false;
+  };
   std::vector<std::uint64_t> hashes(records.size());
   for (std::size_t i = 0; i < records.size(); ++i)
     hashes[i] = record_hash(records[i]);
@@ -276,6 +294,8 @@ bool EditHistory::synchronize(
     if (i < edits_.size() && edits_[i].hash == hashes[i])
     {
       redo(deformer);
+      if (refused(i))
+        return false;
       continue;
     }
     Edit e;
@@ -287,6 +307,8 @@ bool EditHistory::synchronize(
     edits_.resize(applied_);
     edits_.push_back(std::move(e));
     redo(deformer);
+    if (refused(i))
+      return false;
   }
   return true;
 }
@@ -310,8 +332,8 @@ std::size_t EditHistory::memory_bytes() const
   std::size_t bytes = edits_.capacity() * sizeof(Edit) + touched_.capacity() * sizeof(index_t);
   for (const Edit& e : edits_)
     bytes += e.vertices.capacity() * sizeof(index_t) +
-      (e.displacements.capacity() + e.old_rest.capacity() + e.old_offset.capacity()) *
-        sizeof(Eigen::Vector3d);
+             (e.displacements.capacity() + e.old_rest.capacity() + e.old_offset.capacity()) *
+               sizeof(Eigen::Vector3d);
   return bytes;
 }
 

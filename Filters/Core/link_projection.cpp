@@ -48,7 +48,10 @@ void LinkProjector::clear()
   links_.clear();
 }
 
-bool LinkProjector::is_fixed(index_t v) const { return v == grasp_ || mesh_.is_pinned(v); }
+bool LinkProjector::is_fixed(index_t v) const
+{
+  return v == grasp_ || mesh_.is_pinned(v);
+}
 
 // An edge whose slab is a single point: its ends must share one displacement (an end is
 // rigid, or the edge has zero length).
@@ -183,7 +186,8 @@ double LinkProjector::sweep()
 // exactly as link_distance() measures it.
 double LinkProjector::max_violation() const
 {
-  auto directed = [&](index_t c, index_t s, const Eigen::Vector3d& r) {
+  auto directed = [&](index_t c, index_t s, const Eigen::Vector3d& r)
+  {
     const Box box = displacement_bounds(mesh_.rest[c] - mesh_.rest[s], mesh_.params[c]);
     return (r - box.clamp(r)).norm();
   };
@@ -253,7 +257,7 @@ ProjectionReport LinkProjector::project(index_t grasp, const std::vector<index_t
       keep_best();
       report.update = update / mesh_.scale();
     }
-    if (report.converged)
+    if (report.converged || (options.stop && options.stop()))
       break;
   }
   report.violation = best / mesh_.scale();
@@ -271,8 +275,8 @@ ProjectionReport LinkProjector::project(index_t grasp, const std::vector<index_t
   return report;
 }
 
-ProjectionReport refine_links(
-  LinkProjector& projector, const ChainMailDeformer& deformer, index_t grasp, int iterations)
+ProjectionReport refine_links(LinkProjector& projector, const ChainMailDeformer& deformer,
+  index_t grasp, int iterations, std::function<bool()> stop)
 {
   Displacements values;
   values.reserve(deformer.moved().size());
@@ -280,6 +284,7 @@ ProjectionReport refine_links(
     values.push_back(deformer.displacement(v));
   ProjectionOptions options;
   options.max_iterations = iterations;
+  options.stop = std::move(stop);
   return projector.project(grasp, deformer.moved(), values, options);
 }
 

@@ -30,21 +30,42 @@ void vtkChainMailDeformationFilter::AddShearCurvePoint(double m, double v)
   this->Modified();
 }
 
+void vtkChainMailDeformationFilter::AddStretchCurveValue(double value)
+{
+  AddCurveValue(this->Internals->StretchCurve, this->Internals->StretchValues, value);
+  this->Modified();
+}
+
+void vtkChainMailDeformationFilter::AddCompressionCurveValue(double value)
+{
+  AddCurveValue(this->Internals->CompressionCurve, this->Internals->CompressionValues, value);
+  this->Modified();
+}
+
+void vtkChainMailDeformationFilter::AddShearCurveValue(double value)
+{
+  AddCurveValue(this->Internals->ShearCurve, this->Internals->ShearValues, value);
+  this->Modified();
+}
+
 void vtkChainMailDeformationFilter::RemoveAllStretchCurvePoints()
 {
   this->Internals->StretchCurve.points.clear();
+  this->Internals->StretchValues.Clear();
   this->Modified();
 }
 
 void vtkChainMailDeformationFilter::RemoveAllCompressionCurvePoints()
 {
   this->Internals->CompressionCurve.points.clear();
+  this->Internals->CompressionValues.Clear();
   this->Modified();
 }
 
 void vtkChainMailDeformationFilter::RemoveAllShearCurvePoints()
 {
   this->Internals->ShearCurve.points.clear();
+  this->Internals->ShearValues.Clear();
   this->Modified();
 }
 
@@ -119,10 +140,13 @@ int vtkChainMailDeformationFilter::RequestData(
   {
     return 1;
   }
-  this->UpdateMalleabilityAndPins(inputVector, n);
+  if (!this->UpdateMalleabilityAndPins(inputVector, n))
+  {
+    return 1;
+  }
   std::vector<int> stale; // the last frame, shown until rewritten
   const std::vector<int> touched = this->UpdateEdits(stale);
-  this->Deform(input);
+  this->Deform(input, stale);
   this->WriteOutput(input, output, stale, touched);
   return 1;
 }

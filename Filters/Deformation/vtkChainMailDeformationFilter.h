@@ -41,7 +41,13 @@
  * Input: any vtkPointSet (vtkPolyData, vtkUnstructuredGrid, ...). Output: the same
  * type, topology and attribute data passed, new points whose precision follows
  * `OutputPointsPrecision`. Bad input (non-finite points, grasp out of range, non-finite
- * displacement) gives an error and the input geometry unchanged. In parallel
+ * displacement or grasp position, a displacement or result the output point type cannot
+ * hold, a malleability or pin array with fewer or more values than points, a pin array
+ * that is not numeric point data) gives an error and the input geometry unchanged; no
+ * NaN or infinite coordinate leaves the filter. Quiet fall-backs warn once per cause: a
+ * malleability array that is not one-component numeric point data (DefaultMalleability
+ * is used), a pin array of several components (component 0 is the mask), an input with
+ * no cell edges (only the grasped vertex moves). In parallel
  * (more than one process) the filter refuses with a message, since the propagation
  * needs the whole connected mesh.
  */
@@ -54,6 +60,7 @@
 #include <limits> // For quiet_NaN
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 #include <vector> // For std::vector
 
 class vtkIdTypeArray;
@@ -84,6 +91,10 @@ public:
   {
     GRASP_POINT_ID = 0,
     GRASP_NEAREST_TO_POSITION = 1
+  };
+  enum
+  {
+    MAX_REFINEMENT_ITERATIONS = 64
   };
 
   ///@{
@@ -146,6 +157,12 @@ public:
   void AddStretchCurvePoint(double m, double value);
   void AddCompressionCurvePoint(double m, double value);
   void AddShearCurvePoint(double m, double value);
+  /// The plugin's StretchCurve, CompressionCurve and ShearCurve properties send their
+  /// flat lists one value at a time through these: an odd-length list's last value is
+  /// ignored with a warning.
+  void AddStretchCurveValue(double value);
+  void AddCompressionCurveValue(double value);
+  void AddShearCurveValue(double value);
   void RemoveAllStretchCurvePoints();
   void RemoveAllCompressionCurvePoints();
   void RemoveAllShearCurvePoints();
@@ -156,9 +173,11 @@ public:
 
   ///@{
   /// Sweeps of the refinement pass after ChainMail (0, the default: none, the plain
-  /// ChainMail result). Each sweep projects every link of the displaced region onto its
-  /// valid region once; the pass stops earlier once every link holds.
-  vtkSetClampMacro(RefinementIterations, int, 0, VTK_INT_MAX);
+  /// ChainMail result), at most MAX_REFINEMENT_ITERATIONS (64, the plugin's range; larger
+  /// values are clamped). Each sweep projects every link of the displaced region onto its
+  /// valid region once; the pass stops earlier once every link holds, or when the
+  /// pipeline asks the filter to abort (checked after every sweep).
+  vtkSetClampMacro(RefinementIterations, int, 0, MAX_REFINEMENT_ITERATIONS);
   vtkGetMacro(RefinementIterations, int);
   ///@}
 
@@ -275,9 +294,12 @@ private:
   void Refine(vtkIdType grasp);
   // The stages of RequestData (vtkChainMailDeformationFilterUpdate.cxx).
   bool UpdateGeometry(vtkPointSet* input);
-  void UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
+  bool UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
   std::vector<int> UpdateEdits(std::vector<int>& stale);
-  void Deform(vtkPointSet* input);
+  void Deform(vtkPointSet* input, std::vector<int>& stale);
+  bool OutputFits();
+  // A quiet fall-back is reported once per distinct message, not on every drag frame.
+  void WarnOnce(const std::string& message);
   void UpdateNormals(vtkIdTypeArray* changed);
   void WriteOutput(vtkPointSet* input, vtkPointSet* output, const std::vector<int>& stale,
     const std::vector<int>& touched);

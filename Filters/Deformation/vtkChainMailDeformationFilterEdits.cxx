@@ -14,8 +14,8 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
     in.Projector = std::make_unique<geoshaping::LinkProjector>(in.Links);
   }
   const auto start = std::chrono::steady_clock::now();
-  const geoshaping::ProjectionReport report = geoshaping::refine_links(
-    *in.Projector, in.Deformer, geoshaping::index_t(grasp), this->RefinementIterations);
+  const geoshaping::ProjectionReport report = geoshaping::refine_links(*in.Projector, in.Deformer,
+    geoshaping::index_t(grasp), this->RefinementIterations, [this] { return this->CheckAbort(); });
   this->LastRefinementMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfRefinementSweeps = report.iterations;

@@ -31,6 +31,7 @@
 
 #include <chrono>
 #include <initializer_list>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,7 @@ struct vtkChainMailDeformationFilter::vtkInternals
 {
   geoshaping::ChainMailDeformer Deformer;
   geoshaping::Curve StretchCurve, CompressionCurve, ShearCurve; // only .points used
+  vtkGeoShapingRecordList<2> StretchValues, CompressionValues, ShearValues;
 
   // What the cached core state was built from.
   vtkPoints* GeometryPoints = nullptr;
@@ -74,6 +76,16 @@ struct vtkChainMailDeformationFilter::vtkInternals
     return this->Refining ? this->Projector->displacement(v) : this->Deformer.displacement(v);
   }
 
+  // Whether input point v moved by u lands where the output's point type holds it:
+  // positions are computed in double, and a double beyond FLT_MAX cast to float is
+  // undefined behaviour (in practice inf). x receives the position.
+  bool Fits(geoshaping::index_t v, const Eigen::Vector3d& u, Eigen::Vector3d& x) const
+  {
+    this->GeometryPoints->GetPoint(v, x.data());
+    x += u;
+    return x.cwiseAbs().maxCoeff() <= this->OutputPoints->GetData()->GetDataTypeMax();
+  }
+
   // The output points persist between updates; each update rewrites only the changed
   // vertices and lists them (vtkGrowingBoundsPoints::PointsChanged), so bounds and a
   // consumer that saw the previous update (the GeoShaping Surface representation)
@@ -89,6 +101,7 @@ struct vtkChainMailDeformationFilter::vtkInternals
   std::vector<geoshaping::index_t> Affected;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   bool WarnedParallel = false;
+  std::set<std::string> Warned; // WarnOnce's messages, cleared when the geometry changes
 };
 
 namespace vtkChainMailDeformationFilterDetail
@@ -104,6 +117,15 @@ inline void SetCurvePoints(geoshaping::Curve& curve, vtkPiecewiseFunction* f)
     f->GetNodeValue(i, node);
     curve.points.emplace_back(node[0], node[1]);
   }
+}
+
+// One value of a curve's flat (malleability, value) list; every second one adds a point.
+inline void AddCurveValue(
+  geoshaping::Curve& curve, vtkGeoShapingRecordList<2>& values, double value)
+{
+  double point[2];
+  if (values.Add(value, point))
+    curve.points.emplace_back(point[0], point[1]);
 }
 
 using IdList = std::vector<geoshaping::index_t>;

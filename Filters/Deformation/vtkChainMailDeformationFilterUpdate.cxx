@@ -4,6 +4,9 @@
 #include "vtkArrayDispatch.h"
 #include "vtkDataArrayRange.h"
 #include "vtkFloatArray.h"
+#include "vtkInformation.h"
+
+#include <cmath>
 
 using namespace vtkChainMailDeformationFilterDetail;
 
@@ -72,6 +75,7 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
     in.Refining = false;
     in.History.clear();
     in.EditsDirty = true;
+    in.Warned.clear();
 
     std::vector<double> xyz;
     vtkIdType firstBad;
@@ -89,6 +93,12 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
       vtkWarningMacro(<< skipped
                       << " cells are of an unsupported type (higher-order or polyhedral) or "
                          "have invalid point ids; their edges do not propagate deformation.");
+    }
+    if (n > 1 && adjacency.neighbors.empty())
+    {
+      vtkWarningMacro("Input has no cell edges (" << input->GetNumberOfCells()
+                                                  << " cells, none with an edge): only the "
+                                                     "grasped vertex moves.");
     }
     in.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
 
@@ -130,19 +140,71 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   return in.GeometryValid;
 }
 
-void vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
+void vtkChainMailDeformationFilter::WarnOnce(const std::string& message)
+{
+  if (this->Internals->Warned.insert(message).second)
+  {
+    vtkWarningMacro(<< message);
+  }
+}
+
+bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
   vtkInformationVector** inputVector, vtkIdType n)
 {
   vtkInternals& in = *this->Internals;
-  // 2. Malleability and pins: copied only when their array changes.
-  vtkDataArray* malleability = this->GetInputArrayToProcess(0, inputVector);
-  if (malleability && malleability->GetNumberOfComponents() != 1)
+  // 2. Malleability and pins: copied only when their array changes. An array is read
+  // only as numeric point data with one value per point.
+  int association = -1;
+  vtkAbstractArray* named = this->GetInputAbstractArrayToProcess(0, inputVector, association);
+  vtkDataArray* malleability = vtkDataArray::SafeDownCast(named);
+  if (named && (!malleability || association != vtkDataObject::FIELD_ASSOCIATION_POINTS ||
+                 malleability->GetNumberOfComponents() != 1))
   {
-    vtkWarningMacro("Malleability array '"
-                    << malleability->GetName()
-                    << "' must have one component; using DefaultMalleability.");
+    this->WarnOnce(std::string("Malleability array '") + named->GetName() + "' is " +
+                   (!malleability ? std::string("not numeric (") + named->GetClassName() + ")"
+                     : association != vtkDataObject::FIELD_ASSOCIATION_POINTS
+                       ? std::string("not point data")
+                       : std::to_string(malleability->GetNumberOfComponents()) + "-component") +
+                   "; DefaultMalleability is used everywhere.");
     malleability = nullptr;
   }
+  vtkInformation* request = this->GetInputArrayInformation(0);
+  const char* wanted = request ? request->Get(vtkDataObject::FIELD_NAME()) : nullptr;
+  if (!named && wanted && *wanted && std::string(wanted) != "None")
+  {
+    this->WarnOnce(std::string("The input has no point array '") + wanted +
+                   "' (MalleabilityArray); DefaultMalleability is used everywhere.");
+  }
+  if (malleability && malleability->GetNumberOfTuples() != n)
+  {
+    vtkErrorMacro("Malleability array '" << malleability->GetName() << "' has "
+                                         << malleability->GetNumberOfTuples() << " values for " << n
+                                         << " points; output is the undeformed input.");
+    return false;
+  }
+  // The pin array is optional: ask for it only when one was named.
+  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
+  named = arrays && arrays->GetNumberOfInformationObjects() > 1 &&
+              arrays->GetInformationObject(1)->Get(vtkDataObject::FIELD_NAME())
+            ? this->GetInputAbstractArrayToProcess(1, inputVector, association)
+            : nullptr;
+  vtkDataArray* pins = vtkDataArray::SafeDownCast(named);
+  if (named && (!pins || association != vtkDataObject::FIELD_ASSOCIATION_POINTS ||
+                 pins->GetNumberOfTuples() != n))
+  {
+    vtkErrorMacro("Pinned array '" << named->GetName() << "' must be numeric point data with one "
+                                   << "value per point (it is " << named->GetClassName() << " with "
+                                   << named->GetNumberOfTuples() << " tuples for " << n
+                                   << " points); output is the undeformed input.");
+    return false;
+  }
+  if (pins && pins->GetNumberOfComponents() != 1)
+  {
+    this->WarnOnce(std::string("Pinned array '") + pins->GetName() + "' has " +
+                   std::to_string(pins->GetNumberOfComponents()) +
+                   " components; component 0 is the pin mask.");
+  }
+
   if (malleability != in.MalleabilitySource ||
       (malleability && malleability->GetMTime() != in.MalleabilityTime) ||
       (!malleability && in.MalleabilityDefault != this->DefaultMalleability))
@@ -169,12 +231,6 @@ void vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
     in.MalleabilityDefault = this->DefaultMalleability;
     in.Projector.reset();
   }
-  // The pin array is optional: ask for it only when one was named.
-  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
-  vtkDataArray* pins = arrays && arrays->GetNumberOfInformationObjects() > 1 &&
-                           arrays->GetInformationObject(1)->Get(vtkDataObject::FIELD_NAME())
-                         ? this->GetInputArrayToProcess(1, inputVector)
-                         : nullptr;
   if (pins != in.PinSource || (pins && pins->GetMTime() != in.PinTime))
   {
     if (pins)
@@ -192,6 +248,7 @@ void vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
     in.PinSource = pins;
     in.Projector.reset();
   }
+  return true;
 }
 
 std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& stale)
@@ -202,7 +259,10 @@ std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& st
   {
     stale = in.Deformer.moved();
     std::string error;
-    if (!in.History.synchronize(in.Deformer, in.EditRecords, error))
+    Eigen::Vector3d x;
+    const auto fits = [&in, &x](geoshaping::index_t v)
+    { return in.Fits(v, in.Deformer.committed_offset(v), x); };
+    if (!in.History.synchronize(in.Deformer, in.EditRecords, error, fits))
     {
       vtkErrorMacro("EditHistory: " << error << "; the edits before it are applied.");
     }
@@ -217,7 +277,7 @@ std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& st
   return touched;
 }
 
-void vtkChainMailDeformationFilter::Deform(vtkPointSet* input)
+void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>& stale)
 {
   vtkInternals& in = *this->Internals;
   const vtkIdType n = input->GetNumberOfPoints();
@@ -230,6 +290,14 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input)
   tf.shear =
     MakeCurve(this->ShearRange, this->TransferCurveShape, this->StepThreshold, in.ShearCurve);
   tf.exact_rigid_at_zero = this->ExactRigidAtZero;
+  for (auto* list : { &in.StretchValues, &in.CompressionValues, &in.ShearValues })
+    if (list->TakeTail() > 0)
+    {
+      vtkWarningMacro(<< (list == &in.StretchValues        ? "StretchCurve"
+                           : list == &in.CompressionValues ? "CompressionCurve"
+                                                           : "ShearCurve")
+                      << " has an odd number of values: its last value is ignored.");
+    }
   if (*tf.validate())
   {
     vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");
@@ -244,6 +312,17 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input)
     vtkIdType grasp = this->GraspPointId;
     if (this->GraspMode == GRASP_NEAREST_TO_POSITION)
     {
+      if (!(std::isfinite(this->GraspPosition[0]) && std::isfinite(this->GraspPosition[1]) &&
+            std::isfinite(this->GraspPosition[2])))
+      {
+        vtkErrorMacro("No deformation: GraspPosition (" << this->GraspPosition[0] << ", "
+                                                        << this->GraspPosition[1] << ", "
+                                                        << this->GraspPosition[2]
+                                                        << ") is not finite; output is the "
+                                                           "undeformed input.");
+        in.Deformer.reset();
+        return;
+      }
       if (!in.Locator)
       {
         in.Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
@@ -284,8 +363,42 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input)
       {
         this->Refine(grasp);
       }
+      if (r.ok && !this->OutputFits())
+      {
+        // The last frame's vertices are still shown: restore them with the stale ones.
+        const IdList& shown = in.Deformer.previously_moved();
+        stale.insert(stale.end(), shown.begin(), shown.end());
+        in.Deformer.reset();
+        in.Refining = false;
+        this->NumberOfDisplacedPoints = 0;
+        this->LastGraspPointId = -1;
+        this->LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
+      }
     }
   }
+}
+
+bool vtkChainMailDeformationFilter::OutputFits()
+{
+  vtkInternals& in = *this->Internals;
+  const IdList none;
+  for (const IdList* list :
+    IdLists{ &in.Deformer.moved(), in.Refining ? &in.Projector->changed() : &none })
+    for (geoshaping::index_t v : *list)
+    {
+      Eigen::Vector3d x;
+      if (!in.Fits(v, in.Deformer.committed_offset(v) + in.FinalDisplacement(v), x))
+      {
+        vtkErrorMacro("No deformation: Displacement ("
+                      << this->Displacement[0] << ", " << this->Displacement[1] << ", "
+                      << this->Displacement[2] << ") moves point " << v << " to (" << x[0] << ", "
+                      << x[1] << ", " << x[2] << "), beyond what the output's "
+                      << in.OutputPoints->GetData()->GetDataTypeAsString()
+                      << " points hold; output is the undeformed input.");
+        return false;
+      }
+    }
+  return true;
 }
 
 void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet* output,

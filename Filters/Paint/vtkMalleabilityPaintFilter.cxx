@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -42,6 +43,8 @@ struct vtkMalleabilityPaintFilter::vtkInternals
 {
   std::vector<geoshaping::Dab> Dabs;
   std::vector<double> PointDabs; // id value weight
+  vtkGeoShapingRecordList<6> DabValues;
+  vtkGeoShapingRecordList<3> PointDabValues;
 
   // Geometry the locator, points and adjacency were built from.
   vtkPoints* GeometryPoints = nullptr;
@@ -151,8 +154,18 @@ void vtkMalleabilityPaintFilter::AddPointDab(double id, double value, double wei
   this->Modified();
 }
 
+void vtkMalleabilityPaintFilter::AddPointDabValue(double value)
+{
+  double dab[3];
+  if (this->Internals->PointDabValues.Add(value, dab))
+    this->AddPointDab(dab[0], dab[1], dab[2]);
+  else
+    this->Modified();
+}
+
 void vtkMalleabilityPaintFilter::RemoveAllPointDabs()
 {
+  this->Internals->PointDabValues.Clear();
   if (!this->Internals->PointDabs.empty())
   {
     this->Internals->PointDabs.clear();
@@ -172,8 +185,18 @@ void vtkMalleabilityPaintFilter::AddDab(
   this->Modified();
 }
 
+void vtkMalleabilityPaintFilter::AddDabValue(double value)
+{
+  double dab[6];
+  if (this->Internals->DabValues.Add(value, dab))
+    this->AddDab(dab[0], dab[1], dab[2], dab[3], dab[4], dab[5]);
+  else
+    this->Modified();
+}
+
 void vtkMalleabilityPaintFilter::RemoveAllDabs()
 {
+  this->Internals->DabValues.Clear();
   if (!this->Internals->Dabs.empty())
   {
     this->Internals->Dabs.clear();
@@ -212,12 +235,30 @@ int vtkMalleabilityPaintFilter::RequestData(
   this->NumberOfRejectedDabs = 0;
   this->NumberOfPaintedValues = 0;
   this->LastPaintMilliseconds = 0.0;
+  vtkInternals& internals = *this->Internals;
+  if (const int tail = internals.DabValues.TakeTail())
+  {
+    vtkWarningMacro("Dabs ends in an incomplete dab (" << tail << " of 6 values); it is ignored.");
+  }
+  if (const int tail = internals.PointDabValues.TakeTail())
+  {
+    vtkWarningMacro(
+      "PointDabs ends in an incomplete point dab (" << tail << " of 3 values); it is ignored.");
+  }
   const char* name = this->PaintPins ? this->PinnedArrayName : this->MalleabilityArrayName;
   name = name ? name : "";
   if (!*name)
   {
     vtkErrorMacro(<< (this->PaintPins ? "PinnedArrayName" : "MalleabilityArrayName")
                   << " is empty; output is the input.");
+    return 1;
+  }
+  if (this->PaintPins && this->MalleabilityArrayName &&
+      strcmp(name, this->MalleabilityArrayName) == 0)
+  {
+    vtkErrorMacro("PaintPins would overwrite the malleability array '"
+                  << name << "' with a pin mask: give PinnedArrayName another name; output "
+                  << "is the input.");
     return 1;
   }
   const vtkIdType n = input->GetNumberOfPoints();
@@ -237,7 +278,21 @@ int vtkMalleabilityPaintFilter::RequestData(
   auto malleability = vtkSmartPointer<vtkFloatArray>::New();
   malleability->SetName(name);
   malleability->SetNumberOfTuples(n);
-  vtkDataArray* source = input->GetPointData()->GetArray(name);
+  vtkAbstractArray* named = input->GetPointData()->GetAbstractArray(name);
+  vtkDataArray* source = vtkDataArray::SafeDownCast(named);
+  if (named && !source)
+  {
+    vtkWarningMacro("Point array '"
+                    << name << "' is not numeric (" << named->GetClassName()
+                    << "); it is replaced by "
+                    << (this->PaintPins ? "an empty mask." : "InitialMalleability."));
+  }
+  if (source && source->GetNumberOfTuples() != n)
+  {
+    vtkErrorMacro("Point array '" << name << "' has " << source->GetNumberOfTuples()
+                                  << " values for " << n << " points; output is the input.");
+    return 1;
+  }
   if (source && source->GetNumberOfComponents() != 1)
   {
     vtkWarningMacro("Point array '" << name << "' has " << source->GetNumberOfComponents()

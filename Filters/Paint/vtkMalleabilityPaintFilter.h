@@ -5,8 +5,10 @@
  *
  * The output is the input with a float point array (`Malleability` by default, see
  * MalleabilityArrayName) in [0, 1]: a copy of the input's array of that name when it
- * has one (values clamped to [0, 1], NaN read as 0, with a warning), otherwise
- * InitialMalleability everywhere; the input's array is never modified. The array is
+ * has one (values clamped to [0, 1], NaN read as 0, with a warning; a non-numeric or
+ * multi-component one is replaced, with a warning), otherwise InitialMalleability
+ * everywhere; the input's array is never modified. An array with fewer or more values
+ * than points is refused: error, output = input. The array is
  * made the active scalars so that a mapper colours by it.
  *
  * Each dab (x y z radius value strength) is applied in order: a vertex at distance d
@@ -32,7 +34,8 @@
  * (default "Pinned", for ChainMailDeformation's PinnedArray) instead of malleability:
  * the same dabs are applied to 0/1 values (the input's mask, non-zero read as 1, or 0)
  * and a vertex is pinned where the result is >= 0.5 (a dab of value 1 pins, of value 0
- * unpins). The malleability array and the active scalars pass through untouched.
+ * unpins). The malleability array and the active scalars pass through untouched; a
+ * PinnedArrayName equal to MalleabilityArrayName is refused (error, output = input).
  *
  * A bad dab (a non-finite number, a negative radius, value or strength outside [0, 1])
  * is skipped with an error naming it; the other dabs are applied as if it were absent.
@@ -86,6 +89,9 @@ public:
   /// The dabs, applied in the order they were added.
   void AddDab(double x, double y, double z, double radius, double value, double strength);
   void RemoveAllDabs();
+  /// The plugin's Dabs property sends its flat list one value at a time through this;
+  /// an incomplete last dab (fewer than six values) is ignored with a warning.
+  void AddDabValue(double value);
   int GetNumberOfDabs();
   /// Six doubles: x y z radius value strength. False when `i` is out of range.
   bool GetDab(int i, double dab[6]);
@@ -96,6 +102,9 @@ public:
   /// each in [0, 1] but the id; a bad one is skipped with an error.
   void AddPointDab(double id, double value, double weight);
   void RemoveAllPointDabs();
+  /// The plugin's PointDabs property sends its flat list one value at a time through
+  /// this; an incomplete last point dab is ignored with a warning.
+  void AddPointDabValue(double value);
   ///@}
 
   ///@{

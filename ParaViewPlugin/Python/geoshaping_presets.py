@@ -1,36 +1,25 @@
-"""The "Malleability (black-body)" colour map for ParaView 5.11.
+"""Colour helpers for GeoShaping scenes in pvpython/pvbatch and the GUI's Python shell.
 
-ParaView 5.11 cannot ship a colour-map preset from a plugin's CMake, so this helper
-imports the preset file that sits next to it (../Presets) and applies it with the
-0-1 range fixed. From the Python shell or a pvpython/pvbatch script:
+The plugin makes the "Malleability (black-body)" colour map the default of every array
+named Malleability (ParaViewPlugin/ServerManager/malleability_colormap.h): a plain
+Show + ColorBy gives it. These helpers apply it to an array of another name and show the
+pinned vertices apart from the heat map:
 
     import sys; sys.path.append("<GeoShaping source>/ParaViewPlugin/Python")
     import geoshaping_presets
-    geoshaping_presets.show_malleability(display)          # colour a display by it
-    geoshaping_presets.malleability_lookup_table()         # or just get the LUT
-    geoshaping_presets.show_pins(chain)                    # pinned vertices in cyan
+    geoshaping_presets.show_malleability(display, "MyMalleability")  # black-body, 0-1
+    geoshaping_presets.show_pins(chain)                              # pinned vertices in cyan
 """
-import os
-
 from paraview import simple
 
 PRESET_NAME = "Malleability (black-body)"
-PRESET_FILE = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir,
-                           "Presets", "Malleability_black-body.json")
-
-
-def import_preset(path=PRESET_FILE):
-    """Adds the preset to ParaView's list (once per session); returns True when present."""
-    presets = simple.servermanager.vtkSMTransferFunctionPresets.GetInstance()
-    if not presets.HasPreset(PRESET_NAME):
-        simple.ImportPresets(os.path.normpath(path))
-    return presets.HasPreset(PRESET_NAME)
 
 
 def malleability_lookup_table(array_name="Malleability"):
     """The colour map of `array_name` with the preset applied, range fixed to [0, 1]."""
-    if not import_preset():
-        raise RuntimeError("cannot import " + PRESET_FILE)
+    presets = simple.servermanager.vtkSMTransferFunctionPresets.GetInstance()
+    if not presets.HasPreset(PRESET_NAME):
+        raise RuntimeError("the GeoShaping plugin is not loaded (no preset %r)" % PRESET_NAME)
     lut = simple.GetColorTransferFunction(array_name)
     lut.ApplyPreset(PRESET_NAME, True)
     lut.AutomaticRescaleRangeMode = "Never"

@@ -135,25 +135,6 @@ HandActions HandController::update(const StylusState& stylus, const Brush& brush
   return actions;
 }
 
-Eigen::Vector3d malleability_color(double m)
-{
-  static const double stops[5][4] = { { 0.0, 0.0, 0.0, 0.0 }, { 0.4, 0.9, 0.0, 0.0 },
-    { 0.6, 1.0, 0.5, 0.0 }, { 0.8, 1.0, 0.9, 0.1 }, { 1.0, 1.0, 1.0, 1.0 } };
-  m = std::isfinite(m) ? std::clamp(m, 0.0, 1.0) : 0.0;
-  int i = 0;
-  while (i < 3 && m > stops[i + 1][0])
-  {
-    ++i;
-  }
-  const double f = (m - stops[i][0]) / (stops[i + 1][0] - stops[i][0]);
-  Eigen::Vector3d c;
-  for (int k = 0; k < 3; ++k)
-  {
-    c[k] = stops[i][k + 1] + f * (stops[i + 1][k + 1] - stops[i][k + 1]);
-  }
-  return c;
-}
-
 double StylusPalette::update(bool button, const Eigen::Vector3d& stylus, double workspace_radius)
 {
   constexpr double none = std::numeric_limits<double>::quiet_NaN();

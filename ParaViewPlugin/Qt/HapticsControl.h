@@ -2,6 +2,8 @@
 // The haptic interactor's decisions, free of Qt, VTK and ParaView so that they are unit
 // tested (Testing/GUI/TestHapticsControl.cpp): where the device workspace sits in the
 // scene, and what one hand asks of the pipeline each frame.
+#include "geoshaping/brush.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -151,8 +153,7 @@ private:
   Eigen::Vector3d row_centre_ = Eigen::Vector3d::Zero();
 };
 
-// The heat map of the malleability palette (the "Malleability (black-body)" preset's
-// control points): black 0, red 0.4, orange 0.6, yellow 0.8, white 1. RGB in [0, 1].
-Eigen::Vector3d malleability_color(double m);
+// The palette's colours are the core's geoshaping::malleability_color (geoshaping/brush.h).
+using geoshaping::malleability_color;
 
 } // namespace geoshaping::interactor

@@ -15,7 +15,9 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QShortcut>
+#include <QStringList>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -72,6 +74,13 @@ void pqHapticsDockPanel::build()
   auto* layout = new QVBoxLayout(body);
   layout->addWidget(this->buildHand(0));
   layout->addWidget(this->buildHand(1));
+  auto* help = new QLabel("<b>Mouse</b>: left-drag the surface to pull it; <b>Ctrl</b>+left-drag "
+                          "paints. <b>Stylus</b>: hold the button to use the hand's tool. "
+                          "A release commits (Alt+Z undoes).",
+    body);
+  help->setObjectName("Help");
+  help->setWordWrap(true);
+  layout->addWidget(help);
   auto* brush = new QFormLayout();
   this->Radius = new QDoubleSpinBox(body);
   this->Radius->setRange(0.001, 1e6);
@@ -106,7 +115,7 @@ void pqHapticsDockPanel::build()
   this->StartStop = new QPushButton("Start", body);
   this->StartStop->setObjectName("StartStop");
   layout->addWidget(this->StartStop);
-  this->Figures = new QLabel("servo — Hz · frame — fps · deformation — ms", body);
+  this->Figures = new QLabel("frame — fps · deformation — ms", body);
   this->Figures->setObjectName("Figures");
   this->Figures->setWordWrap(true);
   layout->addWidget(this->Figures);
@@ -114,7 +123,14 @@ void pqHapticsDockPanel::build()
   this->Status->setWordWrap(true);
   layout->addWidget(this->Status);
   layout->addStretch(1);
-  this->setWidget(body);
+  // Scrolls rather than clips when the window is short; never scrolls sideways, so long
+  // text wraps to the dock's width.
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setWidget(body);
+  this->setWidget(scroll);
 
   QObject::connect(this->StartStop, &QPushButton::clicked, this, &pqHapticsDockPanel::onStartStop);
   QObject::connect(this->Radius, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
@@ -196,6 +212,7 @@ QWidget* pqHapticsDockPanel::buildPalette()
     this->Swatches.append(swatch);
   }
   this->PaintValue = new QLabel(box);
+  this->PaintValue->setWordWrap(true);
   grid->addWidget(this->PaintValue, 2, 0, 1, 11);
   return box;
 }
@@ -233,6 +250,7 @@ QWidget* pqHapticsDockPanel::buildEdits()
   }
   this->Edits = new QLabel("Edits: 0", box);
   this->Edits->setObjectName("Edits");
+  this->Edits->setWordWrap(true); // messages wrap instead of widening the dock
   grid->addWidget(this->Edits, 1, 0, 1, 3);
 
   // Alt, not Ctrl: ParaView's own undo stack owns Ctrl+Z / Ctrl+Y (Edit menu). Enabled
@@ -372,11 +390,23 @@ void pqHapticsDockPanel::onStartStop()
 void pqHapticsDockPanel::onFrame()
 {
   const pqHapticsInteractor::Figures& f = this->Interactor->figures();
-  this->Figures->setText(
-    QString("servo %1 / %2 Hz · frame %3 fps\ndeformation %4 ms, %5 points displaced")
-      .arg(f.servoHz[0], 0, 'f', 0)
-      .arg(f.servoHz[1], 0, 'f', 0)
-      .arg(f.framesPerSecond, 0, 'f', 1)
-      .arg(f.deformationMilliseconds, 0, 'f', 2)
-      .arg(f.displacedPoints));
+  // Per hand in use: the servo loop's rate, or that the mouse has none.
+  QStringList hands;
+  for (int i = 0; i < 2; ++i)
+  {
+    const Kind kind = Kind(this->Hands[i].device->currentData().toInt());
+    if (kind == Kind::Mouse)
+    {
+      hands << QString("hand %1: mouse, no force feedback").arg(i + 1);
+    }
+    else if (kind != Kind::NoDevice)
+    {
+      hands << QString("hand %1: servo %2 Hz").arg(i + 1).arg(f.servoHz[i], 0, 'f', 0);
+    }
+  }
+  this->Figures->setText(QString("%1\nframe %2 fps · deformation %3 ms, %4 points displaced")
+                           .arg(hands.join(" · "))
+                           .arg(f.framesPerSecond, 0, 'f', 1)
+                           .arg(f.deformationMilliseconds, 0, 'f', 2)
+                           .arg(f.displacedPoints));
 }

@@ -41,17 +41,28 @@ bool isA(pqPipelineSource* source, const char* xmlName)
 }
 }
 
-pqPipelineSource* pqHapticsFindSource(const char* xmlName)
+pqPipelineSource* pqHapticsFindSource(const char* xmlName, pqView* view)
 {
   auto* model = pqApplicationCore::instance()->getServerManagerModel();
+  pqPipelineSource* first = nullptr;
   for (pqPipelineSource* source : model->findItems<pqPipelineSource*>())
   {
-    if (isA(source, xmlName))
+    if (!isA(source, xmlName))
+    {
+      continue;
+    }
+    if (!view)
+    {
+      return source;
+    }
+    first = first ? first : source;
+    pqDataRepresentation* shown = source->getRepresentation(view);
+    if (shown && shown->isVisible())
     {
       return source;
     }
   }
-  return nullptr;
+  return first;
 }
 
 namespace
@@ -92,7 +103,7 @@ void pqHapticsPipeline::refresh()
   pqPipelineSource* deformation = active.activeSource();
   if (!isA(deformation, "ChainMailDeformation"))
   {
-    deformation = pqHapticsFindSource("ChainMailDeformation");
+    deformation = pqHapticsFindSource("ChainMailDeformation", this->View);
   }
   if (deformation != this->Deformation)
   {
@@ -379,7 +390,10 @@ void pqHapticsPipeline::appendDabs(const std::vector<std::array<double, 6>>& dab
   if (locator)
   {
     vtkPointSet* shown = this->shownSurface();
-    const int falloff = vtkSMPropertyHelper(proxy, "Falloff").GetAsInt();
+    // MalleabilityPaint's Falloff entries are the core's enum, value for value
+    // (Filters.Enumerations.XmlEntriesMatchTheCore).
+    const auto falloff = static_cast<geoshaping::Falloff>(
+      std::clamp(vtkSMPropertyHelper(proxy, "Falloff").GetAsInt(), 0, 3));
     vtkNew<vtkIdList> found;
     std::vector<long long> ids;
     std::vector<double> distances;

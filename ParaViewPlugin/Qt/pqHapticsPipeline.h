@@ -24,15 +24,16 @@ class vtkDataSet;
 class vtkPointSet;
 class vtkSMProxy;
 
-// The first pipeline source of the session whose proxy is `xmlName`, or nullptr.
-pqPipelineSource* pqHapticsFindSource(const char* xmlName);
+// The first pipeline source of the session whose proxy is `xmlName` and, given a view, the
+// first of them shown in it (else the first); nullptr when there is none.
+pqPipelineSource* pqHapticsFindSource(const char* xmlName, pqView* view = nullptr);
 
 class pqHapticsPipeline
 {
 public:
   // Finds the targets: the active source if it is a ChainMailDeformation, else the
-  // first one in the session; the MalleabilityPaint upstream of it (or the first one);
-  // the active render view.
+  // first one shown in the active render view (else the first in the session); the
+  // MalleabilityPaint upstream of it (or the first one); the active render view.
   void refresh();
   pqRenderView* view() const { return this->View; }
   bool hasDeformation() const { return this->Deformation != nullptr; }

@@ -24,6 +24,7 @@
 
 #include <QCoreApplication>
 #include <QFile>
+#include <QLabel>
 #include <QPixmap>
 #include <QPushButton>
 #include <QTextStream>
@@ -259,6 +260,14 @@ void pqHapticsTestHook::writeResults()
   out << "frames = " << f.frames << "\n";
   out << "frames_per_second = " << f.framesPerSecond << "\n";
   out << "servo_hz = " << f.servoHz[0] << "\n";
+  for (const char* name : { "Figures", "Help", "Edits" })
+  {
+    // What the dock's labels say, on one line; whether long text wraps.
+    const QLabel* label = this->Dock->findChild<QLabel*>(name);
+    out << "label_" << name << " = "
+        << (label ? label->text().replace('\n', " / ") : QString("(missing)")) << "\n";
+    out << "label_" << name << "_wraps = " << int(label && label->wordWrap()) << "\n";
+  }
   out << "scene_units_per_metre = " << f.sceneUnitsPerMetre << "\n";
   out << "deformation_ms = " << f.deformationMilliseconds << "\n";
   out << "displaced_points = " << f.displacedPoints << "\n";

@@ -10,19 +10,21 @@
  * dock and its shortcuts, `proxy.SMProxy.InvokeCommand(...)` from Python — this class
  * then copies the change into `EditHistory` (geoshaping::interactor::follow_edit), so
  * there is one path for every edit and a saved state holds what the view shows
- * (docs/editing.md). ParaView instantiates it from the XML element
+ * (docs/editing.md). It also says when a transfer-curve list is incomplete
+ * (vtkSMGeoShapingSourceProxy). ParaView instantiates it from the XML element
  * `<ChainMailDeformationProxy>`.
  */
 #include "GeoShapingServerManagerModule.h"
-#include "vtkSMSourceProxy.h"
+#include "vtkSMGeoShapingSourceProxy.h"
 
 #include <string>
 
-class GEOSHAPINGSERVERMANAGER_EXPORT vtkSMChainMailDeformationProxy : public vtkSMSourceProxy
+class GEOSHAPINGSERVERMANAGER_EXPORT vtkSMChainMailDeformationProxy
+  : public vtkSMGeoShapingSourceProxy
 {
 public:
   static vtkSMChainMailDeformationProxy* New();
-  vtkTypeMacro(vtkSMChainMailDeformationProxy, vtkSMSourceProxy);
+  vtkTypeMacro(vtkSMChainMailDeformationProxy, vtkSMGeoShapingSourceProxy);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -22,14 +23,21 @@ struct Scene
   index_t size() const { return index_t(xyz.size() / 3); }
 };
 
-Scene scene(const SampleMesh& m) { return { m.xyz, m.adjacency() }; }
-Scene scene(const geoshaping::testing::Mesh& m) { return { m.xyz, m.adjacency }; }
+Scene scene(const SampleMesh& m)
+{
+  return { m.xyz, m.adjacency() };
+}
+Scene scene(const geoshaping::testing::Mesh& m)
+{
+  return { m.xyz, m.adjacency };
+}
 
-std::vector<float> paint(const Scene& s, const std::vector<Dab>& dabs, Falloff f,
-  DistanceMode mode, float initial = 0.5f, PaintReport* report = nullptr)
+std::vector<float> paint(const Scene& s, const std::vector<Dab>& dabs, Falloff f, DistanceMode mode,
+  float initial = 0.5f, PaintReport* report = nullptr)
 {
   std::vector<float> m(std::size_t(s.size()), initial);
-  Painter painter(s.xyz.data(), s.size(), &s.adjacency, brute_force_queries(s.xyz.data(), s.size()));
+  Painter painter(
+    s.xyz.data(), s.size(), &s.adjacency, brute_force_queries(s.xyz.data(), s.size()));
   const PaintReport r = painter.paint(dabs, f, mode, m.data());
   if (report)
     *report = r;
@@ -78,7 +86,8 @@ TEST(Brush, FalloffsAreOneAtTheCentreAndZeroAtTheRim)
   EXPECT_NEAR(falloff_weight(Falloff::smooth, 1e-4), 1.0, 1e-7);
   EXPECT_NEAR(falloff_weight(Falloff::smooth, 1.0 - 1e-4), 0.0, 1e-7);
   const double rim = std::exp(-4.5);
-  EXPECT_NEAR(falloff_weight(Falloff::gaussian, 1.0 / 3.0), (std::exp(-0.5) - rim) / (1 - rim), 1e-15);
+  EXPECT_NEAR(
+    falloff_weight(Falloff::gaussian, 1.0 / 3.0), (std::exp(-0.5) - rim) / (1 - rim), 1e-15);
 }
 
 TEST(Brush, NamesRoundTrip)
@@ -103,7 +112,8 @@ TEST(Brush, DabMovesEachValueTowardItsValueByStrengthTimesFalloff)
 {
   const Scene s = scene(geoshaping::testing::chain(11, 1.0));
   // Centre on vertex 5, radius 4, linear: weights 1, .75, .5, .25 at distances 0..3.
-  const auto m = paint(s, { dab(5, 0, 0, 4, 1.0, 0.5) }, Falloff::linear, DistanceMode::euclidean, 0.2f);
+  const auto m =
+    paint(s, { dab(5, 0, 0, 4, 1.0, 0.5) }, Falloff::linear, DistanceMode::euclidean, 0.2f);
   const float expected[11] = { 0.2f, 0.2f, float(0.2 + 0.5 * 0.25 * 0.8),
     float(0.2 + 0.5 * 0.5 * 0.8), float(0.2 + 0.5 * 0.75 * 0.8), float(0.2 + 0.5 * 0.8),
     float(0.2 + 0.5 * 0.75 * 0.8), float(0.2 + 0.5 * 0.5 * 0.8), float(0.2 + 0.5 * 0.25 * 0.8),
@@ -111,8 +121,8 @@ TEST(Brush, DabMovesEachValueTowardItsValueByStrengthTimesFalloff)
   for (int i = 0; i < 11; ++i)
     EXPECT_FLOAT_EQ(m[i], expected[i]) << "vertex " << i;
   // Geodesic along a straight chain is the same distance.
-  EXPECT_TRUE(bit_identical(m,
-    paint(s, { dab(5, 0, 0, 4, 1.0, 0.5) }, Falloff::linear, DistanceMode::geodesic, 0.2f)));
+  EXPECT_TRUE(bit_identical(
+    m, paint(s, { dab(5, 0, 0, 4, 1.0, 0.5) }, Falloff::linear, DistanceMode::geodesic, 0.2f)));
 }
 
 TEST(Brush, DabsApplyInOrderAndFullStrengthConstantSetsTheValue)
@@ -133,7 +143,8 @@ TEST(Brush, DabsApplyInOrderAndFullStrengthConstantSetsTheValue)
 TEST(Brush, GeodesicDistanceOnAFlatGridIsAtLeastEuclideanAndCloseToIt)
 {
   const Scene s = scene(geoshaping::testing::triangle_grid(41, 41, 1.0));
-  Painter painter(s.xyz.data(), s.size(), &s.adjacency, brute_force_queries(s.xyz.data(), s.size()));
+  Painter painter(
+    s.xyz.data(), s.size(), &s.adjacency, brute_force_queries(s.xyz.data(), s.size()));
   Reach euclid, geo;
   const Dab d = dab(20.3, 19.8, 0, 12, 1.0);
   painter.reach(d, DistanceMode::euclidean, euclid);
@@ -227,7 +238,8 @@ TEST(Brush, SameDabsGiveBitIdenticalArrays)
   const Scene s = scene(fault_step_horizon(FaultStepParams{}));
   std::vector<Dab> dabs;
   for (int i = 0; i < 50; ++i)
-    dabs.push_back(dab(2.0 * i, 0.9 * i, 10.0 + 0.1 * i, 3.0 + (i % 5), (i % 7) / 6.0, 0.3 + (i % 3) * 0.3));
+    dabs.push_back(
+      dab(2.0 * i, 0.9 * i, 10.0 + 0.1 * i, 3.0 + (i % 5), (i % 7) / 6.0, 0.3 + (i % 3) * 0.3));
   for (Falloff f : all_falloffs)
     for (DistanceMode mode : { DistanceMode::euclidean, DistanceMode::geodesic })
       EXPECT_TRUE(bit_identical(paint(s, dabs, f, mode), paint(s, dabs, f, mode)))
@@ -255,7 +267,8 @@ TEST(Brush, BadDabsAreRejectedAndChangeNothingElse)
   EXPECT_EQ(report.rejected[7].second, "its radius is not finite");
   // A zero radius is valid and paints nothing.
   PaintReport zero;
-  const auto untouched = paint(s, { dab(5, 5, 0, 0.0, 1.0) }, Falloff::constant, DistanceMode::euclidean, 0.5f, &zero);
+  const auto untouched =
+    paint(s, { dab(5, 5, 0, 0.0, 1.0) }, Falloff::constant, DistanceMode::euclidean, 0.5f, &zero);
   EXPECT_EQ(zero.applied, 1u);
   EXPECT_TRUE(bit_identical(untouched, std::vector<float>(std::size_t(s.size()), 0.5f)));
 }
@@ -272,4 +285,59 @@ TEST(Brush, ValuesStayInTheUnitInterval)
       EXPECT_GE(v, 0.0f);
       EXPECT_LE(v, 1.0f);
     }
+}
+
+TEST(MalleabilityColor, FollowsTheBlackBodyPreset)
+{
+  // ParaViewPlugin/Presets/Malleability_black-body.json: black 0, red 0.4, orange 0.6,
+  // yellow 0.8, white 1, linear in RGB between them.
+  auto expect = [](double m, const Eigen::Vector3d& rgb)
+  { EXPECT_LE((malleability_color(m) - rgb).norm(), 1e-12) << m; };
+  expect(0.0, { 0.0, 0.0, 0.0 });
+  expect(0.4, { 0.9, 0.0, 0.0 });
+  expect(0.5, { 0.95, 0.25, 0.0 });
+  expect(0.6, { 1.0, 0.5, 0.0 });
+  expect(0.8, { 1.0, 0.9, 0.1 });
+  expect(1.0, { 1.0, 1.0, 1.0 });
+  expect(0.2, { 0.45, 0.0, 0.0 });
+  expect(7.0, { 1.0, 1.0, 1.0 });                                      // clamped
+  expect(-1.0, { 0.0, 0.0, 0.0 });                                     // clamped
+  expect(std::numeric_limits<double>::quiet_NaN(), { 0.0, 0.0, 0.0 }); // NaN is rigid
+}
+
+TEST(Painter, ReportsProgressAndStopsWhenAsked)
+{
+  const geoshaping::testing::Mesh s = geoshaping::testing::triangle_grid(30, 30, 1.0);
+  std::vector<Dab> dabs;
+  for (int i = 0; i < 250; ++i)
+    dabs.push_back({ Eigen::Vector3d(i % 30, (i / 30) % 30, 0.0), 2.0, 0.0, 1.0 });
+  std::vector<float> m(std::size_t(s.size()), 0.5f);
+  Painter painter(s.xyz.data(), s.size(), nullptr, brute_force_queries(s.xyz.data(), s.size()));
+
+  std::vector<double> seen;
+  PaintReport all = painter.paint(dabs, Falloff::constant, DistanceMode::euclidean, m.data(),
+    [&](double f)
+    {
+      seen.push_back(f);
+      return true;
+    });
+  EXPECT_FALSE(all.aborted);
+  EXPECT_EQ(all.applied, dabs.size());
+  // Every third dab (250 / 100 + 1), then the end: monotone, at most 101 calls, ends at 1.
+  ASSERT_EQ(seen.size(), 250u / 3u + 1u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_DOUBLE_EQ(seen.front(), 3.0 / 250.0);
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+
+  // Stop at the second report: six dabs applied, exactly as painting those six alone.
+  std::vector<float> stopped(m.size(), 0.5f);
+  int calls = 0;
+  const PaintReport part = painter.paint(dabs, Falloff::constant, DistanceMode::euclidean,
+    stopped.data(), [&](double) { return ++calls < 2; });
+  EXPECT_TRUE(part.aborted);
+  EXPECT_EQ(part.applied, 6u);
+  std::vector<float> six(m.size(), 0.5f);
+  painter.paint(std::vector<Dab>(dabs.begin(), dabs.begin() + 6), Falloff::constant,
+    DistanceMode::euclidean, six.data());
+  EXPECT_EQ(stopped, six);
 }

@@ -36,9 +36,12 @@ def shown(source, cfg, to_xyz, name):
 dem = JacksboroFaultDEM(registrationName="Jacksboro DEM",  # noqa: F405 (the plugin's source)
                         FileName=demo.jacksboro.find_dem())
 data = demo.output_of(dem)
-shown(dem, config["jacksboro"], demo.jacksboro_xyz(data), "Jacksboro")
+dem_chain = shown(dem, config["jacksboro"], demo.jacksboro_xyz(data), "Jacksboro")
 step = FaultStepHorizon(registrationName="Fault step", **config["fault_step"]["source"])  # noqa: F405
-chain = shown(step, config["fault_step"], tuple, "Fault step")
-Hide(chain, view)  # both scenes are in the pipeline browser; the DEM is shown
+step_chain = shown(step, config["fault_step"], tuple, "Fault step")
+Hide(step_chain, view)  # both scenes are in the pipeline browser; the DEM is shown
+# The deformation of what is shown is active: the Haptics dock and the properties panel
+# act on the surface the user sees.
+SetActiveSource(dem_chain)
 ResetCamera(view)
 Render(view)

@@ -228,37 +228,27 @@ TEST(EditControl, EveryCommandSenderKeepsTheListInStep)
   EXPECT_EQ(f.client.back(), "GSE1 edit3");
 }
 
-TEST(PointDabs, FalloffMatchesTheCore)
-{
-  const geoshaping::Falloff kinds[] = { geoshaping::Falloff::constant, geoshaping::Falloff::linear,
-    geoshaping::Falloff::smooth, geoshaping::Falloff::gaussian };
-  for (int k = 0; k < 4; ++k)
-  {
-    for (double r = -0.5; r <= 1.5; r += 0.01)
-    {
-      EXPECT_DOUBLE_EQ(gi::falloff_weight(k, r), geoshaping::falloff_weight(kinds[k], r))
-        << k << " " << r;
-    }
-  }
-}
-
 TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)
 {
   std::vector<double> triples = { 99.0, 0.1, 0.2 }; // earlier dabs are kept
-  gi::append_point_dabs({ 4, 8, 15 }, { 0.0, 1.0, 2.0 }, 2.0, 0.8, 0.5, /*linear*/ 1, triples);
+  gi::append_point_dabs(
+    { 4, 8, 15 }, { 0.0, 1.0, 2.0 }, 2.0, 0.8, 0.5, geoshaping::Falloff::linear, triples);
   // The rim (weight 0) is left out.
   const std::vector<double> expected = { 99.0, 0.1, 0.2, 4.0, 0.8, 0.5, 8.0, 0.8, 0.25 };
   EXPECT_EQ(triples, expected);
 
   std::vector<double> clamped;
-  gi::append_point_dabs({ 1 }, { 0.0 }, 1.0, 7.0, -1.0, 0, clamped);
+  gi::append_point_dabs({ 1 }, { 0.0 }, 1.0, 7.0, -1.0, geoshaping::Falloff::constant, clamped);
   EXPECT_TRUE(clamped.empty()); // strength clamped to 0: nothing painted
-  gi::append_point_dabs({ 1 }, { 0.0 }, 1.0, 7.0, 2.0, 0, clamped);
+  gi::append_point_dabs({ 1 }, { 0.0 }, 1.0, 7.0, 2.0, geoshaping::Falloff::constant, clamped);
   EXPECT_EQ(clamped, (std::vector<double>{ 1.0, 1.0, 1.0 }));
 
   std::vector<double> none;
-  gi::append_point_dabs({ 1 }, { 0.0 }, 0.0, 0.5, 0.5, 0, none);    // zero radius
-  gi::append_point_dabs({ 1, 2 }, { 0.0 }, 1.0, 0.5, 0.5, 0, none); // size mismatch
-  gi::append_point_dabs({ -1 }, { 0.0 }, 1.0, 0.5, 0.5, 0, none);   // bad id
+  gi::append_point_dabs(
+    { 1 }, { 0.0 }, 0.0, 0.5, 0.5, geoshaping::Falloff::constant, none); // zero radius
+  gi::append_point_dabs(
+    { 1, 2 }, { 0.0 }, 1.0, 0.5, 0.5, geoshaping::Falloff::constant, none); // size mismatch
+  gi::append_point_dabs(
+    { -1 }, { 0.0 }, 1.0, 0.5, 0.5, geoshaping::Falloff::constant, none); // bad id
   EXPECT_TRUE(none.empty());
 }

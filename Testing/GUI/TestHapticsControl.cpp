@@ -180,17 +180,6 @@ TEST(HandController, NonFiniteStylusReleasesInsteadOfDragging)
   EXPECT_FALSE(a.set_displacement);
 }
 
-TEST(Palette, ColoursFollowTheBlackBodyPreset)
-{
-  expectNear(malleability_color(0.0), Vector3d(0, 0, 0));
-  expectNear(malleability_color(0.4), Vector3d(0.9, 0, 0));
-  expectNear(malleability_color(0.6), Vector3d(1, 0.5, 0));
-  expectNear(malleability_color(1.0), Vector3d(1, 1, 1));
-  expectNear(malleability_color(0.5), Vector3d(0.95, 0.25, 0), 1e-12);
-  expectNear(malleability_color(7.0), Vector3d(1, 1, 1));
-  expectNear(malleability_color(std::nan("")), Vector3d(0, 0, 0));
-}
-
 TEST(StylusPalette, AppearsAboveThePressAndPicksTheSwatchTouched)
 {
   StylusPalette palette;

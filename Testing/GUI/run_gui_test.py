@@ -230,6 +230,13 @@ def check_mouse(results):
     camera = [float(v) for v in results["camera_position"].split()]
     assert all(abs(a - b) < 1e-6 for a, b in zip(camera, CAMERA["position"])), camera
     assert int(results["moved_points"]) > 1, results
+    # The dock says the mouse has no servo (not "servo 0 Hz"), how to grasp and paint, and
+    # its messages wrap instead of widening the dock.
+    figures = results["label_Figures"]
+    assert "hand 1: mouse, no force feedback" in figures and "servo" not in figures, figures
+    assert "Ctrl" in results["label_Help"] and "left-drag" in results["label_Help"], results
+    for name in ("Figures", "Help", "Edits"):
+        assert results["label_%s_wraps" % name] == "1", name
 
 
 def check_recording(results, out, expected):

@@ -30,10 +30,10 @@ TraceParseResult parse(const std::string& text)
 bool bit_identical(const DeviceSample& a, const DeviceSample& b)
 {
   return std::memcmp(&a.t, &b.t, sizeof(double)) == 0 &&
-    std::memcmp(a.position.data(), b.position.data(), 3 * sizeof(double)) == 0 &&
-    std::memcmp(a.orientation.coeffs().data(), b.orientation.coeffs().data(), 4 * sizeof(double)) ==
-    0 &&
-    a.buttons == b.buttons;
+         std::memcmp(a.position.data(), b.position.data(), 3 * sizeof(double)) == 0 &&
+         std::memcmp(
+           a.orientation.coeffs().data(), b.orientation.coeffs().data(), 4 * sizeof(double)) == 0 &&
+         a.buttons == b.buttons;
 }
 } // namespace
 
@@ -80,6 +80,15 @@ TEST(Trace, NonFiniteValuesAreRejected)
     EXPECT_EQ(r.message.rfind("mem:2: field", 0), 0u) << r.message;
     EXPECT_TRUE(r.samples.empty());
   }
+}
+
+TEST(Trace, PositionsTooLargeToInterpolateAreRejected)
+{
+  const TraceParseResult r = parse("0 1e308 0 0 1 0 0 0 0\n1 -1e308 0 0 1 0 0 0 0\n");
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.message.rfind("mem:1: field x '1e308' is beyond", 0), 0u) << r.message;
+  EXPECT_TRUE(parse("0 1e6 -1e6 0 1 0 0 0 0\n").ok);
+  EXPECT_FALSE(parse("0 0 0 -1.5e6 1 0 0 0 0\n").ok);
 }
 
 TEST(Trace, MissingFileIsReportedByName)
@@ -143,11 +152,10 @@ TEST(Replay, InterpolatesBetweenSamplesAndRestsAfterTheEnd)
 TEST(Replay, IsDeterministicAndFollowsTheFile)
 {
   const std::string path = temp_path("replay_trace.txt");
-  write_file(path,
-    "# t x y z qw qx qy qz buttons\n"
-    "10.0 0 0 0 1 0 0 0 0\n"
-    "10.1 0.01 0 0 1 0 0 0 1\n"
-    "10.2 0.01 0.02 0 0.7071 0 0 0.7071 1\n");
+  write_file(path, "# t x y z qw qx qy qz buttons\n"
+                   "10.0 0 0 0 1 0 0 0 0\n"
+                   "10.1 0.01 0 0 1 0 0 0 1\n"
+                   "10.2 0.01 0.02 0 0.7071 0 0 0.7071 1\n");
   // Two devices replaying the same file on a stepped clock give the same samples, bit
   // for bit, and the trace plays from its first time stamp.
   ReplayDevice a(path, 0.001), b(path, 0.001);

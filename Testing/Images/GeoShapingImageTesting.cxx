@@ -18,6 +18,7 @@
 #include "vtkRenderer.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "geoshaping/malleability_preset.h"
 #include "geoshaping/sample_scenes.h"
 
 #include <cstdlib>
@@ -31,48 +32,13 @@
 namespace geoshaping_image_testing
 {
 
-namespace
-{
-// The numbers of the preset's "RGBPoints" list (x r g b ...).
-std::vector<double> PresetPoints()
-{
-  std::ifstream file(GEOSHAPING_PRESET_FILE);
-  std::stringstream text;
-  text << file.rdbuf();
-  const std::string json = text.str();
-  const std::size_t key = json.find("\"RGBPoints\"");
-  const std::size_t open = json.find('[', key);
-  const std::size_t close = json.find(']', open);
-  if (key == std::string::npos || open == std::string::npos || close == std::string::npos)
-    throw std::runtime_error("no RGBPoints in " GEOSHAPING_PRESET_FILE);
-  std::vector<double> values;
-  const char* p = json.c_str() + open + 1;
-  const char* end = json.c_str() + close;
-  while (p < end)
-  {
-    char* next;
-    const double v = std::strtod(p, &next);
-    if (next == p)
-      ++p; // a comma or white space
-    else
-    {
-      values.push_back(v);
-      p = next;
-    }
-  }
-  if (values.size() < 8 || values.size() % 4 != 0)
-    throw std::runtime_error("malformed RGBPoints in " GEOSHAPING_PRESET_FILE);
-  return values;
-}
-} // namespace
-
 vtkSmartPointer<vtkColorTransferFunction> MalleabilityColors()
 {
   auto colors = vtkSmartPointer<vtkColorTransferFunction>::New();
   colors->SetColorSpaceToRGB();
-  const std::vector<double> points = PresetPoints();
-  for (std::size_t i = 0; i < points.size(); i += 4)
-    colors->AddRGBPoint(points[i], points[i + 1], points[i + 2], points[i + 3]);
+  const double* p = geoshaping::malleability_rgb_points;
+  for (int i = 0; i < geoshaping::malleability_rgb_point_count; ++i, p += 4)
+    colors->AddRGBPoint(p[0], p[1], p[2], p[3]);
   colors->SetNanColor(0.0, 0.5, 1.0);
   return colors;
 }

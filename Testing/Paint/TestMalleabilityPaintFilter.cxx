@@ -9,6 +9,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -26,7 +27,8 @@ namespace
 vtkSmartPointer<vtkPointSet> Scene(bool slab, bool figure5c = false)
 {
   vtkNew<vtkFaultStepHorizonSource> source;
-  source->SetOutputMeshType(slab ? vtkFaultStepHorizonSource::SLAB : vtkFaultStepHorizonSource::SURFACE);
+  source->SetOutputMeshType(
+    slab ? vtkFaultStepHorizonSource::SLAB : vtkFaultStepHorizonSource::SURFACE);
   source->SetPaintFigure5C(figure5c);
   source->Update();
   return vtkPointSet::SafeDownCast(source->GetOutputDataObject(0));
@@ -80,13 +82,15 @@ TEST(MalleabilityPaint, LocatorPaintingEqualsTheCoreBruteForcePaintingBitForBit)
   const geoshaping::FaultStepParams p;
   for (bool slab : { false, true })
   {
-    const geoshaping::SampleMesh core = slab ? geoshaping::fault_step_slab(p) : geoshaping::fault_step_horizon(p);
+    const geoshaping::SampleMesh core =
+      slab ? geoshaping::fault_step_slab(p) : geoshaping::fault_step_horizon(p);
     const std::vector<float> expected = geoshaping::fault_step_malleability(core, p);
     vtkSmartPointer<vtkPointSet> scene = Scene(slab, true);
     vtkFloatArray* painted = Malleability(scene);
     ASSERT_TRUE(painted);
     ASSERT_EQ(painted->GetNumberOfTuples(), vtkIdType(expected.size()));
-    EXPECT_EQ(std::memcmp(painted->GetPointer(0), expected.data(), expected.size() * sizeof(float)), 0);
+    EXPECT_EQ(
+      std::memcmp(painted->GetPointer(0), expected.data(), expected.size() * sizeof(float)), 0);
   }
 }
 
@@ -100,7 +104,8 @@ TEST(MalleabilityPaint, CreatesTheArrayWithTheInitialValueAndMakesItActive)
   ASSERT_TRUE(m);
   EXPECT_EQ(m->GetValueRange()[0], 0.25f);
   EXPECT_EQ(m->GetValueRange()[1], 0.25f);
-  EXPECT_EQ(vtkPointSet::SafeDownCast(paint->GetOutputDataObject(0))->GetPointData()->GetScalars(), m);
+  EXPECT_EQ(
+    vtkPointSet::SafeDownCast(paint->GetOutputDataObject(0))->GetPointData()->GetScalars(), m);
 }
 
 TEST(MalleabilityPaint, UpdatesACopyAndNeverTheInputsArray)
@@ -120,8 +125,9 @@ TEST(MalleabilityPaint, UpdatesACopyAndNeverTheInputsArray)
   paint->AddObserver(vtkCommand::WarningEvent, warnings);
   paint->Update();
   EXPECT_TRUE(warnings->GetWarning());
-  auto* out = vtkFloatArray::SafeDownCast(
-    vtkPointSet::SafeDownCast(paint->GetOutputDataObject(0))->GetPointData()->GetArray("Stiffness"));
+  auto* out = vtkFloatArray::SafeDownCast(vtkPointSet::SafeDownCast(paint->GetOutputDataObject(0))
+                                            ->GetPointData()
+                                            ->GetArray("Stiffness"));
   ASSERT_TRUE(out);
   EXPECT_NE(out, original.Get());
   EXPECT_EQ(out->GetValue(0), 1.0f);
@@ -154,7 +160,8 @@ TEST(MalleabilityPaint, BadDabsAreSkippedWithAnErrorAndTheOthersApplied)
   EXPECT_EQ(mixed->GetNumberOfRejectedDabs(), 4);
   vtkFloatArray* a = Malleability(good->GetOutputDataObject(0));
   vtkFloatArray* b = Malleability(mixed->GetOutputDataObject(0));
-  EXPECT_EQ(std::memcmp(a->GetPointer(0), b->GetPointer(0), sizeof(float) * a->GetNumberOfTuples()), 0);
+  EXPECT_EQ(
+    std::memcmp(a->GetPointer(0), b->GetPointer(0), sizeof(float) * a->GetNumberOfTuples()), 0);
 }
 
 TEST(MalleabilityPaint, GeodesicBrushOnTheUpperSideLeavesTheLowerSideAlone)
@@ -197,7 +204,9 @@ TEST(MalleabilityPaint, RepaintingReusesTheLocatorAndIsDeterministic)
   paint->Update();
   EXPECT_EQ(paint->GetNumberOfRebuilds(), 1);
   vtkFloatArray* again = Malleability(paint->GetOutputDataObject(0));
-  EXPECT_EQ(std::memcmp(first->GetPointer(0), again->GetPointer(0), sizeof(float) * first->GetNumberOfTuples()), 0);
+  EXPECT_EQ(std::memcmp(first->GetPointer(0), again->GetPointer(0),
+              sizeof(float) * first->GetNumberOfTuples()),
+    0);
   double dab[6];
   ASSERT_TRUE(paint->GetDab(0, dab));
   EXPECT_FALSE(paint->GetDab(paint->GetNumberOfDabs(), dab));
@@ -227,4 +236,87 @@ TEST(MalleabilityPaint, PaintedBlackStepTranslatesRigidlyUnderChainMail)
     ++black;
   }
   EXPECT_GT(black, 1000);
+}
+
+TEST(MalleabilityPaint, SourceArrayShorterThanThePointsIsRefused)
+{
+  vtkSmartPointer<vtkPointSet> input = Scene(false);
+  vtkNew<vtkFloatArray> shortArray;
+  shortArray->SetName("Stiffness");
+  shortArray->SetNumberOfTuples(5);
+  shortArray->Fill(0.5);
+  input->GetPointData()->AddArray(shortArray);
+  vtkNew<vtkMalleabilityPaintFilter> paint;
+  paint->SetInputData(input);
+  paint->SetMalleabilityArrayName("Stiffness");
+  paint->AddDab(50.0, 30.0, 10.0, 5.0, 0.0, 1.0);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  paint->AddObserver(vtkCommand::ErrorEvent, errors);
+  paint->Update();
+  EXPECT_NE(errors->GetErrorMessage().find("has 5 values for"), std::string::npos)
+    << errors->GetErrorMessage();
+  auto* out = vtkPointSet::SafeDownCast(paint->GetOutputDataObject(0));
+  EXPECT_EQ(out->GetPointData()->GetArray("Stiffness"), shortArray.Get()); // the input's
+}
+
+TEST(MalleabilityPaint, PaintingPinsIntoTheMalleabilityArrayIsRefused)
+{
+  vtkSmartPointer<vtkPointSet> input = Scene(false, true);
+  vtkFloatArray* before = Malleability(input);
+  vtkNew<vtkMalleabilityPaintFilter> paint;
+  paint->SetInputData(input);
+  paint->SetPaintPins(true);
+  paint->SetPinnedArrayName("Malleability");
+  paint->AddDab(50.0, 30.0, 10.0, 5.0, 1.0, 1.0);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  paint->AddObserver(vtkCommand::ErrorEvent, errors);
+  paint->Update();
+  EXPECT_NE(
+    errors->GetErrorMessage().find("would overwrite the malleability array"), std::string::npos);
+  EXPECT_EQ(Malleability(paint->GetOutputDataObject(0)), before);
+}
+
+TEST(MalleabilityPaint, SourceArrayThatIsNotNumericWarnsAndStartsFromTheInitialValue)
+{
+  vtkSmartPointer<vtkPointSet> input = Scene(false);
+  vtkNew<vtkStringArray> text;
+  text->SetName("Stiffness");
+  text->SetNumberOfTuples(input->GetNumberOfPoints());
+  input->GetPointData()->AddArray(text);
+  vtkNew<vtkMalleabilityPaintFilter> paint;
+  paint->SetInputData(input);
+  paint->SetMalleabilityArrayName("Stiffness");
+  paint->SetInitialMalleability(0.25);
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  paint->AddObserver(vtkCommand::WarningEvent, warnings);
+  paint->Update();
+  EXPECT_NE(warnings->GetWarningMessage().find("'Stiffness' is not numeric (vtkStringArray)"),
+    std::string::npos);
+  auto* out = vtkFloatArray::SafeDownCast(vtkPointSet::SafeDownCast(paint->GetOutputDataObject(0))
+                                            ->GetPointData()
+                                            ->GetArray("Stiffness"));
+  ASSERT_TRUE(out);
+  EXPECT_EQ(out->GetValueRange()[0], 0.25f);
+}
+
+// The plugin sends Dabs and PointDabs one value at a time; ParaView would drop a tail.
+TEST(MalleabilityPaint, IncompleteLastDabWarnsThatItIsIgnored)
+{
+  vtkSmartPointer<vtkPointSet> input = Scene(false);
+  vtkNew<vtkMalleabilityPaintFilter> paint;
+  paint->SetInputData(input);
+  for (double v : { 50.0, 30.0, 10.0, 5.0, 0.0, 1.0, 20.0, 30.0 })
+    paint->AddDabValue(v);
+  for (double v : { 3.0, 1.0, 1.0, 4.0 })
+    paint->AddPointDabValue(v);
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  paint->AddObserver(vtkCommand::WarningEvent, warnings);
+  paint->Update();
+  EXPECT_EQ(paint->GetNumberOfDabs(), 1);
+  EXPECT_EQ(paint->GetNumberOfAppliedDabs(), 1);
+  EXPECT_NE(warnings->GetWarningMessage().find("incomplete dab (2 of 6 values)"), std::string::npos)
+    << warnings->GetWarningMessage();
+  EXPECT_NE(
+    warnings->GetWarningMessage().find("incomplete point dab (1 of 3 values)"), std::string::npos);
+  EXPECT_EQ(Malleability(paint->GetOutputDataObject(0))->GetValue(3), 1.0f);
 }

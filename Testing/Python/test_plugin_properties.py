@@ -1,4 +1,6 @@
 """The plugin loads in pvpython and exposes the public names of DESIGN.md section 5."""
+import numpy as np
+
 from geoshaping_testing import check, load
 from paraview.simple import *  # noqa: F401,F403
 
@@ -15,6 +17,66 @@ check(list(chain.StretchRange) == [1.0, 2.0], "default stretch range 1 -> 2")
 check(list(chain.CompressionRange) == [1.0, 0.5], "default compression range 1 -> 0.5")
 check(list(chain.ShearRange) == [0.0, 0.5], "default shear range 0 -> 0.5")
 check(chain.DefaultMalleability == 0.5, "default malleability 0.5")
+# ParaView 5.11's properties panel draws no widget for an IdTypeVectorProperty (issue 11).
+check(chain.SMProxy.GetProperty("GraspPointId").IsA("vtkSMIntVectorProperty"),
+      "GraspPointId is an IntVectorProperty, so the properties panel draws it")
 for queue in ["FIFO", "Priority", "FIFO Priority", "Max Violation"]:
     chain.CandidateQueue = queue
     check(chain.CandidateQueue == queue, "queue %s accepted" % queue)
+
+# A script creates the filter before its input has run: ParaView knows no arrays yet, and
+# the array domain would pick None (uniform 0.5). The default stays Malleability, and the
+# filter reads the painted array once the pipeline runs.
+from geoshaping_testing import points, triangulated_plane  # noqa: E402
+
+plane = triangulated_plane(20)
+paint = MalleabilityPaint(Input=plane, Falloff="Constant",  # noqa: F405
+                          Dabs=[10.0, 10.0, 0.0, 4.0, 0.0, 1.0])
+fresh = ChainMailDeformation(Input=paint)  # noqa: F405
+check(list(fresh.MalleabilityArray) == ["POINTS", "Malleability"],
+      "MalleabilityArray is Malleability when the filter is created before its input ran")
+fresh.GraspPointId = 10 * 21 + 10  # the centre of the rigid (painted 0) disc
+fresh.Displacement = [0.0, 0.0, 3.0]
+moved = points(fresh) - points(plane)
+disc = np.linalg.norm(points(plane)[:, :2] - [10.0, 10.0], axis=1) < 2.0
+check(np.allclose(moved[disc], [0.0, 0.0, 3.0]),
+      "the painted rigid disc moves as one: the painted array was used")
+
+# The properties panel (issue 11): groups, ranges with domains, labelled table columns.
+sm_chain = fresh.SMProxy
+groups = {}
+for i in range(sm_chain.GetNumberOfPropertyGroups()):
+    group = sm_chain.GetPropertyGroup(i)
+    groups[group.GetXMLLabel()] = [sm_chain.GetPropertyName(group.GetProperty(k))
+                                   for k in range(group.GetNumberOfProperties())]
+check(list(groups) == ["Malleability", "Grasp", "Queue and transfer", "Pins", "Refinement",
+                       "Editing", "Diagnostics"], "ChainMailDeformation's groups: %s" % list(groups))
+check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displacement"] and
+      groups["Editing"] == ["CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"],
+      "the grasp and edit groups hold their properties")
+grouped = [name for names in groups.values() for name in names]
+panel = [name for name in fresh.ListProperties()
+         if sm_chain.GetProperty(name).GetPanelVisibility() != "never"
+         and not sm_chain.GetProperty(name).GetInformationOnly() and name != "Input"]
+check(sorted(grouped) == sorted(panel), "every panel property is in exactly one group")
+for name, low, high in [("StretchRange", 1.0, None), ("CompressionRange", 0.0, 1.0),
+                        ("ShearRange", 0.0, None)]:
+    domain = sm_chain.GetProperty(name).GetDomain("range")
+    check(domain is not None and all(domain.GetMinimum(k) == low for k in (0, 1)) and
+          (high is None or all(domain.GetMaximum(k) == high for k in (0, 1))),
+          "%s has a range domain from %s" % (name, low))
+
+
+def column_labels(proxy, name):
+    hints = proxy.SMProxy.GetProperty(name).GetHints()
+    element = hints.FindNestedElementByName("ShowComponentLabels") if hints else None
+    return [element.GetNestedElement(k).GetAttribute("label")
+            for k in range(element.GetNumberOfNestedElements())] if element else []
+
+
+check(column_labels(fresh, "StretchCurve") == ["Malleability", "Stretch"] and
+      column_labels(fresh, "ShearCurve") == ["Malleability", "Shear"],
+      "the curve tables have column labels")
+check(column_labels(paint, "Dabs") == ["x", "y", "z", "Radius", "Value", "Strength"] and
+      column_labels(paint, "PointDabs") == ["Point Id", "Value", "Weight"],
+      "the dab tables have column labels")

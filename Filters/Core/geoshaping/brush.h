@@ -1,6 +1,7 @@
 #pragma once
 // Malleability painting: a brush dab moves the values under it toward its value.
 #include "geoshaping/adjacency.h"
+#include "geoshaping/progress.h"
 
 #include <Eigen/Core>
 
@@ -40,6 +41,11 @@ const char* distance_mode_name(DistanceMode m);
 bool parse_distance_mode_name(const char* name, DistanceMode& m); // "Euclidean", "Geodesic"
 
 double falloff_weight(Falloff f, double r);
+
+// The black-body heat map's colour at malleability m (RGB in [0, 1]): linear in RGB
+// between the preset's control points (geoshaping/malleability_preset.h), as ParaView maps
+// it; m is clamped to [0, 1] and NaN reads as 0 (rigid, black).
+Eigen::Vector3d malleability_color(double m);
 
 struct Dab
 {
@@ -83,8 +89,8 @@ void apply_dab(const Dab& dab, Falloff falloff, const Reach& reach, float* malle
 class GeodesicReach
 {
 public:
-  void compute(const Adjacency& adjacency, const double* xyz, index_t source,
-    double start_distance, double radius, Reach& out);
+  void compute(const Adjacency& adjacency, const double* xyz, index_t source, double start_distance,
+    double radius, Reach& out);
 
 private:
   std::vector<double> distance_; // +inf except for the vertices of the last call
@@ -115,6 +121,7 @@ PointQueries brute_force_queries(const double* xyz, index_t n);
 
 struct PaintReport
 {
+  bool aborted = false; // the Progress asked to stop: dabs from `applied` on were not applied
   std::size_t applied = 0;
   std::size_t painted = 0; // vertex values written (a vertex under two dabs counts twice)
   std::vector<std::pair<std::size_t, std::string>> rejected; // (dab index, reason)
@@ -130,8 +137,10 @@ class Painter
 public:
   Painter(const double* xyz, index_t n, const Adjacency* adjacency, PointQueries queries);
 
+  // `progress` (optional) is told the fraction of dabs done and can stop the painting
+  // between dabs (geoshaping/progress.h).
   PaintReport paint(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode,
-    float* malleability);
+    float* malleability, const Progress& progress = {});
   // The vertices one dab reaches, with distances (also used by paint()).
   void reach(const Dab& dab, DistanceMode mode, Reach& out);
 

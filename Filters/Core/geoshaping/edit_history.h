@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,10 +20,10 @@ struct EditRecipe
   index_t grasp = -1;
   Eigen::Vector3d displacement = Eigen::Vector3d::Zero();
   int queue = int(QueueKind::fifo_priority);
-  double stretch[2] = { 1.0, 2.0 };     // at m = 0, at m = 1
+  double stretch[2] = { 1.0, 2.0 }; // at m = 0, at m = 1
   double compression[2] = { 1.0, 0.5 };
   double shear[2] = { 0.0, 0.5 };
-  int curve_shape = 0;                  // the filter's TransferCurveShape
+  int curve_shape = 0; // the filter's TransferCurveShape
   double step_threshold = 0.5;
   int refinement_iterations = 0;
 };
@@ -70,9 +71,10 @@ public:
   // Brings the applied edits to `records` with the least work: keeps the common prefix,
   // undoes the edits beyond it, then redoes kept edits whose record matches and decodes
   // the others. Stops at the first bad record (false, `error` says which; the edits
-  // before it stay applied).
+  // before it stay applied): a malformed one, or one after which `fits` (if given)
+  // rejects a vertex it moved (e.g. a caller whose output cannot hold the position).
   bool synchronize(ChainMailDeformer& deformer, const std::vector<std::string>& records,
-    std::string& error);
+    std::string& error, const std::function<bool(index_t)>& fits = {});
   // Forgets every edit without touching the deformer (after set_mesh).
   void clear();
 

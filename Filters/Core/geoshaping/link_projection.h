@@ -4,6 +4,7 @@
 #include "geoshaping/error_metrics.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace geoshaping
@@ -56,6 +57,8 @@ struct ProjectionOptions
 {
   int max_iterations = 1000000;
   double tolerance = 1e-9; // relative to the mean edge length
+  // Asked after every sweep; true ends the run as the cap does (e.g. a user's abort).
+  std::function<bool()> stop;
 };
 
 struct ProjectionReport
@@ -118,8 +121,8 @@ private:
 
   const LinkMesh& mesh_;
   index_t grasp_ = -1;
-  Displacements u_;                  // dense
-  std::vector<index_t> var_of_;      // -1 outside the region
+  Displacements u_;                    // dense
+  std::vector<index_t> var_of_;        // -1 outside the region
   std::vector<std::uint8_t> expanded_; // links to every neighbour added
   std::vector<index_t> region_, changed_, queue_;
   std::vector<Variable> vars_;
@@ -129,10 +132,11 @@ private:
 
 // The refinement pass: `iterations` sweeps starting from the deformer's last frame
 // (its moved vertices and their displacements), grasp and pins fixed. Stops earlier
-// once converged with the default tolerance. Read the result from the projector;
-// write back projector.changed() (plus the frame's moved vertices).
+// once converged with the default tolerance, or when `stop` (if given) returns true.
+// Read the result from the projector; write back projector.changed() (plus the frame's
+// moved vertices).
 ProjectionReport refine_links(LinkProjector& projector, const ChainMailDeformer& deformer,
-  index_t grasp, int iterations);
+  index_t grasp, int iterations, std::function<bool()> stop = {});
 
 // The reference configuration of E_ref: the point of F nearest `start` (dense, e.g. the
 // ChainMail result, or rest with the grasp at its displacement), run to convergence.

@@ -7,7 +7,7 @@
 //   t x y z qw qx qy qz buttons
 //
 //   t        seconds, non-decreasing down the file
-//   x y z    stylus position, metres
+//   x y z    stylus position, metres, each within +-1e6 (so interpolation stays finite)
 //   qw..qz   orientation quaternion (normalised on reading if its length is not 1
 //            within 1e-9; must not be zero)
 //   buttons  unsigned decimal bitmask, bit 0 = first button
