@@ -1,5 +1,5 @@
 // libFuzzer target: the stylus trace parser of the Replay device (Haptics/trace.cpp) on
-// any bytes, then interpolation between the samples of an accepted trace.
+// any bytes, then interpolation between the samples of an accepted trace (finite).
 #include "geoshaping/haptics/trace.h"
 
 #include <cmath>
@@ -42,8 +42,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!r.samples.empty())
   {
     const double first = r.samples.front().t, last = r.samples.back().t;
+    // Positions are bounded (1e6 m), so interpolating between them stays finite.
     for (const double t : { first - 1.0, first, 0.5 * first + 0.5 * last, last, last + 1.0 })
-      (void)geoshaping::haptics::sample_trace_at(r.samples, t);
+    {
+      const auto s = geoshaping::haptics::sample_trace_at(r.samples, t);
+      Require(s.position.allFinite() && s.orientation.coeffs().allFinite());
+    }
   }
   return 0;
 }
