@@ -18,7 +18,7 @@
  * unsupported file gives an error naming the entry and an empty output. Sizes read from
  * the file are checked against what it can hold before any allocation (a deflated entry
  * at most 1032 x its compressed size), .npy headers must be exact, and no exception
- * escapes; docs/painting.md gives the memory and time bounds.
+ * escapes; docs/readers.md gives the memory and time bounds.
  */
 #ifndef vtkNpzDEMReader_h
 #define vtkNpzDEMReader_h

@@ -2,9 +2,11 @@
 #include "vtkGocadTSurfText.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <new>
+#include <random>
 #include <unordered_map>
 
 using namespace vtkGocadTSurfText;
@@ -66,7 +68,7 @@ private:
   // State of the surface being read; vertex ids are local to a surface.
   struct SurfaceState
   {
-    std::unordered_map<std::int64_t, std::int64_t> IdToPoint;
+    std::unordered_map<std::int64_t, std::int64_t, VertexIdHash> IdToPoint;
     std::size_t FirstPoint = 0;
     int TFace = 0;
     bool TFaceSeen = false;
@@ -113,6 +115,7 @@ private:
   void ReadSurface()
   {
     this->S = SurfaceState();
+    this->S.IdToPoint = decltype(this->S.IdToPoint)(0, VertexIdHash{ this->IdSeed });
     this->S.FirstPoint = this->Data.GetNumberOfPoints();
     this->Data.Surfaces.emplace_back();
     while (this->NextLine())
@@ -415,6 +418,22 @@ private:
   std::uint64_t PropertyValues = 0;     // values stored over all properties and points
   std::uint64_t ComponentsPerPoint = 0; // sum of NumberOfComponents over all properties
   std::unordered_map<std::string, std::size_t> PropertyIndex; // name -> Data.Properties
+  std::uint64_t IdSeed = RandomSeed();
+
+  static std::uint64_t RandomSeed()
+  {
+    try
+    {
+      std::random_device device;
+      return (std::uint64_t(device()) << 32) ^ device();
+    }
+    catch (const std::exception&)
+    {
+      // No entropy source: the clock's ticks still differ from one parse to the next.
+      return static_cast<std::uint64_t>(
+        std::chrono::steady_clock::now().time_since_epoch().count());
+    }
+  }
 };
 }
 

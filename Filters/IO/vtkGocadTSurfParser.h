@@ -7,7 +7,7 @@
  * first problem and reports it as "line N: ..."; it never loops without consuming a
  * line, so a damaged or binary file ends in an error, not a hang. Memory is bounded by
  * the input's size (the NaN padding of properties is refused beyond one value per byte
- * read plus 64 per point) and no exception escapes. See docs/tsurf.md.
+ * read plus 64 per point) and no exception escapes. See docs/tsurf.md and docs/readers.md.
  */
 #ifndef vtkGocadTSurfParser_h
 #define vtkGocadTSurfParser_h

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -63,7 +64,7 @@ inline bool IsComment(const Tokens& t)
 }
 
 // std::from_chars, unlike strtod, ignores the C locale; the whole token must be used.
-template <typename T>
+template<typename T>
 inline bool ParseNumber(const std::string& token, T& value)
 {
   const char* begin = token.data();
@@ -73,6 +74,23 @@ inline bool ParseNumber(const std::string& token, T& value)
   const auto result = std::from_chars(begin, end, value);
   return begin != end && result.ec == std::errc() && result.ptr == end;
 }
+
+// Hash of vertex ids: the standard library's std::hash<int64_t> is the identity, so ids
+// that are multiples of the table's bucket count (a file can choose them) all land in one
+// bucket and the parse becomes quadratic (100,000 VRTX lines: 4.5 s instead of 0.2 s).
+// The ids are mixed with a seed (splitmix64's finalizer; the parser draws the seed at
+// random) so that no file can aim at a bucket. Only the speed depends on the seed.
+struct VertexIdHash
+{
+  std::uint64_t Seed = 0;
+  std::size_t operator()(std::int64_t id) const noexcept
+  {
+    std::uint64_t x = static_cast<std::uint64_t>(id) + this->Seed + 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return static_cast<std::size_t>(x ^ (x >> 31));
+  }
+};
 
 inline bool EqualsNoCase(const std::string& a, const char* b)
 {
