@@ -8,6 +8,7 @@
 #include <set>
 
 using namespace geoshaping;
+using geoshaping::testing::constant;
 using geoshaping::testing::grid_id;
 
 namespace
@@ -17,15 +18,6 @@ ChainMailDeformer make(const geoshaping::testing::Mesh& m)
   ChainMailDeformer d;
   d.set_mesh(m.xyz.data(), m.size(), m.adjacency);
   return d;
-}
-
-TransferFunction constant(double t, double k, double h)
-{
-  TransferFunction tf;
-  tf.stretch = { t, t };
-  tf.compression = { k, k };
-  tf.shear = { h, h };
-  return tf;
 }
 
 // Largest change of a rigid-rigid edge vector, in the units of the mesh.
@@ -135,8 +127,8 @@ TEST(ChainMailDeformer, RigidIslandKeepsItsShapeUnderFifoPriorityNotUnderFifo)
 
 TEST(ChainMailDeformer, EachVertexMovesOnceIntoItsSponsorsValidRegion)
 {
-  for (QueueKind q : { QueueKind::fifo, QueueKind::priority, QueueKind::fifo_priority,
-         QueueKind::max_violation })
+  for (QueueKind q :
+    { QueueKind::fifo, QueueKind::priority, QueueKind::fifo_priority, QueueKind::max_violation })
   {
     const ChainMailDeformer d = rigid_island_frame(q);
     std::set<index_t> seen(d.moved().begin(), d.moved().end());
@@ -147,8 +139,8 @@ TEST(ChainMailDeformer, EachVertexMovesOnceIntoItsSponsorsValidRegion)
       if (s < 0)
         continue;
       EXPECT_TRUE(d.moved_this_frame(s));
-      const Box b = valid_region(d.rest_local(s) + d.displacement(s),
-        d.rest_local(v) - d.rest_local(s), d.params(v));
+      const Box b = valid_region(
+        d.rest_local(s) + d.displacement(s), d.rest_local(v) - d.rest_local(s), d.params(v));
       const Eigen::Vector3d p = d.rest_local(v) + d.displacement(v);
       EXPECT_LE((b.clamp(p) - p).norm(), 1e-9) << queue_name(q) << " vertex " << v;
     }

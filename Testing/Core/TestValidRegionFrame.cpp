@@ -16,18 +16,11 @@
 #include <set>
 
 using namespace geoshaping;
+using geoshaping::testing::constant;
 using geoshaping::testing::grid_id;
 
 namespace
 {
-TransferFunction constant(double t, double k, double h)
-{
-  TransferFunction tf;
-  tf.stretch = { t, t };
-  tf.compression = { k, k };
-  tf.shear = { h, h };
-  return tf;
-}
 
 Eigen::Matrix3d random_rotation(std::mt19937& rng)
 {

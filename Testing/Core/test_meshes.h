@@ -1,6 +1,7 @@
 #pragma once
 // Small analytic meshes shared by the core tests and benchmarks.
 #include "geoshaping/adjacency.h"
+#include "geoshaping/transfer_function.h"
 
 #include <vector>
 
@@ -22,7 +23,10 @@ Mesh quad_grid(index_t nx, index_t ny, double h);
 // The same grid split into triangles.
 Mesh triangle_grid(index_t nx, index_t ny, double h);
 
-inline index_t grid_id(index_t nx, index_t i, index_t j) { return j * nx + i; }
+inline index_t grid_id(index_t nx, index_t i, index_t j)
+{
+  return j * nx + i;
+}
 
 // The paper's Figure 6 scene: a soft (malleability 1) 31 x 31 triangle grid with a
 // rigid (0) 7 x 7 island, grasped at (15, 12) and pulled by (4, 3, 12).
@@ -34,5 +38,15 @@ struct IslandScene
   double pull[3];
 };
 IslandScene rigid_island();
+
+// The same stretch t, compression k and shear h at every malleability.
+inline TransferFunction constant(double t, double k, double h)
+{
+  TransferFunction tf;
+  tf.stretch = { t, t };
+  tf.compression = { k, k };
+  tf.shear = { h, h };
+  return tf;
+}
 
 } // namespace geoshaping::testing
