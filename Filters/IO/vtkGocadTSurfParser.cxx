@@ -35,9 +35,14 @@ struct ParseFailure
 class Parser
 {
 public:
-  Parser(std::istream& input, vtkGocadTSurfData& data)
+  Parser(std::istream& input, vtkGocadTSurfData& data, const std::function<bool(double)>& progress,
+    std::uint64_t totalBytes)
     : Input(input)
     , Data(data)
+    , Progress(progress)
+    , TotalBytes(totalBytes)
+    , ReportStep(totalBytes / 100 + 1)
+    , NextReport(ReportStep)
   {
   }
 
@@ -97,6 +102,12 @@ private:
       return false;
     }
     this->BytesRead += this->Line.size() + 1;
+    if (this->Progress && this->TotalBytes > 0 && this->BytesRead >= this->NextReport)
+    {
+      this->NextReport = this->BytesRead + this->ReportStep;
+      if (!this->Progress(std::min(1.0, double(this->BytesRead) / double(this->TotalBytes))))
+        this->Fail("stopped at the user's request");
+    }
     if (!this->Line.empty() && this->Line.back() == '\r')
       this->Line.pop_back();
     if (this->Line.size() > MaxLineLength)
@@ -414,7 +425,11 @@ private:
   std::string Line;
   std::size_t LineNumber = 0;
   SurfaceState S;
-  std::uint64_t BytesRead = 0;          // lines read so far, with their line ends
+  std::uint64_t BytesRead = 0; // lines read so far, with their line ends
+  const std::function<bool(double)>& Progress;
+  const std::uint64_t TotalBytes;
+  const std::uint64_t ReportStep; // bytes between two progress reports (1 %)
+  std::uint64_t NextReport;
   std::uint64_t PropertyValues = 0;     // values stored over all properties and points
   std::uint64_t ComponentsPerPoint = 0; // sum of NumberOfComponents over all properties
   std::unordered_map<std::string, std::size_t> PropertyIndex; // name -> Data.Properties
@@ -437,12 +452,17 @@ private:
 };
 }
 
-bool vtkGocadTSurfParse(std::istream& input, vtkGocadTSurfData& data, std::string& error)
+bool vtkGocadTSurfParse(std::istream& input, vtkGocadTSurfData& data, std::string& error,
+  const std::function<bool(double)>& progress, std::uint64_t totalBytes)
 {
-  Parser parser(input, data);
+  Parser parser(input, data, progress, totalBytes);
   try
   {
     parser.Run();
+    if (progress)
+    {
+      progress(1.0); // the end, whatever the last 1 % step was
+    }
     return true;
   }
   catch (const ParseFailure& failure)

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <istream>
 #include <string>
 #include <vector>
@@ -51,8 +52,12 @@ struct vtkGocadTSurfData
  * Parse every `GOCAD TSurf ... END` object of `input` into `data`. Returns false and
  * sets `error` (starting with "line N:") on the first problem; `data` is then partial
  * and must be discarded.
+ *
+ * `progress` (optional) is told the fraction of `totalBytes` read, every 1 % of them, and
+ * stops the parse (an error "stopped at the user's request") when it returns false.
  */
-bool vtkGocadTSurfParse(std::istream& input, vtkGocadTSurfData& data, std::string& error);
+bool vtkGocadTSurfParse(std::istream& input, vtkGocadTSurfData& data, std::string& error,
+  const std::function<bool(double)>& progress = {}, std::uint64_t totalBytes = 0);
 
 /** True when the first non-blank, non-comment line of `input` starts a TSurf. */
 bool vtkGocadTSurfLooksLikeTSurf(std::istream& input);

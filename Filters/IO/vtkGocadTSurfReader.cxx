@@ -133,7 +133,15 @@ int vtkGocadTSurfReader::RequestData(
   {
     vtkGocadTSurfData data;
     std::string error;
-    if (!vtkGocadTSurfParse(file, data, error))
+    file.seekg(0, std::ios::end);
+    const auto size = static_cast<std::uint64_t>(std::max<std::streamoff>(0, file.tellg()));
+    file.seekg(0, std::ios::beg);
+    const auto progress = [this](double done)
+    {
+      this->UpdateProgress(done);
+      return !this->CheckAbort();
+    };
+    if (!vtkGocadTSurfParse(file, data, error, progress, size))
     {
       vtkErrorMacro("GOCAD TSurf file '" << this->FileName << "', " << error);
       this->SetErrorCode(vtkErrorCode::FileFormatError);

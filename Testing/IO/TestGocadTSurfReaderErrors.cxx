@@ -9,8 +9,10 @@
 #include <cstdint>
 #include <new>
 #include <random>
+#include <sstream>
 #include <streambuf>
 #include <unordered_map>
+#include <vector>
 
 using gocadtest::Read;
 using gocadtest::WriteText;
@@ -236,4 +238,41 @@ TEST(GocadTSurfReader, VertexIdsFarApartReadNormally)
   EXPECT_EQ(r.Errors, "");
   EXPECT_EQ(r.Output->GetNumberOfPoints(), 1000);
   EXPECT_EQ(r.Output->GetNumberOfCells(), 1);
+}
+
+// Long files tell the progress bar how far they are and stop when asked.
+TEST(GocadTSurfParser, ReportsProgressByBytesAndStopsWhenAsked)
+{
+  std::string s = "GOCAD TSurf 1\n";
+  for (int id = 1; id <= 5000; ++id)
+    s += "VRTX " + std::to_string(id) + " " + std::to_string(id) + " 0 0\n";
+  s += "END\n";
+  std::vector<double> seen;
+  {
+    std::istringstream in(s);
+    vtkGocadTSurfData data;
+    std::string error;
+    ASSERT_TRUE(vtkGocadTSurfParse(
+      in, data, error,
+      [&](double f)
+      {
+        seen.push_back(f);
+        return true;
+      },
+      s.size()))
+      << error;
+  }
+  EXPECT_GE(seen.size(), 90u);
+  EXPECT_LE(seen.size(), 101u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+
+  std::istringstream in(s);
+  vtkGocadTSurfData data;
+  std::string error;
+  int calls = 0;
+  EXPECT_FALSE(vtkGocadTSurfParse(
+    in, data, error, [&](double) { return ++calls < 10; }, s.size()));
+  EXPECT_NE(error.find("stopped at the user's request"), std::string::npos) << error;
+  EXPECT_EQ(calls, 10);
 }
