@@ -30,42 +30,21 @@ void vtkChainMailDeformationFilter::AddShearCurvePoint(double m, double v)
   this->Modified();
 }
 
-void vtkChainMailDeformationFilter::AddStretchCurveValue(double value)
-{
-  AddCurveValue(this->Internals->StretchCurve, this->Internals->StretchValues, value);
-  this->Modified();
-}
-
-void vtkChainMailDeformationFilter::AddCompressionCurveValue(double value)
-{
-  AddCurveValue(this->Internals->CompressionCurve, this->Internals->CompressionValues, value);
-  this->Modified();
-}
-
-void vtkChainMailDeformationFilter::AddShearCurveValue(double value)
-{
-  AddCurveValue(this->Internals->ShearCurve, this->Internals->ShearValues, value);
-  this->Modified();
-}
-
 void vtkChainMailDeformationFilter::RemoveAllStretchCurvePoints()
 {
   this->Internals->StretchCurve.points.clear();
-  this->Internals->StretchValues.Clear();
   this->Modified();
 }
 
 void vtkChainMailDeformationFilter::RemoveAllCompressionCurvePoints()
 {
   this->Internals->CompressionCurve.points.clear();
-  this->Internals->CompressionValues.Clear();
   this->Modified();
 }
 
 void vtkChainMailDeformationFilter::RemoveAllShearCurvePoints()
 {
   this->Internals->ShearCurve.points.clear();
-  this->Internals->ShearValues.Clear();
   this->Modified();
 }
 

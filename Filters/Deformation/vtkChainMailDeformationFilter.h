@@ -173,12 +173,6 @@ public:
   void AddStretchCurvePoint(double m, double value);
   void AddCompressionCurvePoint(double m, double value);
   void AddShearCurvePoint(double m, double value);
-  /// The plugin's StretchCurve, CompressionCurve and ShearCurve properties send their
-  /// flat lists one value at a time through these: an odd-length list's last value is
-  /// ignored with a warning.
-  void AddStretchCurveValue(double value);
-  void AddCompressionCurveValue(double value);
-  void AddShearCurveValue(double value);
   void RemoveAllStretchCurvePoints();
   void RemoveAllCompressionCurvePoints();
   void RemoveAllShearCurvePoints();

@@ -39,7 +39,6 @@ struct vtkChainMailDeformationFilter::vtkInternals
 {
   geoshaping::ChainMailDeformer Deformer;
   geoshaping::Curve StretchCurve, CompressionCurve, ShearCurve; // only .points used
-  vtkGeoShapingRecordList<2> StretchValues, CompressionValues, ShearValues;
 
   // What the cached core state was built from.
   vtkPoints* GeometryPoints = nullptr;
@@ -117,15 +116,6 @@ inline void SetCurvePoints(geoshaping::Curve& curve, vtkPiecewiseFunction* f)
     f->GetNodeValue(i, node);
     curve.points.emplace_back(node[0], node[1]);
   }
-}
-
-// One value of a curve's flat (malleability, value) list; every second one adds a point.
-inline void AddCurveValue(
-  geoshaping::Curve& curve, vtkGeoShapingRecordList<2>& values, double value)
-{
-  double point[2];
-  if (values.Add(value, point))
-    curve.points.emplace_back(point[0], point[1]);
 }
 
 using IdList = std::vector<geoshaping::index_t>;

@@ -290,14 +290,6 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
   tf.shear =
     MakeCurve(this->ShearRange, this->TransferCurveShape, this->StepThreshold, in.ShearCurve);
   tf.exact_rigid_at_zero = this->ExactRigidAtZero;
-  for (auto* list : { &in.StretchValues, &in.CompressionValues, &in.ShearValues })
-    if (list->TakeTail() > 0)
-    {
-      vtkWarningMacro(<< (list == &in.StretchValues        ? "StretchCurve"
-                           : list == &in.CompressionValues ? "CompressionCurve"
-                                                           : "ShearCurve")
-                      << " has an odd number of values: its last value is ignored.");
-    }
   if (*tf.validate())
   {
     vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");

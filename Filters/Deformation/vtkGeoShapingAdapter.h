@@ -15,7 +15,6 @@
 
 #include "geoshaping/adjacency.h" // For Adjacency
 
-#include <algorithm>
 #include <vector>
 
 class vtkAbstractCellLocator;
@@ -63,46 +62,6 @@ public:
   /// Returns the number of triangles appended.
   static vtkIdType AppendTrianglesNear(vtkDataSet* surface, vtkAbstractCellLocator* locator,
     const double center[3], double radius, std::vector<double>& xyz);
-};
-
-/**
- * A flat list of numbers that ParaView sends one value at a time (a repeat-command
- * property of `number_of_elements_per_command="1"`), grouped into records of `Width`
- * numbers. ParaView would silently drop a list's incomplete tail if it sent whole
- * records; receiving single values lets the filter say so (TakeTail). Not wrapped.
- */
-template<int Width>
-class vtkGeoShapingRecordList
-{
-public:
-  /// Appends one number; true, with the record in `record`, when it completes one.
-  bool Add(double value, double record[Width])
-  {
-    this->Tail[this->TailSize++] = value;
-    this->Reported = false;
-    if (this->TailSize < Width)
-      return false;
-    std::copy(this->Tail, this->Tail + Width, record);
-    this->TailSize = 0;
-    return true;
-  }
-  void Clear()
-  {
-    this->TailSize = 0;
-    this->Reported = false;
-  }
-  /// The number of values in the incomplete tail, once: 0 until the list changes again.
-  int TakeTail()
-  {
-    const int tail = this->Reported ? 0 : this->TailSize;
-    this->Reported = true;
-    return tail;
-  }
-
-private:
-  double Tail[Width] = {};
-  int TailSize = 0;
-  bool Reported = false;
 };
 
 #endif

@@ -44,10 +44,13 @@ struct vtkMalleabilityPaintFilter::vtkInternals
   // The last painted output (shallow): what an aborted painting leaves in place, since
   // the executive empties the output before each execution.
   vtkSmartPointer<vtkPointSet> LastOutput;
+  void KeepOutput(vtkPointSet* output)
+  {
+    this->LastOutput = vtk::TakeSmartPointer(output->NewInstance());
+    this->LastOutput->ShallowCopy(output);
+  }
   std::vector<geoshaping::Dab> Dabs;
   std::vector<double> PointDabs; // id value weight
-  vtkGeoShapingRecordList<6> DabValues;
-  vtkGeoShapingRecordList<3> PointDabValues;
 
   // Geometry the locator, points and adjacency were built from.
   vtkPoints* GeometryPoints = nullptr;
@@ -157,18 +160,8 @@ void vtkMalleabilityPaintFilter::AddPointDab(double id, double value, double wei
   this->Modified();
 }
 
-void vtkMalleabilityPaintFilter::AddPointDabValue(double value)
-{
-  double dab[3];
-  if (this->Internals->PointDabValues.Add(value, dab))
-    this->AddPointDab(dab[0], dab[1], dab[2]);
-  else
-    this->Modified();
-}
-
 void vtkMalleabilityPaintFilter::RemoveAllPointDabs()
 {
-  this->Internals->PointDabValues.Clear();
   if (!this->Internals->PointDabs.empty())
   {
     this->Internals->PointDabs.clear();
@@ -188,18 +181,8 @@ void vtkMalleabilityPaintFilter::AddDab(
   this->Modified();
 }
 
-void vtkMalleabilityPaintFilter::AddDabValue(double value)
-{
-  double dab[6];
-  if (this->Internals->DabValues.Add(value, dab))
-    this->AddDab(dab[0], dab[1], dab[2], dab[3], dab[4], dab[5]);
-  else
-    this->Modified();
-}
-
 void vtkMalleabilityPaintFilter::RemoveAllDabs()
 {
-  this->Internals->DabValues.Clear();
   if (!this->Internals->Dabs.empty())
   {
     this->Internals->Dabs.clear();
@@ -238,16 +221,6 @@ int vtkMalleabilityPaintFilter::RequestData(
   this->NumberOfRejectedDabs = 0;
   this->NumberOfPaintedValues = 0;
   this->LastPaintMilliseconds = 0.0;
-  vtkInternals& internals = *this->Internals;
-  if (const int tail = internals.DabValues.TakeTail())
-  {
-    vtkWarningMacro("Dabs ends in an incomplete dab (" << tail << " of 6 values); it is ignored.");
-  }
-  if (const int tail = internals.PointDabValues.TakeTail())
-  {
-    vtkWarningMacro(
-      "PointDabs ends in an incomplete point dab (" << tail << " of 3 values); it is ignored.");
-  }
   const char* name = this->PaintPins ? this->PinnedArrayName : this->MalleabilityArrayName;
   name = name ? name : "";
   if (!*name)
@@ -274,8 +247,7 @@ int vtkMalleabilityPaintFilter::RequestData(
   if (!this->PaintPins && this->PaintIncrementally(input, output, name))
   {
     ++this->NumberOfIncrementalUpdates;
-    this->Internals->LastOutput = vtk::TakeSmartPointer(output->NewInstance());
-    this->Internals->LastOutput->ShallowCopy(output);
+    this->Internals->KeepOutput(output);
     return 1;
   }
 
@@ -360,8 +332,7 @@ int vtkMalleabilityPaintFilter::RequestData(
     in.AppliedDabList = in.Dabs;
     in.AppliedPointDabs = in.PointDabs;
   }
-  this->Internals->LastOutput = vtk::TakeSmartPointer(output->NewInstance());
-  this->Internals->LastOutput->ShallowCopy(output);
+  this->Internals->KeepOutput(output);
   return 1;
 }
 

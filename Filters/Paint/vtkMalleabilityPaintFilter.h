@@ -89,9 +89,6 @@ public:
   /// The dabs, applied in the order they were added.
   void AddDab(double x, double y, double z, double radius, double value, double strength);
   void RemoveAllDabs();
-  /// The plugin's Dabs property sends its flat list one value at a time through this;
-  /// an incomplete last dab (fewer than six values) is ignored with a warning.
-  void AddDabValue(double value);
   int GetNumberOfDabs();
   /// Six doubles: x y z radius value strength. False when `i` is out of range.
   bool GetDab(int i, double dab[6]);
@@ -102,9 +99,6 @@ public:
   /// each in [0, 1] but the id; a bad one is skipped with an error.
   void AddPointDab(double id, double value, double weight);
   void RemoveAllPointDabs();
-  /// The plugin's PointDabs property sends its flat list one value at a time through
-  /// this; an incomplete last point dab is ignored with a warning.
-  void AddPointDabValue(double value);
   ///@}
 
   ///@{

@@ -321,30 +321,3 @@ TEST(ChainMailDeformationBadInput, NonFiniteGraspPositionIsAClearError)
     std::string::npos)
     << w.Observer->GetErrorMessage();
 }
-
-// The plugin sends curve lists one value at a time; ParaView would drop an odd tail.
-TEST(ChainMailDeformationBadInput, OddLengthCurveListWarnsOnceThatItsLastValueIsIgnored)
-{
-  auto grid = Grid();
-  vtkNew<vtkChainMailDeformationFilter> pairs;
-  pairs->AddStretchCurvePoint(0.0, 1.0);
-  pairs->AddStretchCurvePoint(1.0, 3.0);
-  pairs->SetGraspPointId(14);
-  pairs->SetDisplacement(0, 0, 2);
-  pairs->SetInputData(grid);
-  pairs->Update();
-  Watched w(grid);
-  for (double v : { 0.0, 1.0, 1.0, 3.0, 0.5 })
-    w.Filter->AddStretchCurveValue(v);
-  EXPECT_EQ(Difference(w.Run(), pairs->GetOutput()), 0.0);
-  w.Filter->SetDisplacement(0, 0, 2.5);
-  w.Run();
-  EXPECT_EQ(Count(w.Observer->GetWarningMessage(), "StretchCurve has an odd number of values"), 1u)
-    << w.Observer->GetWarningMessage();
-  w.Observer->Clear();
-  w.Filter->RemoveAllStretchCurvePoints();
-  for (double v : { 0.0, 1.0, 1.0, 3.0 })
-    w.Filter->AddStretchCurveValue(v);
-  w.Run();
-  EXPECT_FALSE(w.Observer->GetWarning());
-}

@@ -302,28 +302,6 @@ TEST(MalleabilityPaint, SourceArrayThatIsNotNumericWarnsAndStartsFromTheInitialV
   EXPECT_EQ(out->GetValueRange()[0], 0.25f);
 }
 
-// The plugin sends Dabs and PointDabs one value at a time; ParaView would drop a tail.
-TEST(MalleabilityPaint, IncompleteLastDabWarnsThatItIsIgnored)
-{
-  vtkSmartPointer<vtkPointSet> input = Scene(false);
-  vtkNew<vtkMalleabilityPaintFilter> paint;
-  paint->SetInputData(input);
-  for (double v : { 50.0, 30.0, 10.0, 5.0, 0.0, 1.0, 20.0, 30.0 })
-    paint->AddDabValue(v);
-  for (double v : { 3.0, 1.0, 1.0, 4.0 })
-    paint->AddPointDabValue(v);
-  vtkNew<vtkTest::ErrorObserver> warnings;
-  paint->AddObserver(vtkCommand::WarningEvent, warnings);
-  paint->Update();
-  EXPECT_EQ(paint->GetNumberOfDabs(), 1);
-  EXPECT_EQ(paint->GetNumberOfAppliedDabs(), 1);
-  EXPECT_NE(warnings->GetWarningMessage().find("incomplete dab (2 of 6 values)"), std::string::npos)
-    << warnings->GetWarningMessage();
-  EXPECT_NE(
-    warnings->GetWarningMessage().find("incomplete point dab (1 of 3 values)"), std::string::npos);
-  EXPECT_EQ(Malleability(paint->GetOutputDataObject(0))->GetValue(3), 1.0f);
-}
-
 TEST(MalleabilityPaint, ReportsProgressAndAnAbortLeavesThePreviousOutput)
 {
   vtkNew<vtkMalleabilityPaintFilter> paint;
