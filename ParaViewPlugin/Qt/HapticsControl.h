@@ -2,8 +2,6 @@
 // The haptic interactor's decisions, free of Qt, VTK and ParaView so that they are unit
 // tested (Testing/GUI/TestHapticsControl.cpp): where the device workspace sits in the
 // scene, and what one hand asks of the pipeline each frame.
-#include "geoshaping/brush.h"
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -152,8 +150,5 @@ private:
   int touched_ = -1;
   Eigen::Vector3d row_centre_ = Eigen::Vector3d::Zero();
 };
-
-// The palette's colours are the core's geoshaping::malleability_color (geoshaping/brush.h).
-using geoshaping::malleability_color;
 
 } // namespace geoshaping::interactor

@@ -2,6 +2,8 @@
 
 #include "pqHapticsTestHook.h"
 
+#include "geoshaping/brush.h"
+
 #include <pqCoreUtilities.h>
 
 #include <QComboBox>
@@ -41,7 +43,7 @@ bool openHapticsPresent()
 
 QString swatchStyle(double value, bool selected)
 {
-  const Eigen::Vector3d c = gi::malleability_color(value) * 255.0;
+  const Eigen::Vector3d c = geoshaping::malleability_color(value) * 255.0;
   return QString("QToolButton { background-color: rgb(%1, %2, %3); border: %4px solid %5; }")
     .arg(int(c.x()))
     .arg(int(c.y()))

@@ -2,6 +2,7 @@
 
 #include "pqHapticsMouse.h"
 
+#include "geoshaping/brush.h"
 #include "geoshaping/haptics/contact_patch.h"
 #include "geoshaping/haptics/replay_device.h"
 #include "geoshaping/haptics/servo_loop.h"
@@ -63,7 +64,7 @@ struct pqHapticsInteractor::Hand
     this->swatchMapper->SetInputConnection(this->swatchSphere->GetOutputPort());
     for (int i = 0; i < gi::StylusPalette::count; ++i)
     {
-      const Eigen::Vector3d c = gi::malleability_color(gi::StylusPalette::value(i));
+      const Eigen::Vector3d c = geoshaping::malleability_color(gi::StylusPalette::value(i));
       this->swatches[i]->SetMapper(this->swatchMapper);
       this->swatches[i]->GetProperty()->SetColor(c.x(), c.y(), c.z());
       this->swatches[i]->PickableOff();
@@ -432,7 +433,7 @@ void pqHapticsInteractor::onFrame()
     this->apply(hand, hand.controller.update(local, this->Brush));
 
     const bool painting = hand.controller.tool() == gi::Tool::paint;
-    const Eigen::Vector3d color = painting ? gi::malleability_color(this->Brush.value)
+    const Eigen::Vector3d color = painting ? geoshaping::malleability_color(this->Brush.value)
                                   : hand.controller.held() ? Eigen::Vector3d(0.2, 1.0, 0.3)
                                                            : Eigen::Vector3d(0.2, 0.6, 1.0);
     hand.sphere->SetCenter(world.position.data());

@@ -22,11 +22,6 @@ constexpr const char* array_name = "Malleability";
 constexpr double settings_priority = 0.25;
 }
 
-const char* malleability_preset_name()
-{
-  return geoshaping::malleability_preset_name;
-}
-
 bool register_malleability_colormap()
 {
   static bool registered = false;
@@ -41,20 +36,20 @@ bool register_malleability_colormap()
   const char* text = geoshaping_malleability_preset;
   if (!reader->parse(text, text + std::char_traits<char>::length(text), &presets, &errors) ||
       !presets.isArray() || presets.size() != 1 ||
-      presets[0]["Name"].asString() != malleability_preset_name())
+      presets[0]["Name"].asString() != geoshaping::malleability_preset_name)
   {
     vtkLog(ERROR, "GeoShaping: the embedded Malleability preset is not one preset named '"
-                    << malleability_preset_name() << "': " << errors);
+                    << geoshaping::malleability_preset_name << "': " << errors);
     return false;
   }
   auto* list = vtkSMTransferFunctionPresets::GetInstance();
-  if (!list->HasPreset(malleability_preset_name()))
+  if (!list->HasPreset(geoshaping::malleability_preset_name))
   {
     list->ImportPresets(presets);
   }
 
   Json::Value settings;
-  settings["standard_presets"][array_name] = malleability_preset_name();
+  settings["standard_presets"][array_name] = geoshaping::malleability_preset_name;
   Json::Value& table = settings["array_lookup_tables"][array_name];
   table["Title"] = array_name;
   Json::Value& lut = table["PVLookupTable"];

@@ -17,9 +17,6 @@
 namespace geoshaping::colormap
 {
 
-// The preset's name as it appears in ParaView's preset list.
-const char* malleability_preset_name();
-
 // Adds the preset (once) and the settings collection (once). Returns false, with a VTK
 // error, when the embedded preset cannot be read. Called when the library is loaded.
 bool register_malleability_colormap();
