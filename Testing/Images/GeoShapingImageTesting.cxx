@@ -11,23 +11,20 @@
 #include "vtkMalleabilityPaintFilter.h"
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
+#include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkTriangleFilter.h"
 #include "vtkWindowToImageFilter.h"
 
 #include "geoshaping/malleability_preset.h"
 #include "geoshaping/sample_scenes.h"
 
-#include <cstdlib>
-#include <fstream>
 #include <iostream>
-#include <sstream>
-#include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace geoshaping_image_testing
 {
@@ -88,6 +85,25 @@ void FaultStepCamera(vtkRenderer* renderer)
   camera->SetViewUp(0.0, 0.0, 1.0);
   camera->SetViewAngle(30.0);
   renderer->ResetCameraClippingRange();
+}
+
+vtkSmartPointer<vtkChainMailDeformationFilter> Figure8Pull(int n, double lift, int queue)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0.0, 0.0, 0.0);
+  plane->SetPoint1(n, 0.0, 0.0);
+  plane->SetPoint2(0.0, n, 0.0);
+  plane->SetResolution(n, n);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(plane->GetOutputPort());
+  auto pull = vtkSmartPointer<vtkChainMailDeformationFilter>::New();
+  pull->SetInputConnection(triangles->GetOutputPort());
+  pull->SetDefaultMalleability(0.5);
+  pull->SetGraspMode(vtkChainMailDeformationFilter::GRASP_NEAREST_TO_POSITION);
+  pull->SetGraspPosition(n / 2.0, n / 2.0, 0.0);
+  pull->SetDisplacement(0.0, 0.0, lift);
+  pull->SetCandidateQueue(queue);
+  return pull;
 }
 
 vtkSmartPointer<vtkRenderWindow> TestWindow(int width, int height)

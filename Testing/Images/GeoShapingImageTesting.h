@@ -24,6 +24,10 @@ vtkSmartPointer<vtkAlgorithm> PaintedFaultStep(bool slab);
 vtkSmartPointer<vtkRenderer> SurfaceRenderer(
   vtkAlgorithm* source, const char* array, vtkColorTransferFunction* colors);
 
+// Figure 8's scene: an n x n sheet of unit triangulated cells at z = 0, pulled at the
+// vertex nearest its centre by `lift` at malleability 0.5 with `queue` (not updated).
+vtkSmartPointer<vtkChainMailDeformationFilter> Figure8Pull(int n, double lift, int queue);
+
 // The oblique camera used for the fault-step figures.
 void FaultStepCamera(vtkRenderer* renderer);
 

@@ -11,24 +11,14 @@
 #include "vtkElevationFilter.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
-#include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTriangleFilter.h"
 
 int TestFigure8(int argc, char* argv[])
 {
   const int n = 60; // cells per side
   const double lift = 7.0;
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(0.0, 0.0, 0.0);
-  plane->SetPoint1(n, 0.0, 0.0);
-  plane->SetPoint2(0.0, n, 0.0);
-  plane->SetResolution(n, n);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(plane->GetOutputPort());
-
   vtkNew<vtkLookupTable> heights;
   heights->SetHueRange(0.667, 0.0);
   heights->SetTableRange(0.0, 1.0);
@@ -42,13 +32,8 @@ int TestFigure8(int argc, char* argv[])
     { 0.5, 0.0, 1.0, 0.5 }, { 0.0, 0.0, 0.5, 0.5 } };
   for (int panel = 0; panel < 4; ++panel)
   {
-    vtkNew<vtkChainMailDeformationFilter> pull;
-    pull->SetInputConnection(triangles->GetOutputPort());
-    pull->SetDefaultMalleability(0.5);
-    pull->SetGraspMode(vtkChainMailDeformationFilter::GRASP_NEAREST_TO_POSITION);
-    pull->SetGraspPosition(n / 2.0, n / 2.0, 0.0);
-    pull->SetDisplacement(0.0, 0.0, queues[panel] < 0 ? 0.0 : lift);
-    pull->SetCandidateQueue(queues[panel] < 0 ? 0 : queues[panel]);
+    auto pull = geoshaping_image_testing::Figure8Pull(
+      n, queues[panel] < 0 ? 0.0 : lift, queues[panel] < 0 ? 0 : queues[panel]);
     vtkNew<vtkElevationFilter> elevation;
     elevation->SetInputConnection(pull->GetOutputPort());
     elevation->SetLowPoint(0.0, 0.0, 0.0);

@@ -17,11 +17,9 @@
 #include "vtkElevationFilter.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
-#include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTriangleFilter.h"
 
 #include <iostream>
 
@@ -29,14 +27,6 @@ int TestFigure8Frames(int argc, char* argv[])
 {
   const int n = 60; // cells per side
   const double lift = 7.0;
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(0.0, 0.0, 0.0);
-  plane->SetPoint1(n, 0.0, 0.0);
-  plane->SetPoint2(0.0, n, 0.0);
-  plane->SetResolution(n, n);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(plane->GetOutputPort());
-
   // Bands of one unit of height, hue from blue (rest) to red (the grasp).
   const int bands = 8;
   vtkNew<vtkLookupTable> heights;
@@ -52,13 +42,8 @@ int TestFigure8Frames(int argc, char* argv[])
   const double viewports[2][4] = { { 0.0, 0.0, 0.5, 1.0 }, { 0.5, 0.0, 1.0, 1.0 } };
   for (int panel = 0; panel < 2; ++panel)
   {
-    vtkNew<vtkChainMailDeformationFilter> pull;
-    pull->SetInputConnection(triangles->GetOutputPort());
-    pull->SetDefaultMalleability(0.5);
-    pull->SetGraspMode(vtkChainMailDeformationFilter::GRASP_NEAREST_TO_POSITION);
-    pull->SetGraspPosition(n / 2.0, n / 2.0, 0.0);
-    pull->SetDisplacement(0.0, 0.0, lift);
-    pull->SetCandidateQueue(vtkChainMailDeformationFilter::FIFO_PRIORITY);
+    auto pull =
+      geoshaping_image_testing::Figure8Pull(n, lift, vtkChainMailDeformationFilter::FIFO_PRIORITY);
     pull->SetValidRegionFrame(frames[panel]);
     pull->Update();
     std::cout << (panel ? "Link" : "Axes") << ": " << pull->GetNumberOfDisplacedPoints()
