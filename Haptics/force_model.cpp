@@ -1,5 +1,7 @@
 #include "geoshaping/haptics/force_model.h"
 
+#include "geoshaping/transfer_function.h" // clean_malleability
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -26,7 +28,7 @@ const char* to_string(ForceStatus s)
 double coupling_stiffness(
   double malleability, const ForceParams& params, const DeviceLimits& limits)
 {
-  const double m = std::isnan(malleability) ? 0.0 : std::clamp(malleability, 0.0, 1.0);
+  const double m = clean_malleability(malleability);
   return limits.max_stiffness * (params.rigid_fraction * (1.0 - m) + params.soft_fraction * m);
 }
 

@@ -116,14 +116,6 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
   set_uniform_malleability(0.5);
 }
 
-namespace
-{
-double sanitize(double x)
-{
-  return std::isnan(x) ? 0.0 : std::clamp(x, 0.0, 1.0);
-}
-} // namespace
-
 template<class T>
 std::size_t ChainMailDeformer::assign_malleability(const T* m)
 {
@@ -132,7 +124,7 @@ std::size_t ChainMailDeformer::assign_malleability(const T* m)
   for (std::size_t v = 0; v < values.size(); ++v)
   {
     const double x = double(m[v]);
-    const double c = sanitize(x);
+    const double c = clean_malleability(x);
     bad += (c != x);
     values[v] = float(c);
   }
@@ -152,7 +144,7 @@ std::size_t ChainMailDeformer::set_malleability(const double* m)
 
 void ChainMailDeformer::set_uniform_malleability(double m)
 {
-  distinct_.assign(nodes_.empty() ? 0 : 1, float(sanitize(m)));
+  distinct_.assign(nodes_.empty() ? 0 : 1, float(clean_malleability(m)));
   for (Node& node : nodes_)
     node.rank = 0;
   finish_ranks();

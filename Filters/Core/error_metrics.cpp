@@ -117,8 +117,9 @@ LinkMesh link_mesh(const std::vector<Eigen::Vector3d>& rest, const Adjacency& ad
   m.rigid.resize(rest.size());
   for (std::size_t v = 0; v < rest.size(); ++v)
   {
-    m.params[v] = tf(std::isnan(malleability[v]) ? 0.0 : malleability[v]);
-    m.rigid[v] = !(malleability[v] > 0.0);
+    const double clean = clean_malleability(malleability[v]);
+    m.params[v] = tf(clean);
+    m.rigid[v] = clean == 0.0;
   }
   m.mean_edge = mean_edge_length(rest, adjacency);
   return m;

@@ -17,6 +17,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "geoshaping/brush.h"
+#include "geoshaping/transfer_function.h"
 
 #include <algorithm>
 #include <chrono>
@@ -284,7 +285,7 @@ int vtkMalleabilityPaintFilter::RequestData(
     {
       const double v =
         this->PaintPins ? double(source->GetComponent(i, 0) != 0.0) : source->GetComponent(i, 0);
-      const double c = std::isnan(v) ? 0.0 : std::min(std::max(v, 0.0), 1.0);
+      const double c = geoshaping::clean_malleability(v);
       clamped += c != v;
       m[i] = static_cast<float>(c);
     }

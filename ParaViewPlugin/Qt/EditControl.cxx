@@ -1,5 +1,7 @@
 #include "EditControl.h"
 
+#include "geoshaping/transfer_function.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,7 +15,7 @@ void append_point_dabs(const std::vector<long long>& ids, const std::vector<doub
   {
     return;
   }
-  value = std::isfinite(value) ? std::clamp(value, 0.0, 1.0) : 0.0;
+  value = clean_malleability(value);
   strength = std::isfinite(strength) ? std::clamp(strength, 0.0, 1.0) : 0.0;
   for (std::size_t i = 0; i < ids.size(); ++i)
   {

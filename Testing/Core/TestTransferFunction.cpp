@@ -76,3 +76,17 @@ TEST(TransferFunction, ValidateRejectsNonFiniteAndUnsortedCurves)
   tf.stretch.points = { { 0.5, 1.0 }, { 0.2, 2.0 } };
   EXPECT_STRNE(tf.validate(), "");
 }
+
+TEST(TransferFunction, AStoredMalleabilityIsReadOneWayNaNRigidTheRestClamped)
+{
+  using geoshaping::clean_malleability;
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(clean_malleability(std::numeric_limits<double>::quiet_NaN()), 0.0);
+  EXPECT_EQ(clean_malleability(-inf), 0.0);
+  EXPECT_EQ(clean_malleability(inf), 1.0);
+  EXPECT_EQ(clean_malleability(-0.2), 0.0);
+  EXPECT_EQ(clean_malleability(1.5), 1.0);
+  EXPECT_EQ(clean_malleability(0.3), 0.3);
+  EXPECT_EQ(clean_malleability(0.0), 0.0);
+  EXPECT_EQ(clean_malleability(1.0), 1.0);
+}

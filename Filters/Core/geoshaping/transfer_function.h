@@ -1,10 +1,21 @@
 #pragma once
 // Malleability (0 rigid ... 1 soft) -> ChainMail parameters (stretch, compression, shear).
+#include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
 namespace geoshaping
 {
+
+// How every reader of a stored malleability value takes it (DESIGN.md section 4): NaN
+// counts as rigid (0) and anything else is clamped to [0, 1] (+inf is soft, -inf rigid).
+// The one copy of the rule: the deformer, the error metrics, the paint filter and the
+// interactor's brush value all call it; callers that warn count the values it changed.
+inline double clean_malleability(double m)
+{
+  return std::isnan(m) ? 0.0 : std::clamp(m, 0.0, 1.0);
+}
 
 // The three Generalized ChainMail parameters of one vertex:
 // stretch t >= 1, compression k in [0, 1], shear h >= 0.
@@ -18,10 +29,10 @@ struct ChainMailParams
 // Shape of the curve between the value at m = 0 and the value at m = 1.
 enum class CurveShape
 {
-  linear,       // v0 + (v1 - v0) m
-  smooth,       // v0 + (v1 - v0) s(m), s = 3m^2 - 2m^3 (smoothstep)
-  step,         // v0 below the threshold, v1 at or above it
-  piecewise     // linear through user points (m_i, v_i), sorted by m, clamped at the ends
+  linear,   // v0 + (v1 - v0) m
+  smooth,   // v0 + (v1 - v0) s(m), s = 3m^2 - 2m^3 (smoothstep)
+  step,     // v0 below the threshold, v1 at or above it
+  piecewise // linear through user points (m_i, v_i), sorted by m, clamped at the ends
 };
 
 struct Curve
