@@ -2,7 +2,7 @@
 # The sanitizer job (issue 13 item 10), run by Testing/run-tests.sh after the Release
 # tests: a second, small build with AddressSanitizer + UndefinedBehaviorSanitizer
 # (-fno-sanitize-recover=all, leaks on) of the VTK-free core, the haptics layer, the two
-# readers (GeoShaping::IOGocad and IODEM, against ParaView's VTK) and their tests, and
+# readers (GeoShaping::IO, against ParaView's VTK) and their tests, and
 # the fuzz targets. With clang (libFuzzer) the fuzz targets fuzz for
 # GEOSHAPING_FUZZ_SECONDS (default 20) each; otherwise they replay their corpus.
 # Only the targets below are built: the plugin and the rendering tests stay in the

@@ -24,10 +24,10 @@
 #ifndef vtkGocadTSurfReader_h
 #define vtkGocadTSurfReader_h
 
-#include "GeoShapingIOGocadModule.h" // For export macro
+#include "GeoShapingIOModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class GEOSHAPINGIOGOCAD_EXPORT vtkGocadTSurfReader : public vtkPolyDataAlgorithm
+class GEOSHAPINGIO_EXPORT vtkGocadTSurfReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkGocadTSurfReader* New();

@@ -1,6 +1,6 @@
 /**
  * @file   vtkGocadTSurfText.h
- * @brief  Token and number helpers of the GOCAD TSurf parser (private to GeoShaping::IOGocad).
+ * @brief  Token and number helpers of the GOCAD TSurf parser (private to GeoShaping::IO).
  */
 #ifndef vtkGocadTSurfText_h
 #define vtkGocadTSurfText_h

@@ -21,12 +21,12 @@
 #ifndef vtkGocadTSurfWriter_h
 #define vtkGocadTSurfWriter_h
 
-#include "GeoShapingIOGocadModule.h" // For export macro
+#include "GeoShapingIOModule.h" // For export macro
 #include "vtkWriter.h"
 
 class vtkPolyData;
 
-class GEOSHAPINGIOGOCAD_EXPORT vtkGocadTSurfWriter : public vtkWriter
+class GEOSHAPINGIO_EXPORT vtkGocadTSurfWriter : public vtkWriter
 {
 public:
   static vtkGocadTSurfWriter* New();

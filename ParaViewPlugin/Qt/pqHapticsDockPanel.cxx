@@ -1,6 +1,5 @@
 #include "pqHapticsDockPanel.h"
 
-#include "pqHapticsTestHook.h"
 
 #include "geoshaping/brush.h"
 
@@ -65,7 +64,6 @@ pqHapticsDockPanel::pqHapticsDockPanel(QWidget* parent)
     &pqHapticsDockPanel::setPaintValue);
   QObject::connect(this->Interactor, &pqHapticsInteractor::editsChanged, this,
     &pqHapticsDockPanel::onEditsChanged);
-  pqHapticsTestHook::installIfRequested(this);
 }
 
 pqHapticsDockPanel::~pqHapticsDockPanel() = default;

@@ -8,6 +8,7 @@
 #include <pqRenderView.h>
 #include <pqServerManagerModel.h>
 
+#include "ContactPatch.h"
 #include "vtkGeoShapingAdapter.h"
 #include "vtkSMChainMailDeformationProxy.h"
 
@@ -330,7 +331,7 @@ void pqHapticsPipeline::contactTriangles(
     // The Frobenius norm bounds the inverse's largest stretch: a box that holds the ball.
     const double local = radius * inverse.topLeftCorner<3, 3>().norm();
     xyz.clear();
-    vtkGeoShapingAdapter::AppendTrianglesNear(
+    geoshaping::contact::AppendTrianglesNear(
       data, this->cellLocator(data), centre.data(), local, xyz);
     for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
     {

@@ -224,7 +224,7 @@ def main():
 
     scenes = {}
     j = config["jacksboro"]
-    # The plugin's source (C++, Filters/DEM); jacksboro.py is the numpy reference the tests
+    # The plugin's source (C++, Filters/IO); jacksboro.py is the numpy reference the tests
     # compare it with, and gives the lon/lat projection of the map-given dabs and grasp.
     dem = JacksboroFaultDEM(registrationName="Jacksboro", FileName=jacksboro.find_dem(),  # noqa: F405
                             Stride=2 if args.quick else 1)

@@ -1,4 +1,4 @@
-// libFuzzer target: the .npy parser of vtkNpzDEMReader (Filters/DEM) on any bytes, the
+// libFuzzer target: the .npy parser of vtkNpzDEMReader (Filters/IO) on any bytes, the
 // header and the data of one array without the zip around it.
 #include "vtkNpzDEMParser.h"
 

@@ -1,4 +1,4 @@
-// libFuzzer target: the .npz DEM reading of vtkNpzDEMReader (Filters/DEM) on any bytes:
+// libFuzzer target: the .npz DEM reading of vtkNpzDEMReader (Filters/IO) on any bytes:
 // the zip archive, its inflated .npy entries, the grid check and, for a grid that passes
 // it, the surface the reader builds (geoshaping::dem_surface).
 #include "vtkNpzDEMParser.h"

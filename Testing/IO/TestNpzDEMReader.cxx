@@ -60,6 +60,7 @@ struct ZipEntry
   std::string Data;
   bool Deflate = false;
   std::int64_t ClaimedSize = -1; // uncompressed size written in the headers; -1: the true one
+  bool WrongCrc = false;         // headers carry a CRC-32 that does not match the data
 };
 
 std::string Deflated(const std::string& data)
@@ -100,7 +101,8 @@ std::string Zip(const std::vector<ZipEntry>& entries)
     const auto size =
       static_cast<std::uint32_t>(e.ClaimedSize >= 0 ? e.ClaimedSize : std::int64_t(e.Data.size()));
     const auto crc = static_cast<std::uint32_t>(
-      crc32(0, reinterpret_cast<const Bytef*>(e.Data.data()), static_cast<uInt>(e.Data.size())));
+      crc32(0, reinterpret_cast<const Bytef*>(e.Data.data()), static_cast<uInt>(e.Data.size())) ^
+      (e.WrongCrc ? 1u : 0u));
     const auto offset = static_cast<std::uint32_t>(zip.size());
     Put32(zip, 0x04034b50u);
     Put16(zip, 20);
@@ -224,6 +226,18 @@ TEST(NpzDEMReader, RefusesAStoredEntryWhoseSizesDiffer)
   entries[0].ClaimedSize = 100000000;
   ExpectRefused(ReadNpz("dem_stored_sizes.npz", entries),
     "elevation.npy: a stored entry of 224 bytes claims 100000000 bytes uncompressed");
+}
+
+// A damaged entry whose bytes still parse (one bit of the elevations flipped on disk) gave
+// wrong heights silently while the reader skipped the CRC-32; libzip checks it.
+TEST(NpzDEMReader, RefusesAnEntryWhoseDataDoNotMatchItsCrc)
+{
+  for (const bool deflate : { false, true })
+  {
+    auto entries = Dem(Elevation3x4(), deflate);
+    entries[0].WrongCrc = true;
+    ExpectRefused(ReadNpz("dem_bad_crc.npz", entries), "elevation.npy: corrupt compressed data");
+  }
 }
 
 // UBSan: memcpy from/to a null pointer for an empty stored entry.

@@ -16,10 +16,10 @@
 #ifndef vtkLayeredFaultSceneSource_h
 #define vtkLayeredFaultSceneSource_h
 
-#include "GeoShapingFiltersPaintModule.h" // For export macro
+#include "GeoShapingFiltersSourcesModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class GEOSHAPINGFILTERSPAINT_EXPORT vtkLayeredFaultSceneSource : public vtkPolyDataAlgorithm
+class GEOSHAPINGFILTERSSOURCES_EXPORT vtkLayeredFaultSceneSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLayeredFaultSceneSource* New();

@@ -1,6 +1,6 @@
 /**
  * @file   vtkNpzDEMParser.h
- * @brief  VTK-free reading of NumPy `.npz` archives (zip + zlib + `.npy`), used by
+ * @brief  VTK-free reading of NumPy `.npz` archives (libzip + `.npy`), used by
  *         vtkNpzDEMReader and by the fuzz targets (Testing/Fuzz).
  *
  * Everything here throws std::runtime_error naming what is wrong (and std::bad_alloc when
@@ -13,19 +13,24 @@
 
 #include "geoshaping/dem_surface.h"
 
+#include <zip.h> // libzip
+
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <string>
 #include <vector>
 
-/// The entries of a .npz (a zip archive of .npy files), read through its central
-/// directory; stored and deflated entries, no ZIP64.
+/// The entries of a .npz (a zip archive of .npy files), read with libzip from the bytes in
+/// memory (central directory checked for consistency, CRC-32 checked on every read);
+/// stored and deflated entries.
 class vtkNpzArchive
 {
 public:
-  /// Parses the central directory of the archive `bytes` (the whole file).
+  /// Opens the archive `bytes` (the whole file); throws when libzip cannot.
   explicit vtkNpzArchive(std::vector<char> bytes);
+  ~vtkNpzArchive();
+  vtkNpzArchive(const vtkNpzArchive&) = delete;
+  vtkNpzArchive& operator=(const vtkNpzArchive&) = delete;
 
   /// The uncompressed bytes of entry `name`. A stored entry is as long as its data, a
   /// deflated one at most 1032 times as long plus 64 bytes (deflate's largest ratio):
@@ -33,16 +38,8 @@ public:
   std::vector<char> Read(const std::string& name) const;
 
 private:
-  struct Entry
-  {
-    std::uint16_t Method = 0;
-    std::uint32_t Compressed = 0, Size = 0, Local = 0;
-  };
-  void Need(std::size_t at, std::size_t count) const;
-  std::uint16_t U16(std::size_t at) const;
-  std::uint32_t U32(std::size_t at) const;
-  std::vector<char> Bytes;
-  std::map<std::string, Entry> Entries;
+  std::vector<char> Bytes; // libzip reads them in place
+  zip_t* Zip = nullptr;
 };
 
 /// A .npy array as doubles (little-endian or byte-sized integers and floats, C order).

@@ -1,13 +1,6 @@
 // VTK-free .npz/.npy reading of vtkNpzDEMReader (and of the fuzz targets in Testing/Fuzz).
 #include "vtkNpzDEMParser.h"
 
-// zlib through VTK's module inside VTK (the system's on Debian), the system's elsewhere.
-#if __has_include("vtk_zlib.h")
-#include "vtk_zlib.h"
-#else
-#include <zlib.h>
-#endif
-
 #include <charconv>
 #include <climits>
 #include <cstdint>
@@ -121,104 +114,71 @@ double Scalar(const vtkNpzArchive& npz, const std::string& key)
 vtkNpzArchive::vtkNpzArchive(std::vector<char> bytes)
   : Bytes(std::move(bytes))
 {
-  const std::size_t n = this->Bytes.size();
-  std::size_t eocd = std::string::npos;
-  for (std::size_t i = n >= 22 ? n - 22 : 0; n >= 22; --i)
+  zip_error_t error;
+  zip_error_init(&error);
+  // freep 0: the source reads this->Bytes in place and never frees them.
+  zip_source_t* source = zip_source_buffer_create(
+    this->Bytes.empty() ? nullptr : this->Bytes.data(), this->Bytes.size(), 0, &error);
+  if (source)
   {
-    if (this->U32(i) == 0x06054b50u)
-    {
-      eocd = i;
-      break;
-    }
-    if (i == 0 || n - i > 22 + 65535)
-      break;
+    this->Zip = zip_open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error);
+    if (!this->Zip)
+      zip_source_free(source);
   }
-  if (eocd == std::string::npos)
-    throw std::runtime_error("not a zip (.npz) archive: no end of central directory");
-  const std::uint16_t entries = this->U16(eocd + 10);
-  std::size_t at = this->U32(eocd + 16);
-  for (std::uint16_t e = 0; e < entries; ++e)
+  if (!this->Zip)
   {
-    if (this->U32(at) != 0x02014b50u)
-      throw std::runtime_error("damaged zip central directory");
-    Entry entry;
-    entry.Method = this->U16(at + 10);
-    entry.Compressed = this->U32(at + 20);
-    entry.Size = this->U32(at + 24);
-    const std::size_t name = this->U16(at + 28), extra = this->U16(at + 30),
-                      comment = this->U16(at + 32);
-    entry.Local = this->U32(at + 42);
-    this->Need(at + 46, name);
-    this->Entries[std::string(&this->Bytes[at + 46], name)] = entry;
-    at += 46 + name + extra + comment;
+    const std::string why = zip_error_strerror(&error);
+    zip_error_fini(&error);
+    throw std::runtime_error("not a zip (.npz) archive: " + why);
   }
+  zip_error_fini(&error);
+}
+
+vtkNpzArchive::~vtkNpzArchive()
+{
+  zip_discard(this->Zip); // read only: nothing to write back
 }
 
 std::vector<char> vtkNpzArchive::Read(const std::string& name) const
 {
-  auto it = this->Entries.find(name);
-  if (it == this->Entries.end())
+  zip_stat_t stat;
+  zip_stat_init(&stat);
+  if (zip_stat(this->Zip, name.c_str(), ZIP_FL_ENC_RAW, &stat) != 0)
     throw std::runtime_error("no entry " + name);
-  const Entry& e = it->second;
-  if (e.Compressed == 0xffffffffu || e.Size == 0xffffffffu)
-    throw std::runtime_error(name + ": ZIP64 entries are not supported");
-  if (this->U32(e.Local) != 0x04034b50u)
-    throw std::runtime_error(name + ": damaged local header");
-  const std::size_t data = e.Local + 30 + this->U16(e.Local + 26) + this->U16(e.Local + 28);
-  this->Need(data, e.Compressed);
-  if (e.Method == 0 && e.Compressed != e.Size)
-    throw std::runtime_error(name + ": a stored entry of " + std::to_string(e.Compressed) +
-                             " bytes claims " + std::to_string(e.Size) + " bytes uncompressed");
-  if (e.Method == 8 &&
-      std::uint64_t(e.Size) > DeflateMaxRatio * std::uint64_t(e.Compressed) + DeflateSlack)
-    throw std::runtime_error(name + ": the entry claims " + std::to_string(e.Size) +
-                             " bytes uncompressed from " + std::to_string(e.Compressed) +
+  constexpr zip_uint64_t needed = ZIP_STAT_SIZE | ZIP_STAT_COMP_SIZE | ZIP_STAT_COMP_METHOD;
+  if ((stat.valid & needed) != needed)
+    throw std::runtime_error(name + ": the archive does not give the entry's sizes");
+  const std::uint64_t size = stat.size, compressed = stat.comp_size;
+  // No entry holds more compressed bytes than the file (this also keeps the ratio
+  // bound below from overflowing).
+  if (compressed > this->Bytes.size())
+    throw std::runtime_error(name + ": truncated zip archive");
+  if (stat.comp_method != ZIP_CM_STORE && stat.comp_method != ZIP_CM_DEFLATE)
+    throw std::runtime_error(name + ": compression method " + std::to_string(stat.comp_method) +
+                             " is not supported (stored or deflated only)");
+  if (stat.comp_method == ZIP_CM_STORE && compressed != size)
+    throw std::runtime_error(name + ": a stored entry of " + std::to_string(compressed) +
+                             " bytes claims " + std::to_string(size) + " bytes uncompressed");
+  if (stat.comp_method == ZIP_CM_DEFLATE && size > DeflateMaxRatio * compressed + DeflateSlack)
+    throw std::runtime_error(name + ": the entry claims " + std::to_string(size) +
+                             " bytes uncompressed from " + std::to_string(compressed) +
                              " compressed bytes, more than deflate can produce (" +
                              std::to_string(DeflateMaxRatio) + " per byte)");
-  if (e.Method != 0 && e.Method != 8)
-    throw std::runtime_error(name + ": compression method " + std::to_string(e.Method) +
-                             " is not supported (stored or deflated only)");
-  std::vector<char> out(e.Size);
-  const char* in = this->Bytes.data() + data;
-  if (e.Method == 0)
-  {
-    if (e.Size > 0) // memcpy from or to a null pointer is undefined, even for 0 bytes
-      std::memcpy(out.data(), in, e.Size);
-    return out;
-  }
-  z_stream z{};
-  if (inflateInit2(&z, -MAX_WBITS) != Z_OK)
-    throw std::runtime_error(name + ": zlib inflateInit2 failed");
-  Bytef none = 0; // zlib refuses a null output buffer, even an empty one
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in));
-  z.avail_in = e.Compressed;
-  z.next_out = e.Size > 0 ? reinterpret_cast<Bytef*>(out.data()) : &none;
-  z.avail_out = e.Size;
-  const int status = inflate(&z, Z_FINISH);
-  const uLong produced = z.total_out;
-  inflateEnd(&z);
-  if (status != Z_STREAM_END || produced != e.Size)
-    throw std::runtime_error(name + ": corrupt deflate data");
+  std::vector<char> out(size);
+  zip_file_t* file = zip_fopen_index(this->Zip, stat.index, 0);
+  if (!file)
+    throw std::runtime_error(name + ": " + zip_strerror(this->Zip));
+  // One read of the claimed size, then one more byte: an entry must give exactly `size`
+  // bytes (libzip checks the CRC-32 at the end of the data).
+  const zip_int64_t got = size > 0 ? zip_fread(file, out.data(), size) : 0;
+  char extra = 0;
+  const zip_int64_t more = got == zip_int64_t(size) ? zip_fread(file, &extra, 1) : 0;
+  const std::string why = got < 0 || more < 0 ? zip_file_strerror(file) : "";
+  zip_fclose(file);
+  if (got != zip_int64_t(size) || more != 0)
+    throw std::runtime_error(
+      name + ": corrupt compressed data" + (why.empty() ? std::string() : " (" + why + ")"));
   return out;
-}
-
-void vtkNpzArchive::Need(std::size_t at, std::size_t count) const
-{
-  if (at > this->Bytes.size() || count > this->Bytes.size() - at)
-    throw std::runtime_error("truncated zip archive");
-}
-std::uint16_t vtkNpzArchive::U16(std::size_t at) const
-{
-  this->Need(at, 2);
-  const auto* b = reinterpret_cast<const unsigned char*>(&this->Bytes[at]);
-  return std::uint16_t(b[0] | (b[1] << 8));
-}
-std::uint32_t vtkNpzArchive::U32(std::size_t at) const
-{
-  this->Need(at, 4);
-  const auto* b = reinterpret_cast<const unsigned char*>(&this->Bytes[at]);
-  return std::uint32_t(b[0]) | (std::uint32_t(b[1]) << 8) | (std::uint32_t(b[2]) << 16) |
-         (std::uint32_t(b[3]) << 24);
 }
 
 std::vector<char> vtkNpzReadFile(const std::string& path)

@@ -9,22 +9,21 @@
 #ifndef vtkGeoShapingAdapter_h
 #define vtkGeoShapingAdapter_h
 
-#include "GeoShapingFiltersDeformationModule.h" // For export macro
-#include "vtkSmartPointer.h"                    // For vtkSmartPointer
+#include "GeoShapingAdapterModule.h" // For export macro
+#include "vtkSmartPointer.h"         // For vtkSmartPointer
 #include "vtkType.h"
 
 #include "geoshaping/adjacency.h" // For Adjacency
 
 #include <vector>
 
-class vtkAbstractCellLocator;
 class vtkCellArray;
 class vtkDataArray;
 class vtkDataSet;
 class vtkPointSet;
 class vtkPoints;
 
-class GEOSHAPINGFILTERSDEFORMATION_EXPORT vtkGeoShapingAdapter
+class GEOSHAPINGADAPTER_EXPORT vtkGeoShapingAdapter
 {
 public:
   /// The core cell kind for a VTK cell type (`unsupported` for higher-order and
@@ -54,14 +53,6 @@ public:
   /// Modification time of the geometry and connectivity (points and cells), ignoring
   /// point and cell data so that repainting an array does not rebuild adjacency.
   static vtkMTimeType GeometryTime(vtkPointSet* input);
-
-  /// Appends to `xyz` (9 doubles per triangle) the triangles of the surface cells of
-  /// `surface` that `locator` (built on it) finds in the box of half-size `radius`
-  /// around `center`: triangles, quads, pixels, polygons (as fans) and strips; other
-  /// cells (lines, volumes) are skipped. For the haptic contact patch (docs/haptics.md).
-  /// Returns the number of triangles appended.
-  static vtkIdType AppendTrianglesNear(vtkDataSet* surface, vtkAbstractCellLocator* locator,
-    const double center[3], double radius, std::vector<double>& xyz);
 };
 
 #endif

@@ -1,6 +1,6 @@
-// vtkGeoShapingAdapter::AppendTrianglesNear (the haptic contact patch) against a
-// brute-force scan of every cell's bounds.
-#include "vtkGeoShapingAdapter.h"
+// geoshaping::contact::AppendTrianglesNear (the haptic contact patch, ParaViewPlugin/Qt)
+// against a brute-force scan of every cell's bounds.
+#include "ContactPatch.h"
 
 #include "vtk_test_meshes.h"
 
@@ -20,7 +20,7 @@
 
 namespace
 {
-// Triangles a cell of this type with n points gives, the way the adapter cuts it.
+// Triangles a cell of this type with n points gives, the way the contact patch cuts it.
 int trianglesOf(int type, vtkIdType n)
 {
   switch (type)
@@ -54,7 +54,7 @@ vtkIdType bruteForce(vtkDataSet* data, const double c[3], double r)
 }
 } // namespace
 
-TEST(GeoShapingAdapter, TrianglesNearAPointAreThoseABruteForceScanFinds)
+TEST(ContactPatch, TrianglesNearAPointAreThoseABruteForceScanFinds)
 {
   // A 40 x 30 triangle grid plus, beside it, a quad, a pentagon, a pixel, a strip of
   // 5 points and a line (skipped).
@@ -90,7 +90,7 @@ TEST(GeoShapingAdapter, TrianglesNearAPointAreThoseABruteForceScanFinds)
   {
     std::vector<double> xyz = { 1.0, 2.0 }; // appended to, not replaced
     const vtkIdType n =
-      vtkGeoShapingAdapter::AppendTrianglesNear(grid, locator, query.data(), query[3], xyz);
+      geoshaping::contact::AppendTrianglesNear(grid, locator, query.data(), query[3], xyz);
     EXPECT_EQ(n, bruteForce(grid, query.data(), query[3])) << query[0] << " " << query[1];
     ASSERT_EQ(xyz.size(), 2 + 9 * std::size_t(n));
     EXPECT_EQ(xyz[0], 1.0);
@@ -106,13 +106,13 @@ TEST(GeoShapingAdapter, TrianglesNearAPointAreThoseABruteForceScanFinds)
   std::vector<double> xyz;
   // 2.5 around (10.2, 10.7) on a unit grid: 6 x 6 squares (x 8..13, y 8..13 once
   // bounds touching the box count), 2 triangles each
-  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(grid, locator, c, 2.5, xyz), 2 * 6 * 6);
-  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(grid, locator, c, std::nan(""), xyz), 0);
-  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(grid, locator, c, -1.0, xyz), 0);
-  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(nullptr, locator, c, 1.0, xyz), 0);
+  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(grid, locator, c, 2.5, xyz), 2 * 6 * 6);
+  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(grid, locator, c, std::nan(""), xyz), 0);
+  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(grid, locator, c, -1.0, xyz), 0);
+  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(nullptr, locator, c, 1.0, xyz), 0);
 }
 
-TEST(GeoShapingAdapter, VolumeCellsGiveNoContactTriangles)
+TEST(ContactPatch, VolumeCellsGiveNoContactTriangles)
 {
   vtkNew<vtkPoints> p;
   p->InsertNextPoint(0, 0, 0);
@@ -128,6 +128,6 @@ TEST(GeoShapingAdapter, VolumeCellsGiveNoContactTriangles)
   locator->BuildLocator();
   const double c[3] = { 0.2, 0.2, 0.2 };
   std::vector<double> xyz;
-  EXPECT_EQ(vtkGeoShapingAdapter::AppendTrianglesNear(ug, locator, c, 1.0, xyz), 0);
+  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(ug, locator, c, 1.0, xyz), 0);
   EXPECT_TRUE(xyz.empty());
 }

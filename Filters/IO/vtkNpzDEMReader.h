@@ -23,10 +23,10 @@
 #ifndef vtkNpzDEMReader_h
 #define vtkNpzDEMReader_h
 
-#include "GeoShapingIODEMModule.h" // For export macro
+#include "GeoShapingIOModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class GEOSHAPINGIODEM_EXPORT vtkNpzDEMReader : public vtkPolyDataAlgorithm
+class GEOSHAPINGIO_EXPORT vtkNpzDEMReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkNpzDEMReader* New();

@@ -23,10 +23,10 @@
 #ifndef vtkFaultStepHorizonSource_h
 #define vtkFaultStepHorizonSource_h
 
-#include "GeoShapingFiltersPaintModule.h" // For export macro
+#include "GeoShapingFiltersSourcesModule.h" // For export macro
 #include "vtkPointSetAlgorithm.h"
 
-class GEOSHAPINGFILTERSPAINT_EXPORT vtkFaultStepHorizonSource : public vtkPointSetAlgorithm
+class GEOSHAPINGFILTERSSOURCES_EXPORT vtkFaultStepHorizonSource : public vtkPointSetAlgorithm
 {
 public:
   static vtkFaultStepHorizonSource* New();
