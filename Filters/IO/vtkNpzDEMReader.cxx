@@ -17,7 +17,6 @@
 
 #include "geoshaping/dem_surface.h"
 
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -25,11 +24,18 @@ vtkStandardNewMacro(vtkNpzDEMReader);
 
 namespace
 {
-// The surface of a validated grid, with its Elevation, LonLatBounds and Projection.
-void FillOutput(vtkPolyData* output, const geoshaping::GeographicGrid& grid, int stride,
-  const geoshaping::LocalProjection& projection)
+// The surface of the grid, with its Elevation, LonLatBounds and Projection; throws with
+// the reason when the grid or its projection cannot make one.
+void FillOutput(vtkPolyData* output, const geoshaping::GeographicGrid& grid, int stride)
 {
-  const geoshaping::SampleMesh mesh = geoshaping::dem_surface(grid, stride, projection);
+  if (const char* why = geoshaping::validate(grid, stride); *why)
+    throw std::runtime_error(why);
+  const vtkNpzUtmProjection utm(grid);
+  std::string why;
+  const geoshaping::SampleMesh mesh = geoshaping::dem_surface(
+    grid, stride, [&utm](std::size_t n, double* x, double* y) { return utm(n, x, y); }, &why);
+  if (mesh.xyz.empty())
+    throw std::runtime_error(why);
   output->SetPoints(vtkGeoShapingAdapter::MakePoints(mesh.xyz));
   output->SetPolys(vtkGeoShapingAdapter::MakeCells(mesh.connectivity, 3));
   vtkNew<vtkDoubleArray> elevation;
@@ -45,12 +51,8 @@ void FillOutput(vtkPolyData* output, const geoshaping::GeographicGrid& grid, int
   output->GetFieldData()->AddArray(bounds);
   vtkNew<vtkStringArray> about;
   about->SetName("Projection");
-  std::ostringstream text;
-  text.precision(17);
-  text << "local equirectangular about the grid centre, R = " << projection.earth_radius
-       << " m, centre at " << projection.centre_easting << " E " << projection.centre_northing
-       << " N; z = elevation (m); stride " << stride;
-  about->InsertNextValue(text.str());
+  about->InsertNextValue(
+    utm.GetDescription() + "; z = elevation (m); stride " + std::to_string(stride));
   output->GetFieldData()->AddArray(about);
 }
 } // namespace
@@ -58,9 +60,6 @@ void FillOutput(vtkPolyData* output, const geoshaping::GeographicGrid& grid, int
 vtkNpzDEMReader::vtkNpzDEMReader()
 {
   this->SetNumberOfInputPorts(0);
-  const geoshaping::LocalProjection defaults;
-  this->CentreEasting = defaults.centre_easting;
-  this->CentreNorthing = defaults.centre_northing;
 }
 
 vtkNpzDEMReader::~vtkNpzDEMReader()
@@ -82,12 +81,7 @@ int vtkNpzDEMReader::RequestData(
   {
     const vtkNpzArchive npz(vtkNpzReadFile(this->FileName));
     const geoshaping::GeographicGrid grid = vtkNpzDEMParse(npz);
-    geoshaping::LocalProjection projection;
-    projection.centre_easting = this->CentreEasting;
-    projection.centre_northing = this->CentreNorthing;
-    if (const char* why = geoshaping::validate(grid, this->Stride, projection); *why)
-      throw std::runtime_error(why);
-    FillOutput(output, grid, this->Stride, projection);
+    FillOutput(output, grid, this->Stride);
   }
   catch (const std::exception& e)
   {
@@ -103,6 +97,4 @@ void vtkNpzDEMReader::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "Stride: " << this->Stride << "\n";
-  os << indent << "CentreEasting: " << this->CentreEasting << "\n";
-  os << indent << "CentreNorthing: " << this->CentreNorthing << "\n";
 }

@@ -7,14 +7,13 @@
  * row and column, in either order — any little-endian integer or float type, C order)
  * and the scalars `xmin xmax ymin ymax` (degrees), the layout of matplotlib's
  * sample DEM `jacksboro_fault_dem.npz` (Debian: python-matplotlib-data). The output is a
- * triangulated vtkPolyData in double precision: a local equirectangular projection
- * about the grid's centre, offset to (CentreEasting, CentreNorthing) — by default
- * (745,000, 4,055,000) m, where UTM zone 16N puts the Jacksboro fault zone — with the
- * elevation in metres as z and as the point array `Elevation`; the field data keeps the
- * bounds (`LonLatBounds`) and the projection (`Projection`). Every Stride-th row and
- * column is kept. docs/painting.md has the formula and its accuracy.
+ * triangulated vtkPolyData in double precision, in the UTM zone of the grid's centre
+ * (WGS84, projected with PROJ: the Jacksboro fault zone lands in zone 16N at about
+ * 745,000 E, 4,055,000 N), with the elevation in metres as z and as the point array
+ * `Elevation`; the field data keeps the bounds (`LonLatBounds`) and the projection
+ * (`Projection`). Every Stride-th row and column is kept. docs/painting.md.
  *
- * The archive is read with zlib (stored and deflated entries); a damaged or
+ * The archive is read with libzip (stored and deflated entries, CRC checked); a damaged or
  * unsupported file gives an error naming the entry and an empty output. Sizes read from
  * the file are checked against what it can hold before any allocation (a deflated entry
  * at most 1032 x its compressed size), .npy headers must be exact, and no exception
@@ -40,12 +39,6 @@ public:
   vtkSetClampMacro(Stride, int, 1, VTK_INT_MAX);
   vtkGetMacro(Stride, int);
 
-  /// Where the grid's centre lands, metres (default 745,000 E, 4,055,000 N).
-  vtkSetMacro(CentreEasting, double);
-  vtkGetMacro(CentreEasting, double);
-  vtkSetMacro(CentreNorthing, double);
-  vtkGetMacro(CentreNorthing, double);
-
 protected:
   vtkNpzDEMReader();
   ~vtkNpzDEMReader() override;
@@ -53,8 +46,6 @@ protected:
 
   char* FileName = nullptr;
   int Stride = 1;
-  double CentreEasting;
-  double CentreNorthing;
 
 private:
   vtkNpzDEMReader(const vtkNpzDEMReader&) = delete;

@@ -2,11 +2,9 @@
 
 Source: Debian's python-matplotlib-data, ``sample_data/jacksboro_fault_dem.npz``
 (344 x 403 int16 elevations in metres, 3 arc-second spacing, lon -84.41..-84.08,
-lat 36.45..36.73). Projection: a local equirectangular projection about the DEM
-centre (x east = R cos(lat0) dlon, y north = R dlat, R = 6,371,008.8 m), offset so the
-centre lands at the UTM-sized position (745,000 m E, 4,055,000 m N), close to where UTM
-zone 16N puts it. Good to about 0.1 % in distances over the 30 km tile: enough to
-shape the surface, not a survey-grade UTM conversion.
+lat 36.45..36.73). Projection: the UTM zone of the DEM centre (16N here, WGS84) with
+pyproj (Debian's python3-pyproj), independently of the plugin's C++ reader, which asks
+PROJ for the same ``+proj=utm +zone=16 +ellps=WGS84``.
 
 ``jacksboro_polydata()`` works in pvpython/pvbatch. (ParaView 5.11's Python-plugin
 loader is broken on Debian's Python 3.11 -- it imports inspect.getargspec -- so this is
@@ -17,12 +15,10 @@ import math
 import os
 
 import numpy as np
+import pyproj
 from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-
-EARTH_RADIUS = 6371008.8
-CENTRE_EN = (745000.0, 4055000.0)
 
 
 def find_dem():
@@ -40,15 +36,18 @@ def find_dem():
     raise FileNotFoundError("jacksboro_fault_dem.npz not found: install python-matplotlib-data")
 
 
-def lonlat_to_scene(lon, lat, path=None):
-    """Scene metres (x east, y north) of lon/lat degrees (scalars or numpy arrays), in the
-    projection about the centre of the full DEM (whatever stride the surface uses)."""
+def utm_of(path=None):
+    """The UTM projection (WGS84) of the zone of the full DEM's centre, as pyproj.Proj."""
     dem = np.load(path or find_dem())
     lon0 = 0.5 * (float(dem["xmin"]) + float(dem["xmax"]))
     lat0 = 0.5 * (float(dem["ymin"]) + float(dem["ymax"]))
-    x = CENTRE_EN[0] + np.radians(np.asarray(lon) - lon0) * EARTH_RADIUS * math.cos(math.radians(lat0))
-    y = CENTRE_EN[1] + np.radians(np.asarray(lat) - lat0) * EARTH_RADIUS
-    return x, y
+    zone = min(60, max(1, int(math.floor((lon0 + 180.0) / 6.0)) + 1))
+    return pyproj.Proj("+proj=utm +zone=%d%s +ellps=WGS84" % (zone, " +south" if lat0 < 0 else ""))
+
+
+def lonlat_to_scene(lon, lat, path=None):
+    """Scene metres (easting, northing) of lon/lat degrees (scalars or numpy arrays)."""
+    return utm_of(path)(np.asarray(lon, dtype=np.float64), np.asarray(lat, dtype=np.float64))
 
 
 def jacksboro_polydata(path=None, stride=1):
@@ -59,9 +58,9 @@ def jacksboro_polydata(path=None, stride=1):
     rows, cols = z.shape
     lon = np.linspace(float(dem["xmin"]), float(dem["xmax"]), dem["elevation"].shape[1])[::stride]
     lat = np.linspace(float(dem["ymin"]), float(dem["ymax"]), dem["elevation"].shape[0])[::stride]
-    x, y = lonlat_to_scene(lon, lat, path)
-    xx, yy = np.meshgrid(x, y)
-    xyz = np.column_stack([xx.ravel(), yy.ravel(), z.ravel()])
+    lons, lats = np.meshgrid(lon, lat)
+    x, y = lonlat_to_scene(lons.ravel(), lats.ravel(), path)
+    xyz = np.column_stack([x, y, z.ravel()])
 
     ids = np.arange(rows * cols).reshape(rows, cols)
     a, b = ids[:-1, :-1].ravel(), ids[:-1, 1:].ravel()

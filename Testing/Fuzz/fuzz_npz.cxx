@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <string>
 #include <vector>
 
 namespace
@@ -34,15 +35,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   Require(grid.rows >= 0 && grid.cols >= 0);
   Require(grid.elevation.size() == std::size_t(grid.rows) * std::size_t(grid.cols));
-  const geoshaping::LocalProjection projection;
   // The surface of large grids (a few KB of zeros deflate to millions of samples) is
   // linear work the fuzzer need not repeat: built for grids up to 65,536 samples.
   const bool small = grid.elevation.size() <= 65536;
   for (const geoshaping::index_t stride : { 1, 2 })
   {
-    if (*geoshaping::validate(grid, stride, projection) || !small)
+    if (*geoshaping::validate(grid, stride) || !small)
       continue;
-    const geoshaping::SampleMesh mesh = geoshaping::dem_surface(grid, stride, projection);
+    // As the reader: the grid's UTM zone through PROJ; a projection that fails or gives
+    // infinite coordinates is an empty mesh with a reason, never non-finite points.
+    const vtkNpzUtmProjection utm(grid);
+    std::string why;
+    const geoshaping::SampleMesh mesh = geoshaping::dem_surface(
+      grid, stride, [&utm](std::size_t n, double* x, double* y) { return utm(n, x, y); }, &why);
+    if (mesh.xyz.empty())
+    {
+      Require(!why.empty());
+      continue;
+    }
     const std::size_t rows = std::size_t(grid.rows - 1) / stride + 1;
     const std::size_t cols = std::size_t(grid.cols - 1) / stride + 1;
     Require(mesh.xyz.size() == 3 * rows * cols);

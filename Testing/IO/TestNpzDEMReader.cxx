@@ -4,9 +4,11 @@
 // rather than allocating gigabytes).
 #include "GocadTestUtilities.h"
 
+#include "vtkFieldData.h"
 #include "vtkNpzDEMReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
 
 #include "vtk_zlib.h"
 
@@ -228,6 +230,34 @@ TEST(NpzDEMReader, RefusesAStoredEntryWhoseSizesDiffer)
     "elevation.npy: a stored entry of 224 bytes claims 100000000 bytes uncompressed");
 }
 
+// The projection is UTM through PROJ, checked where transverse Mercator is exact by
+// construction: a 3 x 3 grid centred on zone 16's central meridian (87 W) and the
+// equator puts its centre at 500,000 E, 0 N (the false easting), its columns symmetric
+// about it, and its rows symmetric about the equator (north of it, northings grow).
+TEST(NpzDEMReader, ProjectsToTheUtmZoneOfTheGridCentreWithProj)
+{
+  const std::string nine =
+    Npy("<f8", "False", "3, 3", Bytes(std::vector<double>{ 1, 2, 3, 4, 5, 6, 7, 8, 9 }));
+  const auto r = ReadNpz("dem_utm.npz", Dem(nine, false, -87.5, -86.5, 0.5, -0.5));
+  EXPECT_EQ(r.Errors, "");
+  ASSERT_EQ(r.Output->GetNumberOfPoints(), 9);
+  double p[9][3];
+  for (int i = 0; i < 9; ++i)
+    r.Output->GetPoint(i, p[i]);
+  EXPECT_NEAR(p[4][0], 500000.0, 1e-6);
+  EXPECT_NEAR(p[4][1], 0.0, 1e-6);
+  EXPECT_NEAR(p[3][0] - 500000.0, 500000.0 - p[5][0], 1e-6); // columns 87.5 W, 86.5 W
+  EXPECT_NEAR(p[1][1], -p[7][1], 1e-6);                      // rows 0.5 N, 0.5 S
+  // Half a degree of longitude at the equator, scale 0.9996 on the central meridian:
+  // about 55.6 km; half a degree of latitude about 55.3 km.
+  EXPECT_NEAR(500000.0 - p[3][0], 55640.0, 100.0);
+  EXPECT_NEAR(p[1][1], 55270.0, 100.0);
+  auto* about =
+    vtkStringArray::SafeDownCast(r.Output->GetFieldData()->GetAbstractArray("Projection"));
+  ASSERT_NE(about, nullptr);
+  EXPECT_EQ(about->GetValue(0).rfind("UTM zone 16N (WGS84, PROJ ", 0), 0u) << about->GetValue(0);
+}
+
 // A damaged entry whose bytes still parse (one bit of the elevations flipped on disk) gave
 // wrong heights silently while the reader skipped the CRC-32; libzip checks it.
 TEST(NpzDEMReader, RefusesAnEntryWhoseDataDoNotMatchItsCrc)
@@ -295,9 +325,8 @@ std::vector<BadNpy> BadNpys()
       "elevation.npy: 96 bytes of data for 9 values of 8 bytes" },
     { "PayloadShorterThanTheShape", Dem(Npy("<f8", "False", "3, 5", Twelve())),
       "elevation.npy: 96 bytes of data for 15 values of 8 bytes" },
-    // Finite bounds whose projected coordinates are not: x = R cos(lat) (lon - lon0).
-    { "InfiniteCoordinates", Dem(Elevation3x4(), false, -1e308, 1e308),
-      "coordinates must be finite" },
+    // Finite bounds whose span is not.
+    { "InfiniteSpan", Dem(Elevation3x4(), false, -1e308, 1e308), "spans must be finite" },
   };
 }
 
