@@ -1,7 +1,7 @@
 #pragma once
 // The haptic contact patch (docs/haptics.md): the triangles of a shown surface near the
 // stylus, handed to the haptics layer's force model each frame. VTK only, no Qt; the
-// dock's pipeline (pqHapticsPipeline) is its one user, Testing/GUI/TestContactPatch its test.
+// dock's proxy facade (pqHapticsProxies) is its one user, Testing/GUI/TestContactPatch its test.
 #include <vtkType.h>
 
 #include <vector>

@@ -1,6 +1,5 @@
 #include "pqHapticsDockPanel.h"
 
-
 #include "geoshaping/brush.h"
 
 #include <pqCoreUtilities.h>
@@ -24,7 +23,7 @@
 
 #include <dlfcn.h>
 
-namespace gi = geoshaping::interactor;
+namespace interactor = geoshaping::interactor;
 using Kind = pqHapticsInteractor::DeviceKind;
 
 namespace
@@ -136,7 +135,7 @@ void pqHapticsDockPanel::build()
   QObject::connect(this->Radius, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
     [this](double radius)
     {
-      gi::Brush b = this->Interactor->brush();
+      interactor::Brush b = this->Interactor->brush();
       b.radius = radius;
       this->Interactor->setBrush(b);
     });
@@ -167,9 +166,9 @@ QWidget* pqHapticsDockPanel::buildHand(int hand)
   fileRow->addWidget(w.file);
   fileRow->addWidget(browse);
   w.tool = new QComboBox(box);
-  w.tool->addItem("Paint", int(gi::Tool::paint));
-  w.tool->addItem("Deform", int(gi::Tool::deform));
-  w.tool->addItem("Hold and turn", int(gi::Tool::hold_and_turn));
+  w.tool->addItem("Paint", int(interactor::Tool::paint));
+  w.tool->addItem("Deform", int(interactor::Tool::deform));
+  w.tool->addItem("Hold and turn", int(interactor::Tool::hold_and_turn));
   w.tool->setCurrentIndex(hand == 0 ? 1 : 2);
   form->addRow(QString("<b>Hand %1</b> device").arg(hand + 1), w.device);
   form->addRow("Trace", fileRow);
@@ -187,7 +186,10 @@ QWidget* pqHapticsDockPanel::buildHand(int hand)
     });
   QObject::connect(w.tool, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
     [this, hand]()
-    { this->Interactor->setTool(hand, gi::Tool(this->Hands[hand].tool->currentData().toInt())); });
+    {
+      this->Interactor->setTool(
+        hand, interactor::Tool(this->Hands[hand].tool->currentData().toInt()));
+    });
   return box;
 }
 
@@ -227,14 +229,14 @@ QWidget* pqHapticsDockPanel::buildEdits()
     QPushButton** button;
     const char* text;
     const char* name;
-    gi::EditCommand command;
+    interactor::EditCommand command;
     const char* tip;
   } buttons[] = {
-    { &this->Undo, "Undo", "UndoEdit", gi::EditCommand::undo,
+    { &this->Undo, "Undo", "UndoEdit", interactor::EditCommand::undo,
       "Undo the last committed edit (Alt+Z while the interactor runs)" },
-    { &this->Redo, "Redo", "RedoEdit", gi::EditCommand::redo,
+    { &this->Redo, "Redo", "RedoEdit", interactor::EditCommand::redo,
       "Redo the last undone edit (Alt+Shift+Z or Alt+Y while the interactor runs)" },
-    { &this->Reset, "Reset", "ResetEdits", gi::EditCommand::reset,
+    { &this->Reset, "Reset", "ResetEdits", interactor::EditCommand::reset,
       "Back to the original surface; every edit stays redoable" },
   };
   int column = 0;
@@ -256,10 +258,10 @@ QWidget* pqHapticsDockPanel::buildEdits()
   // Alt, not Ctrl: ParaView's own undo stack owns Ctrl+Z / Ctrl+Y (Edit menu). Enabled
   // only while the interactor runs, so they never shadow anything otherwise.
   QWidget* window = pqCoreUtilities::mainWidget();
-  const std::pair<const char*, gi::EditCommand> keys[] = {
-    { "Alt+Z", gi::EditCommand::undo },
-    { "Alt+Shift+Z", gi::EditCommand::redo },
-    { "Alt+Y", gi::EditCommand::redo },
+  const std::pair<const char*, interactor::EditCommand> keys[] = {
+    { "Alt+Z", interactor::EditCommand::undo },
+    { "Alt+Shift+Z", interactor::EditCommand::redo },
+    { "Alt+Y", interactor::EditCommand::redo },
   };
   for (const auto& key : keys)
   {
@@ -277,12 +279,12 @@ QWidget* pqHapticsDockPanel::buildEdits()
 
 void pqHapticsDockPanel::runEdit(int command)
 {
-  this->Interactor->runEdit(gi::EditCommand(command));
+  this->Interactor->runEdit(interactor::EditCommand(command));
 }
 
 void pqHapticsDockPanel::onEditsChanged()
 {
-  const gi::EditResult& r = this->Interactor->lastEditResult();
+  const interactor::EditResult& r = this->Interactor->lastEditResult();
   QString text = QString("Edits: %1, redoable %2").arg(r.edits).arg(r.redoable);
   if (!r.message.empty())
   {
@@ -293,7 +295,7 @@ void pqHapticsDockPanel::onEditsChanged()
 
 void pqHapticsDockPanel::setPaintValue(double value)
 {
-  gi::Brush b = this->Interactor->brush();
+  interactor::Brush b = this->Interactor->brush();
   b.value = value;
   this->Interactor->setBrush(b);
   for (QToolButton* swatch : this->Swatches)
@@ -305,7 +307,7 @@ void pqHapticsDockPanel::setPaintValue(double value)
 }
 
 void pqHapticsDockPanel::setHand(
-  int hand, pqHapticsInteractor::DeviceKind device, const QString& file, gi::Tool tool)
+  int hand, pqHapticsInteractor::DeviceKind device, const QString& file, interactor::Tool tool)
 {
   HandWidgets& w = this->Hands[hand];
   w.device->setCurrentIndex(w.device->findData(device));
@@ -327,7 +329,7 @@ bool pqHapticsDockPanel::start()
   {
     setups[i].device = Kind(this->Hands[i].device->currentData().toInt());
     setups[i].file = this->Hands[i].file->text();
-    setups[i].tool = gi::Tool(this->Hands[i].tool->currentData().toInt());
+    setups[i].tool = interactor::Tool(this->Hands[i].tool->currentData().toInt());
     if (!record.isEmpty())
     {
       setups[i].record =

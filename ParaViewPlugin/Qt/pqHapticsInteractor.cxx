@@ -22,34 +22,34 @@
 #include <algorithm>
 #include <cmath>
 
-namespace gi = geoshaping::interactor;
-namespace gh = geoshaping::haptics;
+namespace interactor = geoshaping::interactor;
+namespace haptics = geoshaping::haptics;
 
 struct pqHapticsInteractor::Hand
 {
   DeviceKind kind = NoDevice;
-  gi::Tool tool = gi::Tool::deform; // chosen in the dock; Ctrl in mouse mode paints
-  std::unique_ptr<gh::HapticDevice> device;
-  std::unique_ptr<gh::ServoLoop> servo;
+  interactor::Tool tool = interactor::Tool::deform; // chosen in the dock; Ctrl in mouse mode paints
+  std::unique_ptr<haptics::HapticDevice> device;
+  std::unique_ptr<haptics::ServoLoop> servo;
   pqHapticsMouse mouse;
-  gi::HandController controller;
-  gh::DeviceSnapshot latest;
-  gi::WorkspaceMapping mapping;  // frozen while the button is held
-  gh::FreeSide freeSide;         // where the stylus was last out of contact (device frame)
-  gh::SceneSnapshot sent;        // a copy of the last scene published to the servo loop
-  bool stiffnessPending = false; // the grasp's malleability still to read from the server
-  gh::TraceRecorder recorder;    // open when the hand records its stylus
-  double recordedUntil = -1.0;   // t of the last recorded sample
+  interactor::HandController controller;
+  haptics::DeviceSnapshot latest;
+  interactor::WorkspaceMapping mapping; // frozen while the button is held
+  haptics::FreeSide freeSide;           // where the stylus was last out of contact (device frame)
+  haptics::SceneSnapshot sent;          // a copy of the last scene published to the servo loop
+  bool stiffnessPending = false;        // the grasp's malleability still to read from the server
+  haptics::TraceRecorder recorder;      // open when the hand records its stylus
+  double recordedUntil = -1.0;          // t of the last recorded sample
   std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
   Eigen::Vector3d anchor = Eigen::Vector3d::Zero(); // device frame
   double stiffness = 0.0;
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkPolyDataMapper> mapper;
   vtkNew<vtkActor> cursor;
-  gi::StylusPalette palette; // device hands: shown while the second button is held
+  interactor::StylusPalette palette; // device hands: shown while the second button is held
   vtkNew<vtkSphereSource> swatchSphere;
   vtkNew<vtkPolyDataMapper> swatchMapper;
-  std::array<vtkNew<vtkActor>, gi::StylusPalette::count> swatches;
+  std::array<vtkNew<vtkActor>, interactor::StylusPalette::count> swatches;
   vtkWeakPointer<vtkRenderer> renderer;
 
   Hand()
@@ -62,9 +62,9 @@ struct pqHapticsInteractor::Hand
     this->swatchSphere->SetThetaResolution(16);
     this->swatchSphere->SetPhiResolution(12);
     this->swatchMapper->SetInputConnection(this->swatchSphere->GetOutputPort());
-    for (int i = 0; i < gi::StylusPalette::count; ++i)
+    for (int i = 0; i < interactor::StylusPalette::count; ++i)
     {
-      const Eigen::Vector3d c = geoshaping::malleability_color(gi::StylusPalette::value(i));
+      const Eigen::Vector3d c = geoshaping::malleability_color(interactor::StylusPalette::value(i));
       this->swatches[i]->SetMapper(this->swatchMapper);
       this->swatches[i]->GetProperty()->SetColor(c.x(), c.y(), c.z());
       this->swatches[i]->PickableOff();
@@ -106,9 +106,9 @@ struct pqHapticsInteractor::Hand
   // The 3D palette's swatches where the palette says, in the scene.
   void showPalette()
   {
-    const double size = gi::StylusPalette::radius * this->mapping.scale();
+    const double size = interactor::StylusPalette::radius * this->mapping.scale();
     this->swatchSphere->SetRadius(size);
-    for (int i = 0; i < gi::StylusPalette::count; ++i)
+    for (int i = 0; i < interactor::StylusPalette::count; ++i)
     {
       const Eigen::Vector3d c = this->mapping.to_scene(this->palette.centre(i));
       this->swatches[i]->SetPosition(c.x(), c.y(), c.z());
@@ -148,8 +148,8 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
     if (setup.device != Mouse)
     {
       const char* kinds[] = { "null", "replay", "simulated", "openhaptics" };
-      hand->device = gh::make_device(kinds[setup.device], setup.file.toStdString());
-      hand->servo = std::make_unique<gh::ServoLoop>(*hand->device);
+      hand->device = haptics::make_device(kinds[setup.device], setup.file.toStdString());
+      hand->servo = std::make_unique<haptics::ServoLoop>(*hand->device);
       if (!hand->servo->start())
       {
         error = QString("Hand %1: %2").arg(i + 1).arg(QString::fromStdString(hand->servo->error()));
@@ -181,10 +181,10 @@ void pqHapticsInteractor::stop()
   {
     hand.reset();
   }
-  this->Pipeline.render();
+  this->Proxies.render();
 }
 
-void pqHapticsInteractor::setTool(int hand, gi::Tool tool)
+void pqHapticsInteractor::setTool(int hand, interactor::Tool tool)
 {
   if (hand >= 0 && hand < 2 && this->Hands[hand])
   {
@@ -200,7 +200,7 @@ bool pqHapticsInteractor::replaysFinished() const
   {
     if (hand && hand->device)
     {
-      auto* replay = dynamic_cast<const gh::ReplayDevice*>(hand->device.get());
+      auto* replay = dynamic_cast<const haptics::ReplayDevice*>(hand->device.get());
       if (!replay || !replay->finished())
       {
         return false;
@@ -212,7 +212,7 @@ bool pqHapticsInteractor::replaysFinished() const
 }
 
 bool pqHapticsInteractor::stylusOf(
-  Hand& hand, const gi::WorkspaceMapping& mapping, gi::StylusState& world)
+  Hand& hand, const interactor::WorkspaceMapping& mapping, interactor::StylusState& world)
 {
   if (hand.kind == Mouse)
   {
@@ -225,44 +225,44 @@ bool pqHapticsInteractor::stylusOf(
     hand.mapping = mapping;
     this->Stats.sceneUnitsPerMetre = mapping.scale();
   }
-  const gh::DeviceSample& sample = hand.latest.sample;
+  const haptics::DeviceSample& sample = hand.latest.sample;
   world.position = hand.mapping.to_scene(sample.position);
   world.orientation = hand.mapping.rotation_to_scene(sample.orientation);
   world.button = hand.latest.device_ok && (sample.buttons & 1u) != 0;
   return hand.latest.device_ok;
 }
 
-void pqHapticsInteractor::apply(Hand& hand, const gi::HandActions& actions)
+void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actions)
 {
   if (actions.grasp)
   {
-    this->Pipeline.grasp(actions.grasp_position);
+    this->Proxies.grasp(actions.grasp_position);
     Eigen::Vector3d vertex = actions.grasp_position;
     double malleability = 0.5;
     // A builtin session reads the grasped vertex's malleability at once; against a
     // remote server the filter reports it after its next update (publishScene).
-    hand.stiffnessPending = !this->Pipeline.graspedVertex(vertex, malleability);
+    hand.stiffnessPending = !this->Proxies.graspedVertex(vertex, malleability);
     if (hand.device)
     {
       const Eigen::Vector3d world =
-        (this->Pipeline.objectMatrix() * actions.grasp_position.homogeneous()).hnormalized();
+        (this->Proxies.objectMatrix() * actions.grasp_position.homogeneous()).hnormalized();
       hand.anchor = hand.mapping.to_device(world);
       hand.stiffness =
-        gh::coupling_stiffness(malleability, gh::ForceParams(), hand.device->limits());
+        haptics::coupling_stiffness(malleability, haptics::ForceParams(), hand.device->limits());
     }
   }
   if (actions.set_displacement)
   {
-    this->Pipeline.setDisplacement(actions.displacement);
+    this->Proxies.setDisplacement(actions.displacement);
     this->LastDisplacement = actions.displacement;
   }
   if (actions.release)
   {
     // Releasing the Deform tool commits: the shape the user sees becomes the rest shape
     // of the next grasp, and EditHistory gets its record.
-    this->Pipeline.lastDeformationMilliseconds(); // updates the information properties
-    this->Stats.displacedAtRelease = this->Pipeline.numberOfDisplacedPoints();
-    this->LastEdit = this->Pipeline.runEdit(gi::EditCommand::commit);
+    this->Proxies.lastDeformationMilliseconds(); // updates the information properties
+    this->Stats.displacedAtRelease = this->Proxies.numberOfDisplacedPoints();
+    this->LastEdit = this->Proxies.runEdit(interactor::EditCommand::commit);
     this->ReleaseCommits += this->LastEdit.changed ? 1 : 0;
     Q_EMIT this->editsChanged();
   }
@@ -270,42 +270,42 @@ void pqHapticsInteractor::apply(Hand& hand, const gi::HandActions& actions)
   {
     // Dabs land on the surface the user sees: while a hand drags, or once edits are
     // committed, it is not the paint filter's input.
-    this->Pipeline.appendDabs(
-      actions.dabs, this->anyHandDragging() || this->Pipeline.numberOfEdits() > 0);
+    this->Proxies.appendDabs(
+      actions.dabs, this->anyHandDragging() || this->Proxies.numberOfEdits() > 0);
   }
   if (actions.begin_hold)
   {
-    this->HoldStart = this->Pipeline.objectMatrix();
+    this->HoldStart = this->Proxies.objectMatrix();
   }
   if (actions.set_motion)
   {
-    this->Pipeline.setObjectMatrix(actions.motion.matrix() * this->HoldStart);
+    this->Proxies.setObjectMatrix(actions.motion.matrix() * this->HoldStart);
   }
 }
 
-bool pqHapticsInteractor::forceFromLastScene(int index, gh::ForceResult& result) const
+bool pqHapticsInteractor::forceFromLastScene(int index, haptics::ForceResult& result) const
 {
   const Hand* hand = index >= 0 && index < 2 ? this->Hands[index].get() : nullptr;
   if (!hand || !hand->device)
   {
     return false;
   }
-  gh::ForceInput in;
+  haptics::ForceInput in;
   in.position = hand->latest.sample.position;
   in.device_ok = hand->latest.device_ok;
   in.now = hand->sent.stamp;
-  result = gh::compute_force(in, hand->sent, gh::ForceParams(), hand->device->limits());
+  result = haptics::compute_force(in, hand->sent, haptics::ForceParams(), hand->device->limits());
   return true;
 }
 
 void pqHapticsInteractor::record(
-  Hand& hand, const gi::WorkspaceMapping& mapping, const gi::StylusState& world)
+  Hand& hand, const interactor::WorkspaceMapping& mapping, const interactor::StylusState& world)
 {
   if (!hand.recorder.is_open())
   {
     return;
   }
-  gh::DeviceSample sample;
+  haptics::DeviceSample sample;
   if (hand.device)
   {
     sample = hand.latest.sample; // the device's own time and frame
@@ -328,24 +328,25 @@ void pqHapticsInteractor::record(
 bool pqHapticsInteractor::anyHandDragging() const
 {
   return std::any_of(this->Hands.begin(), this->Hands.end(),
-    [](const auto& hand)
-    { return hand && hand->controller.held() && hand->controller.tool() == gi::Tool::deform; });
+    [](const auto& hand) {
+      return hand && hand->controller.held() && hand->controller.tool() == interactor::Tool::deform;
+    });
 }
 
-gi::EditResult pqHapticsInteractor::runEdit(gi::EditCommand command)
+interactor::EditResult pqHapticsInteractor::runEdit(interactor::EditCommand command)
 {
-  this->Pipeline.refresh();
+  this->Proxies.refresh();
   for (auto& hand : this->Hands)
   {
     // An undo/redo/reset ends a drag without committing it.
-    if (hand && hand->controller.held() && hand->controller.tool() == gi::Tool::deform &&
-        command != gi::EditCommand::commit)
+    if (hand && hand->controller.held() && hand->controller.tool() == interactor::Tool::deform &&
+        command != interactor::EditCommand::commit)
     {
       hand->controller.cancel();
     }
   }
-  this->LastEdit = this->Pipeline.runEdit(command);
-  this->Pipeline.render();
+  this->LastEdit = this->Proxies.runEdit(command);
+  this->Proxies.render();
   Q_EMIT this->editsChanged();
   return this->LastEdit;
 }
@@ -356,18 +357,19 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   {
     return;
   }
-  gh::SceneSnapshot& scene = hand.servo->scene_back();
-  scene.stamp = gh::Clock::now();
+  haptics::SceneSnapshot& scene = hand.servo->scene_back();
+  scene.stamp = haptics::Clock::now();
   scene.sequence = ++this->Sequence;
   // A slow renderer's snapshot stays valid for three of its frames (the force model
   // caps this at 500 ms, so a frozen GUI still zeroes the force).
   scene.valid_for = std::chrono::duration_cast<std::chrono::nanoseconds>(
     std::chrono::duration<double>(3.0 * this->FramePeriodSeconds));
-  scene.grasping = hand.controller.held() && hand.controller.tool() == gi::Tool::deform;
+  scene.grasping = hand.controller.held() && hand.controller.tool() == interactor::Tool::deform;
   double malleability = 0.0;
-  if (scene.grasping && hand.stiffnessPending && this->Pipeline.lastGraspMalleability(malleability))
+  if (scene.grasping && hand.stiffnessPending && this->Proxies.lastGraspMalleability(malleability))
   {
-    hand.stiffness = gh::coupling_stiffness(malleability, gh::ForceParams(), hand.device->limits());
+    hand.stiffness =
+      haptics::coupling_stiffness(malleability, haptics::ForceParams(), hand.device->limits());
     hand.stiffnessPending = false;
   }
   scene.grasp_anchor = hand.anchor;
@@ -377,19 +379,19 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   // it (the stylus would fight its own grasp, and its locator would be rebuilt every
   // frame); otherwise the stylus feels it too, e.g. while painting or before a grasp.
   scene.contact_triangles.clear();
-  const gh::DeviceSample& sample = hand.latest.sample;
+  const haptics::DeviceSample& sample = hand.latest.sample;
   hand.freeSide.update(
-    sample.position, hand.sent.contact_triangles, gh::ForceParams().contact_shell);
+    sample.position, hand.sent.contact_triangles, haptics::ForceParams().contact_shell);
   if (hand.latest.device_ok && hand.freeSide.known())
   {
-    this->Pipeline.contactTriangles(
+    this->Proxies.contactTriangles(
       stylus, ContactReachMetres * hand.mapping.scale(), !anyDragging, scene.contact_triangles);
     for (Eigen::Vector3d& p : scene.contact_triangles)
     {
       p = hand.mapping.to_device(p);
     }
-    gh::orient_toward(scene.contact_triangles, hand.freeSide.point());
-    gh::keep_nearest(scene.contact_triangles, sample.position, MaxContactTriangles);
+    haptics::orient_toward(scene.contact_triangles, hand.freeSide.point());
+    haptics::keep_nearest(scene.contact_triangles, sample.position, MaxContactTriangles);
   }
   this->Stats.contactTriangles += (long long)(scene.contact_triangles.size() / 3);
   this->Stats.contactTicks += hand.latest.in_contact ? 1 : 0;
@@ -399,11 +401,11 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
 
 void pqHapticsInteractor::onFrame()
 {
-  this->Pipeline.refresh();
-  pqRenderView* view = this->Pipeline.view();
+  this->Proxies.refresh();
+  pqRenderView* view = this->Proxies.view();
   vtkSMRenderViewProxy* viewProxy = view ? view->getRenderViewProxy() : nullptr;
-  const gi::CameraFrame camera = this->Pipeline.camera();
-  const Eigen::Matrix4d object = this->Pipeline.objectMatrix();
+  const interactor::CameraFrame camera = this->Proxies.camera();
+  const Eigen::Matrix4d object = this->Proxies.objectMatrix();
   const Eigen::Matrix4d toObject = object.inverse();
   this->Stats.contactTriangles = 0;
   for (auto& handPtr : this->Hands)
@@ -414,8 +416,8 @@ void pqHapticsInteractor::onFrame()
     }
     Hand& hand = *handPtr;
     const double radius = hand.device ? hand.device->limits().workspace_radius : 0.08;
-    const gi::WorkspaceMapping mapping(camera, radius);
-    gi::StylusState world;
+    const interactor::WorkspaceMapping mapping(camera, radius);
+    interactor::StylusState world;
     if (hand.kind == Mouse)
     {
       hand.mouse.attach(viewProxy);
@@ -423,16 +425,16 @@ void pqHapticsInteractor::onFrame()
     this->stylusOf(hand, mapping, world);
     this->record(hand, mapping, world);
     const bool mousePaints = hand.kind == Mouse && hand.mouse.paint();
-    this->apply(hand, hand.controller.set_tool(mousePaints ? gi::Tool::paint : hand.tool));
+    this->apply(hand, hand.controller.set_tool(mousePaints ? interactor::Tool::paint : hand.tool));
 
-    gi::StylusState local = world;
-    if (hand.controller.tool() != gi::Tool::hold_and_turn)
+    interactor::StylusState local = world;
+    if (hand.controller.tool() != interactor::Tool::hold_and_turn)
     {
       local.position = (toObject * world.position.homogeneous()).hnormalized();
     }
     this->apply(hand, hand.controller.update(local, this->Brush));
 
-    const bool painting = hand.controller.tool() == gi::Tool::paint;
+    const bool painting = hand.controller.tool() == interactor::Tool::paint;
     const Eigen::Vector3d color = painting ? geoshaping::malleability_color(this->Brush.value)
                                   : hand.controller.held() ? Eigen::Vector3d(0.2, 1.0, 0.3)
                                                            : Eigen::Vector3d(0.2, 0.6, 1.0);
@@ -443,7 +445,7 @@ void pqHapticsInteractor::onFrame()
     hand.setRenderer(viewProxy ? viewProxy->GetRenderer() : nullptr);
     if (hand.device)
     {
-      const gh::DeviceSample& sample = hand.latest.sample;
+      const haptics::DeviceSample& sample = hand.latest.sample;
       const double picked = hand.palette.update(hand.latest.device_ok && (sample.buttons & 2u),
         sample.position, hand.device->limits().workspace_radius);
       if (!std::isnan(picked))
@@ -460,13 +462,13 @@ void pqHapticsInteractor::onFrame()
   {
     if (hand && hand->device)
     {
-      const gh::DeviceSample& sample = hand->latest.sample;
+      const haptics::DeviceSample& sample = hand->latest.sample;
       this->publishScene(*hand, hand->mapping.to_scene(sample.position), anyDragging);
     }
   }
   this->Stats.maxContactTriangles =
     std::max(this->Stats.maxContactTriangles, this->Stats.contactTriangles);
-  this->Pipeline.render();
+  this->Proxies.render();
   this->updateFigures();
   Q_EMIT this->frameDone();
 }
@@ -498,9 +500,9 @@ void pqHapticsInteractor::updateFigures()
     const Hand* hand = this->Hands[i].get();
     this->Stats.servoHz[i] = hand && hand->servo ? hand->servo->period_summary().mean_rate_hz : 0.0;
   }
-  if (this->Pipeline.hasDeformation())
+  if (this->Proxies.hasDeformation())
   {
-    this->Stats.deformationMilliseconds = this->Pipeline.lastDeformationMilliseconds();
-    this->Stats.displacedPoints = this->Pipeline.numberOfDisplacedPoints();
+    this->Stats.deformationMilliseconds = this->Proxies.lastDeformationMilliseconds();
+    this->Stats.displacedPoints = this->Proxies.numberOfDisplacedPoints();
   }
 }

@@ -2,12 +2,12 @@
 // The haptic interactor: one hand per device (or the mouse), a timer on the GUI thread
 // at ~60 Hz that takes each device's latest snapshot from its servo loop, maps it into
 // the scene through the active view's camera, lets the hand's controller decide, drives
-// the proxies (pqHapticsPipeline), moves the stylus cursors, renders, and publishes the
+// the proxies (pqHapticsProxies), moves the stylus cursors, renders, and publishes the
 // scene snapshot (grasp anchor, stiffness) back to the servo loop for the force.
 // After ParaView's CAVEInteraction plugin: device thread -> snapshot -> QTimer.
 #include "HapticsControl.h"
 #include "geoshaping/haptics/force_model.h"
-#include "pqHapticsPipeline.h"
+#include "pqHapticsProxies.h"
 
 #include <QObject>
 #include <QString>
@@ -82,10 +82,10 @@ public:
   // hand's release commits the same way.
   geoshaping::interactor::EditResult runEdit(geoshaping::interactor::EditCommand command);
   const geoshaping::interactor::EditResult& lastEditResult() const { return this->LastEdit; }
-  int numberOfEdits() { return this->Pipeline.numberOfEdits(); }
+  int numberOfEdits() { return this->Proxies.numberOfEdits(); }
   // Commits made by releases since start (for the GUI test).
   int releaseCommits() const { return this->ReleaseCommits; }
-  pqHapticsPipeline& pipeline() { return this->Pipeline; }
+  pqHapticsProxies& proxies() { return this->Proxies; }
   // The force the servo loop renders from the scene last published for device hand
   // `hand` (0 or 1) at the stylus position of that frame, at rest, as if fresh: what
   // the graphics side asks the servo to render, independent of its timing. False for a
@@ -114,7 +114,7 @@ private:
   bool anyHandDragging() const;
 
   std::array<std::unique_ptr<Hand>, 2> Hands;
-  pqHapticsPipeline Pipeline;
+  pqHapticsProxies Proxies;
   QTimer Timer;
   geoshaping::interactor::Brush Brush;
   Figures Stats;

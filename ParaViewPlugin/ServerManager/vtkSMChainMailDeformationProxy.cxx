@@ -8,12 +8,12 @@
 
 #include <vector>
 
-namespace gi = geoshaping::interactor;
+namespace interactor = geoshaping::interactor;
 
 namespace
 {
 // EditProxy over a server-manager proxy.
-class SMEditProxy : public gi::EditProxy
+class SMEditProxy : public interactor::EditProxy
 {
 public:
   explicit SMEditProxy(vtkSMProxy* proxy)
@@ -80,18 +80,18 @@ vtkSMChainMailDeformationProxy::~vtkSMChainMailDeformationProxy() = default;
 
 void vtkSMChainMailDeformationProxy::PropertyPushed(vtkObject*, unsigned long, void* name)
 {
-  gi::EditCommand command;
+  interactor::EditCommand command;
   // InvokeCommand (UpdateProperty) fires this after the server ran the command.
   // UpdateVTKObjects fires it before its push and never carries a user's command (the
   // panel's buttons, the dock and Python all invoke): it is left alone.
   if (!name || this->InUpdateVTKObjects || this->Following ||
-      !gi::is_edit_command(static_cast<const char*>(name), command))
+      !interactor::is_edit_command(static_cast<const char*>(name), command))
   {
     return;
   }
   this->Following = true;
   SMEditProxy edits(this);
-  const gi::EditResult result = gi::follow_edit(command, edits);
+  const interactor::EditResult result = interactor::follow_edit(command, edits);
   this->Following = false;
   this->LastEditChanged = result.changed;
   this->LastEditRedoable = result.redoable;

@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
-namespace gi = geoshaping::interactor;
+namespace interactor = geoshaping::interactor;
 
 namespace
 {
 // The filter's command semantics (EditRecords, History with its redo tail, LastEdit)
 // and the client proxy's properties.
-class FakeFilter : public gi::EditProxy
+class FakeFilter : public interactor::EditProxy
 {
 public:
   // Server side.
@@ -91,36 +91,36 @@ public:
 
 // What vtkSMChainMailDeformationProxy does for any InvokeCommand: the server runs the
 // command, then the client follows.
-gi::EditResult run(gi::EditCommand command, FakeFilter& f)
+interactor::EditResult run(interactor::EditCommand command, FakeFilter& f)
 {
-  f.invoke(gi::command_property(command));
-  return gi::follow_edit(command, f);
+  f.invoke(interactor::command_property(command));
+  return interactor::follow_edit(command, f);
 }
 }
 
 TEST(EditControl, CommandProperties)
 {
-  EXPECT_STREQ(gi::command_property(gi::EditCommand::commit), "CommitEdit");
-  EXPECT_STREQ(gi::command_property(gi::EditCommand::undo), "UndoEdit");
-  EXPECT_STREQ(gi::command_property(gi::EditCommand::redo), "RedoEdit");
-  EXPECT_STREQ(gi::command_property(gi::EditCommand::reset), "ResetEdits");
-  for (auto c : { gi::EditCommand::commit, gi::EditCommand::undo, gi::EditCommand::redo,
-         gi::EditCommand::reset })
+  EXPECT_STREQ(interactor::command_property(interactor::EditCommand::commit), "CommitEdit");
+  EXPECT_STREQ(interactor::command_property(interactor::EditCommand::undo), "UndoEdit");
+  EXPECT_STREQ(interactor::command_property(interactor::EditCommand::redo), "RedoEdit");
+  EXPECT_STREQ(interactor::command_property(interactor::EditCommand::reset), "ResetEdits");
+  for (auto c : { interactor::EditCommand::commit, interactor::EditCommand::undo,
+         interactor::EditCommand::redo, interactor::EditCommand::reset })
   {
-    gi::EditCommand parsed = gi::EditCommand::reset;
-    EXPECT_TRUE(gi::is_edit_command(gi::command_property(c), parsed));
+    interactor::EditCommand parsed = interactor::EditCommand::reset;
+    EXPECT_TRUE(interactor::is_edit_command(interactor::command_property(c), parsed));
     EXPECT_EQ(parsed, c);
   }
-  gi::EditCommand unused;
-  EXPECT_FALSE(gi::is_edit_command("Displacement", unused));
-  EXPECT_FALSE(gi::is_edit_command("", unused));
+  interactor::EditCommand unused;
+  EXPECT_FALSE(interactor::is_edit_command("Displacement", unused));
+  EXPECT_FALSE(interactor::is_edit_command("", unused));
 }
 
 TEST(EditControl, CommitAppendsLastEditAndReleases)
 {
   FakeFilter f;
   f.grasp();
-  const gi::EditResult r = run(gi::EditCommand::commit, f);
+  const interactor::EditResult r = run(interactor::EditCommand::commit, f);
   EXPECT_TRUE(r.changed);
   EXPECT_EQ(r.edits, 1u);
   EXPECT_EQ(r.redoable, 0);
@@ -137,9 +137,9 @@ TEST(EditControl, CommitWithNothingToCommitDoesNotDuplicateTheLastRecord)
 {
   FakeFilter f;
   f.grasp();
-  run(gi::EditCommand::commit, f);
+  run(interactor::EditCommand::commit, f);
   // Press and release without a deformation: LastEdit is still the first edit.
-  const gi::EditResult r = run(gi::EditCommand::commit, f);
+  const interactor::EditResult r = run(interactor::EditCommand::commit, f);
   EXPECT_FALSE(r.changed);
   EXPECT_EQ(r.message, "nothing to commit");
   EXPECT_EQ(f.client.size(), 1u);
@@ -152,33 +152,33 @@ TEST(EditControl, UndoRedoResetKeepTheClientListInStep)
   for (int i = 0; i < 3; ++i)
   {
     f.grasp();
-    run(gi::EditCommand::commit, f);
+    run(interactor::EditCommand::commit, f);
   }
   const std::vector<std::string> all = f.client;
   ASSERT_EQ(all.size(), 3u);
 
-  gi::EditResult r = run(gi::EditCommand::undo, f);
+  interactor::EditResult r = run(interactor::EditCommand::undo, f);
   EXPECT_TRUE(r.changed);
   EXPECT_EQ(f.client, std::vector<std::string>(all.begin(), all.begin() + 2));
   EXPECT_EQ(r.redoable, 1);
-  r = run(gi::EditCommand::undo, f);
+  r = run(interactor::EditCommand::undo, f);
   EXPECT_EQ(f.client, std::vector<std::string>(all.begin(), all.begin() + 1));
   EXPECT_EQ(r.redoable, 2);
 
-  r = run(gi::EditCommand::redo, f);
+  r = run(interactor::EditCommand::redo, f);
   EXPECT_TRUE(r.changed);
   EXPECT_EQ(f.client, std::vector<std::string>(all.begin(), all.begin() + 2));
   EXPECT_EQ(r.redoable, 1);
 
-  r = run(gi::EditCommand::reset, f);
+  r = run(interactor::EditCommand::reset, f);
   EXPECT_TRUE(r.changed);
   EXPECT_TRUE(f.client.empty());
   EXPECT_EQ(r.redoable, 3);
 
   for (int i = 0; i < 3; ++i)
-    run(gi::EditCommand::redo, f);
+    run(interactor::EditCommand::redo, f);
   EXPECT_EQ(f.client, all);
-  r = run(gi::EditCommand::redo, f);
+  r = run(interactor::EditCommand::redo, f);
   EXPECT_FALSE(r.changed);
   EXPECT_EQ(r.message, "nothing to redo");
   EXPECT_EQ(f.client, all);
@@ -187,7 +187,7 @@ TEST(EditControl, UndoRedoResetKeepTheClientListInStep)
 TEST(EditControl, UndoOnAnEmptyListSaysSo)
 {
   FakeFilter f;
-  const gi::EditResult r = run(gi::EditCommand::undo, f);
+  const interactor::EditResult r = run(interactor::EditCommand::undo, f);
   EXPECT_FALSE(r.changed);
   EXPECT_EQ(r.message, "nothing to undo");
   EXPECT_TRUE(f.client.empty());
@@ -198,12 +198,12 @@ TEST(EditControl, CommitAfterUndoDropsTheRedoTail)
 {
   FakeFilter f;
   f.grasp();
-  run(gi::EditCommand::commit, f);
+  run(interactor::EditCommand::commit, f);
   f.grasp();
-  run(gi::EditCommand::commit, f);
-  run(gi::EditCommand::undo, f);
+  run(interactor::EditCommand::commit, f);
+  run(interactor::EditCommand::undo, f);
   f.grasp();
-  const gi::EditResult r = run(gi::EditCommand::commit, f);
+  const interactor::EditResult r = run(interactor::EditCommand::commit, f);
   EXPECT_EQ(r.edits, 2u);
   EXPECT_EQ(r.redoable, 0);
   EXPECT_EQ(f.client.back(), "GSE1 edit2");
@@ -217,11 +217,11 @@ TEST(EditControl, EveryCommandSenderKeepsTheListInStep)
   for (int i = 0; i < 3; ++i)
   {
     f.grasp();
-    run(gi::EditCommand::commit, f);
+    run(interactor::EditCommand::commit, f);
   }
-  run(gi::EditCommand::undo, f);
+  run(interactor::EditCommand::undo, f);
   f.grasp();
-  const gi::EditResult r = run(gi::EditCommand::commit, f);
+  const interactor::EditResult r = run(interactor::EditCommand::commit, f);
   EXPECT_TRUE(r.message.empty()) << r.message;
   EXPECT_EQ(f.client.size(), 3u);
   EXPECT_EQ(f.records, f.client);
@@ -231,24 +231,26 @@ TEST(EditControl, EveryCommandSenderKeepsTheListInStep)
 TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)
 {
   std::vector<double> triples = { 99.0, 0.1, 0.2 }; // earlier dabs are kept
-  gi::append_point_dabs(
+  interactor::append_point_dabs(
     { 4, 8, 15 }, { 0.0, 1.0, 2.0 }, 2.0, 0.8, 0.5, geoshaping::Falloff::linear, triples);
   // The rim (weight 0) is left out.
   const std::vector<double> expected = { 99.0, 0.1, 0.2, 4.0, 0.8, 0.5, 8.0, 0.8, 0.25 };
   EXPECT_EQ(triples, expected);
 
   std::vector<double> clamped;
-  gi::append_point_dabs({ 1 }, { 0.0 }, 1.0, 7.0, -1.0, geoshaping::Falloff::constant, clamped);
+  interactor::append_point_dabs(
+    { 1 }, { 0.0 }, 1.0, 7.0, -1.0, geoshaping::Falloff::constant, clamped);
   EXPECT_TRUE(clamped.empty()); // strength clamped to 0: nothing painted
-  gi::append_point_dabs({ 1 }, { 0.0 }, 1.0, 7.0, 2.0, geoshaping::Falloff::constant, clamped);
+  interactor::append_point_dabs(
+    { 1 }, { 0.0 }, 1.0, 7.0, 2.0, geoshaping::Falloff::constant, clamped);
   EXPECT_EQ(clamped, (std::vector<double>{ 1.0, 1.0, 1.0 }));
 
   std::vector<double> none;
-  gi::append_point_dabs(
+  interactor::append_point_dabs(
     { 1 }, { 0.0 }, 0.0, 0.5, 0.5, geoshaping::Falloff::constant, none); // zero radius
-  gi::append_point_dabs(
+  interactor::append_point_dabs(
     { 1, 2 }, { 0.0 }, 1.0, 0.5, 0.5, geoshaping::Falloff::constant, none); // size mismatch
-  gi::append_point_dabs(
+  interactor::append_point_dabs(
     { -1 }, { 0.0 }, 1.0, 0.5, 0.5, geoshaping::Falloff::constant, none); // bad id
   EXPECT_TRUE(none.empty());
 }

@@ -1,7 +1,7 @@
 #include "pqHapticsTestHook.h"
 
 #include "pqHapticsDockPanel.h"
-#include "pqHapticsPipeline.h"
+#include "pqHapticsProxies.h"
 
 #include <pqActiveObjects.h>
 #include <pqCoreUtilities.h>
@@ -278,7 +278,7 @@ void pqHapticsTestHook::writeResults()
   out << "brush_value = " << interactor->brush().value << "\n";
   out << "brush_radius = " << interactor->brush().radius << "\n";
   {
-    const Eigen::Matrix4d m = this->Dock->interactor()->pipeline().objectMatrix();
+    const Eigen::Matrix4d m = this->Dock->interactor()->proxies().objectMatrix();
     out << "object_matrix =";
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j)

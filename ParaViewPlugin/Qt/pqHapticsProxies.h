@@ -28,7 +28,7 @@ class vtkSMProxy;
 // first of them shown in it (else the first); nullptr when there is none.
 pqPipelineSource* pqHapticsFindSource(const char* xmlName, pqView* view = nullptr);
 
-class pqHapticsPipeline
+class pqHapticsProxies
 {
 public:
   // Finds the targets: the active source if it is a ChainMailDeformation, else the

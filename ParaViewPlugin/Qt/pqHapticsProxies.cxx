@@ -1,4 +1,4 @@
-#include "pqHapticsPipeline.h"
+#include "pqHapticsProxies.h"
 
 #include <pqActiveObjects.h>
 #include <pqApplicationCore.h>
@@ -97,7 +97,7 @@ pqPipelineSource* paintUpstreamOf(pqPipelineSource* source)
 }
 }
 
-void pqHapticsPipeline::refresh()
+void pqHapticsProxies::refresh()
 {
   auto& active = pqActiveObjects::instance();
   this->View = qobject_cast<pqRenderView*>(active.activeView());
@@ -132,7 +132,7 @@ void pqHapticsPipeline::refresh()
   }
 }
 
-geoshaping::interactor::CameraFrame pqHapticsPipeline::camera() const
+geoshaping::interactor::CameraFrame pqHapticsProxies::camera() const
 {
   geoshaping::interactor::CameraFrame frame;
   auto* viewProxy = this->View ? this->View->getRenderViewProxy() : nullptr;
@@ -149,7 +149,7 @@ geoshaping::interactor::CameraFrame pqHapticsPipeline::camera() const
   return frame;
 }
 
-vtkSMProxy* pqHapticsPipeline::representation(pqPipelineSource* source) const
+vtkSMProxy* pqHapticsProxies::representation(pqPipelineSource* source) const
 {
   pqDataRepresentation* repr =
     source && this->View ? source->getRepresentation(this->View) : nullptr;
@@ -191,12 +191,12 @@ Eigen::Matrix4d matrixOf(vtkSMProxy* repr)
 }
 }
 
-Eigen::Matrix4d pqHapticsPipeline::objectMatrix() const
+Eigen::Matrix4d pqHapticsProxies::objectMatrix() const
 {
   return matrixOf(this->representation(this->Deformation));
 }
 
-void pqHapticsPipeline::setObjectMatrix(const Eigen::Matrix4d& m)
+void pqHapticsProxies::setObjectMatrix(const Eigen::Matrix4d& m)
 {
   vtkSMProxy* repr = this->representation(this->Deformation);
   if (!repr || !repr->GetProperty("Position") || !m.allFinite())
@@ -227,7 +227,7 @@ void pqHapticsPipeline::setObjectMatrix(const Eigen::Matrix4d& m)
   this->RepresentationModified = true;
 }
 
-void pqHapticsPipeline::grasp(const Eigen::Vector3d& position)
+void pqHapticsProxies::grasp(const Eigen::Vector3d& position)
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
   if (!proxy)
@@ -253,7 +253,7 @@ void pqHapticsPipeline::grasp(const Eigen::Vector3d& position)
   this->DeformationModified = true;
 }
 
-vtkPointSet* pqHapticsPipeline::shownSurface() const
+vtkPointSet* pqHapticsProxies::shownSurface() const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
   auto* filter = proxy ? vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject()) : nullptr;
@@ -261,7 +261,7 @@ vtkPointSet* pqHapticsPipeline::shownSurface() const
   return output && output->GetNumberOfPoints() > 0 ? output : nullptr;
 }
 
-vtkStaticCellLocator* pqHapticsPipeline::cellLocator(vtkDataSet* data)
+vtkStaticCellLocator* pqHapticsProxies::cellLocator(vtkDataSet* data)
 {
   this->CellLocators.erase(std::remove_if(this->CellLocators.begin(), this->CellLocators.end(),
                              [](const CellLocatorEntry& e) { return !e.data; }),
@@ -286,7 +286,7 @@ vtkStaticCellLocator* pqHapticsPipeline::cellLocator(vtkDataSet* data)
   return entry->locator;
 }
 
-void pqHapticsPipeline::contactTriangles(
+void pqHapticsProxies::contactTriangles(
   const Eigen::Vector3d& world, double radius, bool withShown, std::vector<Eigen::Vector3d>& out)
 {
   if (!this->View || !world.allFinite() || !(radius > 0.0))
@@ -340,14 +340,14 @@ void pqHapticsPipeline::contactTriangles(
   }
 }
 
-vtkPointSet* pqHapticsPipeline::restSurface() const
+vtkPointSet* pqHapticsProxies::restSurface() const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
   auto* filter = proxy ? vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject()) : nullptr;
   return filter ? vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0)) : nullptr;
 }
 
-vtkStaticPointLocator* pqHapticsPipeline::shownLocator()
+vtkStaticPointLocator* pqHapticsProxies::shownLocator()
 {
   vtkPointSet* shown = this->shownSurface();
   if (!shown || !shown->GetPoints())
@@ -370,7 +370,7 @@ vtkStaticPointLocator* pqHapticsPipeline::shownLocator()
   return this->Locator;
 }
 
-void pqHapticsPipeline::setDisplacement(const Eigen::Vector3d& d)
+void pqHapticsProxies::setDisplacement(const Eigen::Vector3d& d)
 {
   if (vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr)
   {
@@ -379,7 +379,7 @@ void pqHapticsPipeline::setDisplacement(const Eigen::Vector3d& d)
   }
 }
 
-void pqHapticsPipeline::appendDabs(const std::vector<std::array<double, 6>>& dabs, bool onShown)
+void pqHapticsProxies::appendDabs(const std::vector<std::array<double, 6>>& dabs, bool onShown)
 {
   vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
   if (!proxy || dabs.empty())
@@ -430,7 +430,7 @@ void pqHapticsPipeline::appendDabs(const std::vector<std::array<double, 6>>& dab
   this->PaintModified = true;
 }
 
-geoshaping::interactor::EditResult pqHapticsPipeline::runEdit(
+geoshaping::interactor::EditResult pqHapticsProxies::runEdit(
   geoshaping::interactor::EditCommand command)
 {
   geoshaping::interactor::EditResult result;
@@ -452,7 +452,7 @@ geoshaping::interactor::EditResult pqHapticsPipeline::runEdit(
   return result;
 }
 
-int pqHapticsPipeline::numberOfEdits() const
+int pqHapticsProxies::numberOfEdits() const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
   return proxy && proxy->GetProperty("EditHistory")
@@ -460,7 +460,7 @@ int pqHapticsPipeline::numberOfEdits() const
            : 0;
 }
 
-void pqHapticsPipeline::render()
+void pqHapticsProxies::render()
 {
   if (this->PaintModified && this->Paint)
   {
@@ -484,7 +484,7 @@ void pqHapticsPipeline::render()
   }
 }
 
-bool pqHapticsPipeline::graspedVertex(Eigen::Vector3d& position, double& malleability) const
+bool pqHapticsProxies::graspedVertex(Eigen::Vector3d& position, double& malleability) const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
   if (!proxy)
@@ -517,7 +517,7 @@ bool pqHapticsPipeline::graspedVertex(Eigen::Vector3d& position, double& malleab
   return true;
 }
 
-bool pqHapticsPipeline::lastGraspMalleability(double& malleability) const
+bool pqHapticsProxies::lastGraspMalleability(double& malleability) const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
   if (!proxy || !proxy->GetProperty("LastGraspMalleability"))
@@ -533,7 +533,7 @@ bool pqHapticsPipeline::lastGraspMalleability(double& malleability) const
   return true;
 }
 
-double pqHapticsPipeline::lastDeformationMilliseconds() const
+double pqHapticsProxies::lastDeformationMilliseconds() const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
   if (!proxy)
@@ -544,7 +544,7 @@ double pqHapticsPipeline::lastDeformationMilliseconds() const
   return vtkSMPropertyHelper(proxy, "LastDeformationMilliseconds").GetAsDouble();
 }
 
-long long pqHapticsPipeline::numberOfDisplacedPoints() const
+long long pqHapticsProxies::numberOfDisplacedPoints() const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
   return proxy ? vtkSMPropertyHelper(proxy, "NumberOfDisplacedPoints").GetAsIdType() : 0;
