@@ -27,13 +27,13 @@ constexpr HDerror success = 0x0000;
 constexpr HDCallbackCode callback_continue = 1;
 constexpr unsigned short default_priority = 0xFFFF / 2;
 constexpr HDenum current_buttons = 0x2000;
-constexpr HDenum current_position = 0x2050; // 3 doubles, mm
-constexpr HDenum current_transform = 0x2052; // 16 doubles, column-major, mm
-constexpr HDenum usable_workspace = 0x2551; // 6 doubles: min xyz, max xyz, mm
+constexpr HDenum current_position = 0x2050;      // 3 doubles, mm
+constexpr HDenum current_transform = 0x2052;     // 16 doubles, column-major, mm
+constexpr HDenum usable_workspace = 0x2551;      // 6 doubles: min xyz, max xyz, mm
 constexpr HDenum nominal_max_stiffness = 0x2602; // N/mm
-constexpr HDenum nominal_max_force = 0x2603; // N
-constexpr HDenum nominal_max_damping = 0x2609; // N s/mm
-constexpr HDenum current_force = 0x2700; // 3 doubles, N
+constexpr HDenum nominal_max_force = 0x2603;     // N
+constexpr HDenum nominal_max_damping = 0x2609;   // N s/mm
+constexpr HDenum current_force = 0x2700;         // 3 doubles, N
 constexpr HDenum force_output = 0x4000;
 } // namespace hd
 
@@ -74,7 +74,7 @@ struct OpenHapticsDevice::Api
 
 namespace
 {
-template <class F>
+template<class F>
 bool resolve(void* library, const char* name, F& f, std::string& missing)
 {
   f = reinterpret_cast<F>(dlsym(library, name));
@@ -105,7 +105,7 @@ bool OpenHapticsDevice::open()
   {
     const char* why = dlerror();
     set_error("OpenHaptics (libHD.so) not found: " + std::string(why ? why : library_) +
-      " (install the OpenHaptics runtime or choose another device)");
+              " (install the OpenHaptics runtime or choose another device)");
     return false;
   }
   std::string missing;
@@ -139,7 +139,7 @@ bool OpenHapticsDevice::open()
     const std::string why = a.last_error();
     close();
     set_error("OpenHaptics: cannot initialise device '" +
-      (device_name_.empty() ? std::string("default") : device_name_) + "': " + why);
+              (device_name_.empty() ? std::string("default") : device_name_) + "': " + why);
     return false;
   }
   a.hdMakeCurrentDevice(a.handle);

@@ -30,7 +30,8 @@ PeriodSummary PeriodStats::summary() const
   s.mean_rate_hz = total_s > 0.0 ? double(s.periods) / total_s : 0.0;
   s.max_jitter_us = double(max_jitter_ns_.load(std::memory_order_relaxed)) * 1e-3;
   // Smallest jitter with at least q of the periods at or below it (nearest rank).
-  auto percentile = [&](double q) {
+  auto percentile = [&](double q)
+  {
     const std::uint64_t rank =
       std::max<std::uint64_t>(1, std::uint64_t(std::ceil(q * double(s.periods))));
     std::uint64_t seen = 0;

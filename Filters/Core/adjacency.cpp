@@ -20,7 +20,7 @@ constexpr Edge wedge_edges[] = { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 3, 4 }, { 4, 5 
 constexpr Edge pyramid_edges[] = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 0, 4 }, { 1, 4 },
   { 2, 4 }, { 3, 4 } };
 
-template <std::size_t N>
+template<std::size_t N>
 bool add_table(AdjacencyBuilder& b, const Edge (&table)[N], const std::int64_t* ids,
   std::int64_t count, std::int64_t expected)
 {

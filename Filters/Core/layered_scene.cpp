@@ -6,7 +6,10 @@ namespace geoshaping
 {
 namespace
 {
-bool finite_positive(double v) { return std::isfinite(v) && v > 0.0; }
+bool finite_positive(double v)
+{
+  return std::isfinite(v) && v > 0.0;
+}
 
 // Appends an (nu x nv) triangle grid with corners a (u=0, v=0), a + du, a + dv.
 void add_grid(LayeredScene& s, const Eigen::Vector3d& a, const Eigen::Vector3d& du,
@@ -68,8 +71,8 @@ LayeredScene layered_fault_scene(const LayeredSceneParams& p)
       dy, p.spacing, parts[h]);
     // Hanging wall: from the fault at the dropped elevation to x = length.
     const double x0 = fault_x(zh);
-    add_grid(s, p.origin + Eigen::Vector3d(x0, 0.0, zh),
-      Eigen::Vector3d(p.length - x0, 0.0, 0.0), dy, p.spacing, parts[h]);
+    add_grid(s, p.origin + Eigen::Vector3d(x0, 0.0, zh), Eigen::Vector3d(p.length - x0, 0.0, 0.0),
+      dy, p.spacing, parts[h]);
   }
   const Eigen::Vector3d top(fault_x(p.top), 0.0, p.top), bottom(fault_x(p.bottom), 0.0, p.bottom);
   add_grid(s, p.origin + top, bottom - top, dy, p.spacing, ScenePart::fault);

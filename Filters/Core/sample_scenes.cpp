@@ -74,8 +74,8 @@ index_t rows(double width, double spacing)
 }
 
 // Profile columns x rows along y, `layers` + 1 vertex layers `dz` apart downward.
-SampleMesh extrude(const Profile& columns, double width, double spacing, index_t layers,
-  double dz, const Eigen::Vector3d& origin)
+SampleMesh extrude(const Profile& columns, double width, double spacing, index_t layers, double dz,
+  const Eigen::Vector3d& origin)
 {
   const index_t nu = index_t(columns.size()), nv = rows(width, spacing), nk = layers + 1;
   SampleMesh m;
@@ -83,17 +83,16 @@ SampleMesh extrude(const Profile& columns, double width, double spacing, index_t
   for (index_t k = 0; k < nk; ++k)
     for (index_t j = 0; j < nv; ++j)
       for (index_t i = 0; i < nu; ++i)
-        m.xyz.insert(m.xyz.end(), { origin.x() + columns[i].x(),
-                                    origin.y() + width * j / (nv - 1),
+        m.xyz.insert(m.xyz.end(), { origin.x() + columns[i].x(), origin.y() + width * j / (nv - 1),
                                     origin.z() + columns[i].y() - dz * k });
   auto id = [&](index_t i, index_t j, index_t k) { return (k * nv + j) * nu + i; };
   if (layers == 0)
   {
     for (index_t j = 0; j + 1 < nv; ++j)
       for (index_t i = 0; i + 1 < nu; ++i)
-        m.connectivity.insert(m.connectivity.end(),
-          { id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0), id(i, j, 0),
-            id(i + 1, j + 1, 0), id(i, j + 1, 0) });
+        m.connectivity.insert(
+          m.connectivity.end(), { id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0), id(i, j, 0),
+                                  id(i + 1, j + 1, 0), id(i, j + 1, 0) });
     return m;
   }
   m.cell_size = 4;
@@ -122,7 +121,10 @@ SampleMesh extrude(const Profile& columns, double width, double spacing, index_t
   return m;
 }
 
-bool positive(double v) { return std::isfinite(v) && v > 0.0; }
+bool positive(double v)
+{
+  return std::isfinite(v) && v > 0.0;
+}
 } // namespace
 
 Adjacency SampleMesh::adjacency() const
@@ -187,7 +189,8 @@ std::vector<Dab> fault_step_painting(const FaultStepParams& p, double border)
   for (const Eigen::Vector2d& q : fault_step_profile(p))
     if (q.x() >= x0 && q.x() <= x0 + p.step_run)
       step.push_back(q);
-  auto dabs_on_step = [&](double radius, double pitch, double value, std::vector<Dab>& out) {
+  auto dabs_on_step = [&](double radius, double pitch, double value, std::vector<Dab>& out)
+  {
     const Profile across = resample(step, pitch);
     const index_t nv = rows(p.width, pitch);
     for (const Eigen::Vector2d& q : across)
@@ -217,7 +220,8 @@ std::vector<float> fault_step_malleability(
   std::vector<float> m(std::size_t(mesh.num_points()), float(fault_step_red));
   Painter painter(mesh.xyz.data(), mesh.num_points(), nullptr,
     brute_force_queries(mesh.xyz.data(), mesh.num_points()));
-  painter.paint(fault_step_painting(p, border), Falloff::constant, DistanceMode::euclidean, m.data());
+  painter.paint(
+    fault_step_painting(p, border), Falloff::constant, DistanceMode::euclidean, m.data());
   return m;
 }
 

@@ -16,8 +16,8 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -57,7 +57,8 @@ void Put(std::ostream& out, double value)
   out.write(buffer, result.ptr - buffer);
 }
 
-std::string FieldString(vtkFieldData* fd, const char* name, vtkIdType index, const std::string& fallback)
+std::string FieldString(
+  vtkFieldData* fd, const char* name, vtkIdType index, const std::string& fallback)
 {
   auto* array = vtkStringArray::SafeDownCast(fd ? fd->GetAbstractArray(name) : nullptr);
   if (!array || index >= array->GetNumberOfValues() || array->GetValue(index).empty())
@@ -73,7 +74,8 @@ int CellValue(vtkDataArray* array, vtkIdType cellId)
 // A property name is one token in the file.
 std::string TokenName(std::string name)
 {
-  std::replace_if(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }, '_');
+  std::replace_if(
+    name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }, '_');
   return name;
 }
 
@@ -143,7 +145,7 @@ bool GroupTriangles(vtkPolyData* input, std::vector<SurfaceGroup>& groups, std::
     if (npts != 3)
     {
       error = "Cell " + std::to_string(cellId) + " has " + std::to_string(npts) +
-        " points: only triangles are written (apply Triangulate first).";
+              " points: only triangles are written (apply Triangulate first).";
       return false;
     }
     byValue[CellValue(surfaceArray, cellId)].Triangles.push_back(

@@ -138,8 +138,8 @@ void vtkFaultStepHorizonSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "Thickness: " << this->Thickness << "\n";
   os << indent << "Layers: " << this->Layers << "\n";
-  os << indent << "Origin: " << this->Origin[0] << " " << this->Origin[1] << " "
-     << this->Origin[2] << "\n";
+  os << indent << "Origin: " << this->Origin[0] << " " << this->Origin[1] << " " << this->Origin[2]
+     << "\n";
   os << indent << "PaintFigure5C: " << this->PaintFigure5C << "\n";
   os << indent << "BorderWidth: " << this->BorderWidth << "\n";
 }

@@ -60,8 +60,8 @@ void vtkLayeredFaultSceneSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Length: " << this->Length << " Width: " << this->Width << "\n";
   os << indent << "FaultX: " << this->FaultX << " DipDegrees: " << this->DipDegrees << "\n";
   os << indent << "Top: " << this->Top << " Bottom: " << this->Bottom << "\n";
-  os << indent << "HorizonUpper: " << this->HorizonUpper
-     << " HorizonLower: " << this->HorizonLower << " Throw: " << this->Throw << "\n";
+  os << indent << "HorizonUpper: " << this->HorizonUpper << " HorizonLower: " << this->HorizonLower
+     << " Throw: " << this->Throw << "\n";
   os << indent << "Spacing: " << this->Spacing << " Origin: " << this->Origin[0] << " "
      << this->Origin[1] << " " << this->Origin[2] << "\n";
 }

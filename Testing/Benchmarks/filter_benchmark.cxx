@@ -25,7 +25,8 @@ vtkSmartPointer<vtkPolyData> Grid(vtkIdType n)
 
 double PullForThousand()
 {
-  static const double pull = [] {
+  static const double pull = []
+  {
     auto mesh = geoshaping::testing::triangle_grid(200, 200, 1.0);
     geoshaping::ChainMailDeformer d;
     d.set_mesh(mesh.xyz.data(), mesh.size(), std::move(mesh.adjacency));

@@ -6,7 +6,10 @@ using namespace geoshaping;
 
 namespace
 {
-std::vector<index_t> row(const Adjacency& a, index_t v) { return { a.begin(v), a.end(v) }; }
+std::vector<index_t> row(const Adjacency& a, index_t v)
+{
+  return { a.begin(v), a.end(v) };
+}
 } // namespace
 
 TEST(Adjacency, TriangleEdgesAreMergedAcrossCells)

@@ -84,7 +84,8 @@ TEST(SampleScenes, TrianglesFaceUpAndAreNotDegenerate)
   for (std::size_t c = 0; c < m.num_cells(); ++c)
   {
     const index_t* t = &m.connectivity[3 * c];
-    const Eigen::Vector3d n = (point(m, t[1]) - point(m, t[0])).cross(point(m, t[2]) - point(m, t[0]));
+    const Eigen::Vector3d n =
+      (point(m, t[1]) - point(m, t[0])).cross(point(m, t[2]) - point(m, t[0]));
     ASSERT_GT(n.norm(), 1e-6) << "triangle " << c;
     // The profile descends in x, so the normal points up or toward +x, never down.
     EXPECT_GE(n.z() + n.x(), 0.0) << "triangle " << c;
@@ -168,7 +169,7 @@ TEST(SampleScenes, Figure5CPaintsTheStepBlackItsBorderWhiteTheRestRed)
         ++black;
       }
       else if (std::min(std::abs(x - x0), std::abs(x - x1)) > 2 * p.spacing + 0.1 &&
-        std::min(std::abs(x - x0), std::abs(x - x1)) < 2 * p.spacing + border - 0.5)
+               std::min(std::abs(x - x0), std::abs(x - x1)) < 2 * p.spacing + border - 0.5)
       {
         EXPECT_EQ(mall[v], 1.0f) << "in the border, vertex " << v;
         ++white;

@@ -62,7 +62,13 @@ IslandScene rigid_island()
   return s;
 }
 
-Mesh quad_grid(index_t nx, index_t ny, double h) { return grid(nx, ny, h, false); }
-Mesh triangle_grid(index_t nx, index_t ny, double h) { return grid(nx, ny, h, true); }
+Mesh quad_grid(index_t nx, index_t ny, double h)
+{
+  return grid(nx, ny, h, false);
+}
+Mesh triangle_grid(index_t nx, index_t ny, double h)
+{
+  return grid(nx, ny, h, true);
+}
 
 } // namespace geoshaping::testing

@@ -47,12 +47,14 @@ TEST(Devices, NullDeviceOpensAndRestsAtTheOrigin)
 
 TEST(Devices, SimulatedDeviceFollowsItsScriptOnASteppedClock)
 {
-  SimulatedDevice device([](double t) {
-    DeviceSample s;
-    s.position = Eigen::Vector3d(t, 2 * t, 0);
-    s.buttons = t >= 0.005 ? 1u : 0u;
-    return s;
-  });
+  SimulatedDevice device(
+    [](double t)
+    {
+      DeviceSample s;
+      s.position = Eigen::Vector3d(t, 2 * t, 0);
+      s.buttons = t >= 0.005 ? 1u : 0u;
+      return s;
+    });
   device.set_time_step(0.001);
   ASSERT_TRUE(device.open());
   DeviceSample s;

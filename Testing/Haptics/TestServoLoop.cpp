@@ -16,20 +16,22 @@ class Graphics
 public:
   Graphics(ServoLoop& loop, Eigen::Vector3d anchor, double stiffness)
   {
-    thread_ = std::thread([this, &loop, anchor, stiffness] {
-      std::uint64_t seq = 0;
-      while (!stop_.load())
+    thread_ = std::thread(
+      [this, &loop, anchor, stiffness]
       {
-        SceneSnapshot& s = loop.scene_back();
-        s.stamp = Clock::now();
-        s.sequence = ++seq;
-        s.grasping = true;
-        s.grasp_anchor = anchor;
-        s.grasp_stiffness = stiffness;
-        loop.publish_scene();
-        std::this_thread::sleep_for(16ms);
-      }
-    });
+        std::uint64_t seq = 0;
+        while (!stop_.load())
+        {
+          SceneSnapshot& s = loop.scene_back();
+          s.stamp = Clock::now();
+          s.sequence = ++seq;
+          s.grasping = true;
+          s.grasp_anchor = anchor;
+          s.grasp_stiffness = stiffness;
+          loop.publish_scene();
+          std::this_thread::sleep_for(16ms);
+        }
+      });
   }
   ~Graphics()
   {
@@ -44,7 +46,7 @@ private:
 
 // Polls the device snapshot until `done` holds or 10 s pass (a loaded CI machine may
 // starve the servo thread for a while; the assertions are about what it does, not when).
-template <class Done>
+template<class Done>
 DeviceSnapshot poll_until(ServoLoop& loop, Done done)
 {
   DeviceSnapshot snap;
@@ -61,11 +63,13 @@ DeviceSnapshot poll_until(ServoLoop& loop, Done done)
 
 SimulatedDevice resting_at(const Eigen::Vector3d& x)
 {
-  return SimulatedDevice([x](double) {
-    DeviceSample s;
-    s.position = x;
-    return s;
-  });
+  return SimulatedDevice(
+    [x](double)
+    {
+      DeviceSample s;
+      s.position = x;
+      return s;
+    });
 }
 } // namespace
 
@@ -157,8 +161,8 @@ TEST(ServoLoop, StaleSceneFallsToZeroForce)
   scene.grasp_stiffness = 200.0;
   loop.publish_scene(scene); // published once, then the "pipeline" freezes
   ASSERT_TRUE(loop.start());
-  const DeviceSnapshot snap = poll_until(
-    loop, [](const DeviceSnapshot& s) { return s.status == ForceStatus::stale_scene; });
+  const DeviceSnapshot snap =
+    poll_until(loop, [](const DeviceSnapshot& s) { return s.status == ForceStatus::stale_scene; });
   loop.stop();
   EXPECT_EQ(snap.status, ForceStatus::stale_scene);
   EXPECT_EQ(snap.force, Eigen::Vector3d::Zero());

@@ -47,27 +47,30 @@ TEST(TripleBuffer, TwoThreadStressDeliversOnlyCompleteSnapshotsInOrder)
   std::atomic<bool> done{ false };
   std::atomic<std::uint64_t> taken_so_far{ 0 };
   std::uint64_t last = 0;
-  std::thread writer([&] {
-    for (std::uint64_t seq = 1; seq <= min_published || taken_so_far.load() < min_taken; ++seq)
+  std::thread writer(
+    [&]
     {
-      SceneSnapshot& s = buffer.back();
-      const double v = double(seq);
-      s.sequence = seq;
-      s.grasp_anchor = Eigen::Vector3d(v, -v, 2 * v);
-      s.grasp_stiffness = v;
-      s.contact_triangles.assign(3 * (seq % 17), Eigen::Vector3d(v, v, v));
-      buffer.publish();
-      last = seq;
-    }
-    done.store(true);
-  });
+      for (std::uint64_t seq = 1; seq <= min_published || taken_so_far.load() < min_taken; ++seq)
+      {
+        SceneSnapshot& s = buffer.back();
+        const double v = double(seq);
+        s.sequence = seq;
+        s.grasp_anchor = Eigen::Vector3d(v, -v, 2 * v);
+        s.grasp_stiffness = v;
+        s.contact_triangles.assign(3 * (seq % 17), Eigen::Vector3d(v, v, v));
+        buffer.publish();
+        last = seq;
+      }
+      done.store(true);
+    });
 
   std::uint64_t previous = 0, taken = 0, torn = 0, backwards = 0;
-  auto check = [&] {
+  auto check = [&]
+  {
     const SceneSnapshot& s = buffer.front();
     const double v = double(s.sequence);
     bool whole = s.grasp_anchor == Eigen::Vector3d(v, -v, 2 * v) && s.grasp_stiffness == v &&
-      s.contact_triangles.size() == 3 * (s.sequence % 17);
+                 s.contact_triangles.size() == 3 * (s.sequence % 17);
     for (const Eigen::Vector3d& p : s.contact_triangles)
       whole = whole && p == Eigen::Vector3d(v, v, v);
     torn += !whole;

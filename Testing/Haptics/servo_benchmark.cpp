@@ -97,19 +97,21 @@ void servo_under_load(benchmark::State& state)
       return;
     }
     std::atomic<bool> stop{ false };
-    std::thread graphics([&] {
-      Load load;
-      while (!stop.load())
+    std::thread graphics(
+      [&]
       {
-        fill_scene(loop.scene_back(), frames + 1);
-        loop.publish_scene();
-        if (loaded)
-          moved += load.frame(frames);
-        else
-          std::this_thread::sleep_for(std::chrono::milliseconds(16));
-        ++frames;
-      }
-    });
+        Load load;
+        while (!stop.load())
+        {
+          fill_scene(loop.scene_back(), frames + 1);
+          loop.publish_scene();
+          if (loaded)
+            moved += load.frame(frames);
+          else
+            std::this_thread::sleep_for(std::chrono::milliseconds(16));
+          ++frames;
+        }
+      });
     std::this_thread::sleep_for(run_time);
     stop.store(true);
     graphics.join();

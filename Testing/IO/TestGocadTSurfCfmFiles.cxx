@@ -100,9 +100,11 @@ TEST_P(CfmFile, ReadsWithTheCountsOfTheFileAndPlausibleUtmCoordinates)
 }
 
 INSTANTIATE_TEST_SUITE_P(Crescent, CfmFile, ::testing::ValuesIn(CfmFiles()),
-  [](const ::testing::TestParamInfo<std::string>& info) {
+  [](const ::testing::TestParamInfo<std::string>& info)
+  {
     std::string name = std::filesystem::path(info.param).stem().string();
-    std::replace_if(name.begin(), name.end(), [](unsigned char c) { return !std::isalnum(c); }, '_');
+    std::replace_if(
+      name.begin(), name.end(), [](unsigned char c) { return !std::isalnum(c); }, '_');
     return name;
   });
 

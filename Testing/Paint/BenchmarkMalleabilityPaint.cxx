@@ -17,7 +17,8 @@ namespace
 vtkPointSet* Horizon()
 {
   // About 1000 x 1000 vertices: the profile (length + the step's extra arc) is ~1000 long.
-  static vtkSmartPointer<vtkPointSet> horizon = [] {
+  static vtkSmartPointer<vtkPointSet> horizon = []
+  {
     vtkNew<vtkFaultStepHorizonSource> source;
     source->SetLength(984.0);
     source->SetWidth(999.0);

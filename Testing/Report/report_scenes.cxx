@@ -23,7 +23,8 @@ index_t nearest_vertex(const std::vector<double>& xyz, const Eigen::Vector3d& p)
   double best_d = std::numeric_limits<double>::infinity();
   for (index_t v = 0; v < index_t(xyz.size() / 3); ++v)
   {
-    const double d = (Eigen::Vector3d(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]) - p).squaredNorm();
+    const double d =
+      (Eigen::Vector3d(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]) - p).squaredNorm();
     if (d < best_d)
     {
       best_d = d;
@@ -70,7 +71,7 @@ Scene fault_step_scene(double scale)
   s.adjacency = mesh.adjacency();
   s.malleability = fault_step_malleability(mesh, p, 6.0 * scale);
   s.note = "fault_step_horizon, " + std::to_string(mesh.num_points()) +
-    " vertices: red 0.4, a white border of 6 m, the step black (fault_step_malleability)";
+           " vertices: red 0.4, a white border of 6 m, the step black (fault_step_malleability)";
   grasp_beyond_the_step(s, p);
   return s;
 }
@@ -87,7 +88,7 @@ Scene tet_slab_scene(double scale)
   s.adjacency = mesh.adjacency();
   s.malleability = fault_step_malleability(mesh, p, 6.0 * scale * 0.6);
   s.note = "fault_step_slab, " + std::to_string(mesh.num_points()) + " vertices, " +
-    std::to_string(mesh.num_cells()) + " tetrahedra, painted as the horizon";
+           std::to_string(mesh.num_cells()) + " tetrahedra, painted as the horizon";
   grasp_beyond_the_step(s, p);
   s.grasp = nearest_vertex(s.xyz, Eigen::Vector3d(s.xyz[3 * s.grasp], s.xyz[3 * s.grasp + 1], 0.0));
   return s;
@@ -164,7 +165,8 @@ Scene cfm_scene(const std::string& path)
     }
   s.pull = Eigen::Vector3d(0.0, 0.0, 6.0 * edge);
   s.note = file + " (CRESCENT CFM, CC BY 4.0), " + std::to_string(n) + " vertices in UTM metres, " +
-    "malleability 0.6 with a rigid disc of " + std::to_string(rigid) + " vertices; pull 6 mean edges up";
+           "malleability 0.6 with a rigid disc of " + std::to_string(rigid) +
+           " vertices; pull 6 mean edges up";
   return s;
 }
 

@@ -13,10 +13,10 @@ namespace geoshaping::report
 namespace
 {
 const std::size_t targets[5] = { 9152, 14088, 17289, 18225, 29241 };
-const double paper[5][3] = { { 38, 46, 45 }, { 76, 96, 79 }, { 111, 130, 125 },
-  { 159, 164, 167 }, { 195, 302, 298 } };
+const double paper[5][3] = { { 38, 46, 45 }, { 76, 96, 79 }, { 111, 130, 125 }, { 159, 164, 167 },
+  { 195, 302, 298 } };
 
-template <class F>
+template<class F>
 double time_ms(F f)
 {
   const auto t = std::chrono::steady_clock::now();
@@ -65,7 +65,10 @@ Table1 run_table1(int side, int repetitions, bool progress)
       for (int q = 0; q < 4; ++q)
       {
         d.set_queue(QueueKind(q));
-        ms[q].push_back(time_ms([&] { row.displaced[q] = d.deform(grasp, { 0.0, 0.0, pull }).moved; }));
+        ms[q].push_back(time_ms(
+          [&] {
+            row.displaced[q] = d.deform(grasp, { 0.0, 0.0, pull }).moved;
+          }));
       }
       d.set_queue(QueueKind::fifo_priority);
       d.deform(grasp, { 0.0, 0.0, pull });
@@ -78,7 +81,8 @@ Table1 run_table1(int side, int repetitions, bool progress)
     row.bfs_ms = median(ms[4]);
     table.rows.push_back(row);
     if (progress)
-      std::fprintf(stderr, "[table 1] %zu displaced: FIFO %.3f ms, Priority %.3f, FIFO Priority %.3f, BFS %.3f\n",
+      std::fprintf(stderr,
+        "[table 1] %zu displaced: FIFO %.3f ms, Priority %.3f, FIFO Priority %.3f, BFS %.3f\n",
         row.displaced[2], row.ms[0], row.ms[1], row.ms[2], row.bfs_ms);
   }
   d.reset();

@@ -21,8 +21,8 @@ struct Table1
 {
   std::size_t mesh_vertices = 0;
   std::vector<Table1Row> rows;
-  double bytes_per_vertex = 0.0;       // ChainMailDeformer::memory_bytes() / n
-  std::size_t large_vertices = 0;      // a larger mesh for the same figure
+  double bytes_per_vertex = 0.0;  // ChainMailDeformer::memory_bytes() / n
+  std::size_t large_vertices = 0; // a larger mesh for the same figure
   double large_bytes_per_vertex = 0.0;
 };
 

@@ -12,15 +12,15 @@ namespace geoshaping
 // `bottom` to `top` elevation. All vertices about `spacing` apart, shifted by `origin`.
 struct LayeredSceneParams
 {
-  double length = 200.0;          // x extent
-  double width = 100.0;           // y extent
-  double fault_x = 90.0;          // fault trace at z = top
-  double dip_degrees = 70.0;      // fault dip, in (0, 90]
-  double top = 0.0;               // top of the fault surface
-  double bottom = -120.0;         // bottom of the fault surface
-  double horizon_upper = -30.0;   // footwall elevations of the two horizons
+  double length = 200.0;        // x extent
+  double width = 100.0;         // y extent
+  double fault_x = 90.0;        // fault trace at z = top
+  double dip_degrees = 70.0;    // fault dip, in (0, 90]
+  double top = 0.0;             // top of the fault surface
+  double bottom = -120.0;       // bottom of the fault surface
+  double horizon_upper = -30.0; // footwall elevations of the two horizons
   double horizon_lower = -80.0;
-  double throw_height = 15.0;     // hanging-wall drop
+  double throw_height = 15.0; // hanging-wall drop
   double spacing = 2.0;
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 };

@@ -31,14 +31,14 @@ struct SampleMesh
 // as its height asks for, and extruded along y over `width`; all shifted by `origin`.
 struct FaultStepParams
 {
-  double length = 100.0;       // x extent
-  double width = 60.0;         // y extent
-  double throw_height = 20.0;  // vertical offset of the step
-  double step_run = 6.0;       // horizontal extent of the step (steepest slope 1.5 throw/run)
-  double step_position = 0.5;  // centre of the step, as a fraction of length
-  double spacing = 1.0;        // target edge length along the profile and along y
-  double thickness = 6.0;      // slab only: vertical thickness below the horizon
-  index_t layers = 3;          // slab only: vertex layers below the horizon
+  double length = 100.0;      // x extent
+  double width = 60.0;        // y extent
+  double throw_height = 20.0; // vertical offset of the step
+  double step_run = 6.0;      // horizontal extent of the step (steepest slope 1.5 throw/run)
+  double step_position = 0.5; // centre of the step, as a fraction of length
+  double spacing = 1.0;       // target edge length along the profile and along y
+  double thickness = 6.0;     // slab only: vertical thickness below the horizon
+  index_t layers = 3;         // slab only: vertex layers below the horizon
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 };
 

@@ -18,8 +18,8 @@
 #include <cmath>
 #include <limits>
 
-using stability::Grid;
 using stability::Check;
+using stability::Grid;
 using stability::Slab;
 using Filter = vtkChainMailDeformationFilter;
 
@@ -28,7 +28,8 @@ namespace
 const double kInf = std::numeric_limits<double>::infinity();
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-vtkSmartPointer<Filter> Make(vtkIdType grasp, double dx, double dy, double dz, int queue = Filter::FIFO_PRIORITY)
+vtkSmartPointer<Filter> Make(
+  vtkIdType grasp, double dx, double dy, double dz, int queue = Filter::FIFO_PRIORITY)
 {
   auto f = vtkSmartPointer<Filter>::New();
   f->SetGraspPointId(grasp);

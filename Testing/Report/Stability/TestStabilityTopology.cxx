@@ -18,8 +18,8 @@
 #include <chrono>
 #include <cstdio>
 
-using stability::Grid;
 using stability::Check;
+using stability::Grid;
 using stability::Slab;
 using Filter = vtkChainMailDeformationFilter;
 
@@ -167,7 +167,8 @@ TEST(Topology, MixedCellTypesInAnUnstructuredGrid)
     pts->InsertNextPoint(5 + (i & 1), (i >> 1) & 1, i >> 2);
     mal->InsertNextTuple1(0.5);
   }
-  const vtkIdType hex[8] = { base, base + 1, base + 3, base + 2, base + 4, base + 5, base + 7, base + 6 };
+  const vtkIdType hex[8] = { base, base + 1, base + 3, base + 2, base + 4, base + 5, base + 7,
+    base + 6 };
   ug->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
   const vtkIdType wedge[6] = { 0, 1, 3, base, base + 1, base + 2 };
   ug->InsertNextCell(VTK_WEDGE, 6, wedge);
@@ -321,7 +322,8 @@ TEST(Scale, FourMillionVertexMeshFramesCostTheDisplacedRegionOnly)
   {
     t = clock::now();
     const auto r = d.deform(grasp, { 0.0, 0.0, 2.0 * k });
-    worst_ms = std::max(worst_ms, std::chrono::duration<double, std::milli>(clock::now() - t).count());
+    worst_ms =
+      std::max(worst_ms, std::chrono::duration<double, std::milli>(clock::now() - t).count());
     ASSERT_TRUE(r.ok);
     moved = r.moved;
     // each moved vertex offers its 6 neighbours at most once per sponsor
