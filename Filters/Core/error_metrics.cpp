@@ -230,7 +230,7 @@ BendingError bending_error(const std::vector<Eigen::Vector3d>& rest,
   for (index_t v : vertices)
     if (v >= 0 && std::size_t(v) < n)
       in_region[std::size_t(v)] = 1;
-  // (low end, high end, triangle) of each edge of a triangle touching the region.
+  // (low end, high end, triangle) of each edge of a triangle inside the region.
   struct Side
   {
     index_t a, b;
@@ -241,18 +241,15 @@ BendingError bending_error(const std::vector<Eigen::Vector3d>& rest,
   for (std::size_t t = 0; 3 * t + 2 < triangles.size(); ++t)
   {
     const index_t* c = triangles.data() + 3 * t;
-    bool valid = true, touches = false;
+    bool inside = true;
     for (int k = 0; k < 3; ++k)
-    {
-      valid = valid && c[k] >= 0 && std::size_t(c[k]) < n;
-      touches = touches || (valid && in_region[std::size_t(c[k])]);
-    }
-    if (!valid || !touches)
+      inside = inside && c[k] >= 0 && std::size_t(c[k]) < n && in_region[std::size_t(c[k])];
+    if (!inside)
       continue;
     for (int k = 0; k < 3; ++k)
     {
       const index_t a = c[k], b = c[(k + 1) % 3];
-      if (a != b && (in_region[std::size_t(a)] || in_region[std::size_t(b)]))
+      if (a != b)
         sides.push_back({ std::min(a, b), std::max(a, b), t });
     }
   }

@@ -87,11 +87,13 @@ bool Relaxer::update(index_t v, RelaxationReport& report)
   const auto degree = adj.degree(v);
   if (degree == 0)
     return false;
-  mean /= double(degree);
-  Eigen::Vector3d target = mesh_.frame == ValidRegionFrame::axes ? box.clamp(mean) : mean;
-  if (!target.allFinite())
+  mean /= double(degree) + rest_tether;
+  const Eigen::Vector3d q = mesh_.frame == ValidRegionFrame::axes ? box.clamp(mean) : mean;
+  if (!q.allFinite())
     return false;
-  for (int halving = 0; halving <= max_halvings; ++halving)
+  // Tries current + t (q - current) for t = omega, 1, 1/2, 1/4, ...
+  Eigen::Vector3d target = current + over_relaxation * (q - current);
+  for (int attempt = 0; attempt <= max_halvings + 1; ++attempt)
   {
     if (target == current)
       break;
@@ -106,7 +108,7 @@ bool Relaxer::update(index_t v, RelaxationReport& report)
     }
     if (ok)
       return true;
-    target = current + 0.5 * (target - current);
+    target = attempt == 0 ? q : Eigen::Vector3d(current + 0.5 * (target - current));
   }
   u_[vi] = current;
   ++report.rejected;
@@ -139,7 +141,6 @@ RelaxationReport Relaxer::relax(index_t grasp, const std::vector<index_t>& verti
     }
   }
   RelaxationReport report;
-  report.free = free_.size();
   start_.reserve(free_.size());
   for (index_t v : free_)
     start_.push_back(u_[std::size_t(v)]);
@@ -150,21 +151,39 @@ RelaxationReport Relaxer::relax(index_t grasp, const std::vector<index_t>& verti
       budget_ =
         std::max({ budget_, link_distance(mesh_, u_, v, *n), link_distance(mesh_, u_, *n, v) });
   const double tolerance = options.tolerance * mesh_.scale();
+  const double growth = growth_threshold * mesh_.scale();
   for (int sweep = 0; sweep < options.iterations; ++sweep)
   {
     double largest = 0.0;
+    frontier_.clear();
     for (index_t v : free_)
     {
       const Eigen::Vector3d before = u_[std::size_t(v)];
-      if (update(v, report))
-        largest = std::max(largest, (u_[std::size_t(v)] - before).cwiseAbs().maxCoeff());
+      if (!update(v, report))
+        continue;
+      const double step = (u_[std::size_t(v)] - before).cwiseAbs().maxCoeff();
+      largest = std::max(largest, step);
+      if (step > growth)
+        frontier_.push_back(v);
     }
     report.updates += free_.size();
+    // One more ring for the next sweep: the resting neighbours of the vertices that moved.
+    for (index_t v : frontier_)
+      for (const index_t* n = adj.begin(v); n != adj.end(v); ++n)
+        if (!is_free_[std::size_t(*n)] && u_[std::size_t(*n)].isZero(0.0) &&
+            !holds_still(mesh_, *n, grasp))
+        {
+          is_free_[std::size_t(*n)] = 1;
+          free_.push_back(*n);
+          start_.push_back(u_[std::size_t(*n)]);
+          touched_.push_back(*n);
+        }
     report.iterations = sweep + 1;
     report.update = largest / mesh_.scale();
     if (largest <= tolerance || (options.stop && options.stop()))
       break;
   }
+  report.free = free_.size();
   for (std::size_t i = 0; i < free_.size(); ++i)
     if (u_[std::size_t(free_[i])] != start_[i])
       changed_.push_back(free_[i]);

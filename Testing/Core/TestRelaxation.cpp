@@ -36,24 +36,31 @@ void deform(Frame& f, const double* xyz, index_t n, const Adjacency& adjacency,
   f.grasp = grasp;
 }
 
-double dirichlet_energy(const LinkMesh& m, const Displacements& u)
+// The energy the relaxation lowers (relaxation.h), with the tether over every vertex:
+// the fixed ones add a constant.
+double energy(const LinkMesh& m, const Displacements& u)
 {
   double e = 0.0;
   const Adjacency& adj = *m.adjacency;
   for (index_t v = 0; v < adj.size(); ++v)
+  {
+    e += rest_tether * u[v].squaredNorm();
     for (const index_t* n = adj.begin(v); n != adj.end(v); ++n)
       if (*n < v)
         e += (u[v] - u[*n]).squaredNorm();
+  }
   return e;
 }
 
-// The soft vertices the frame displaced (the region the smoothness is measured over).
-std::vector<index_t> displaced_soft(const Frame& f)
+// The soft vertices displaced by the frame or by its relaxation (the region the
+// smoothness is measured over, the same before and after).
+std::vector<index_t> displaced_soft(const Frame& f, const Relaxer& r)
 {
   std::vector<index_t> soft;
-  for (index_t v : f.deformer.moved())
-    if (!f.links.rigid[std::size_t(v)])
-      soft.push_back(v);
+  for (const std::vector<index_t>* list : { &f.deformer.moved(), &r.changed() })
+    for (index_t v : *list)
+      if (!f.links.rigid[std::size_t(v)] && std::find(soft.begin(), soft.end(), v) == soft.end())
+        soft.push_back(v);
   return soft;
 }
 
@@ -173,8 +180,9 @@ TEST(Relaxation, GraspPinsAndRigidIslandStayBitForBit)
       }
     EXPECT_GT(rigid_moved, 0u); // the island was carried, and stays as carried
     EXPECT_EQ(rigid_error(f.links, r.displacements()), 0.0);
-    for (index_t v : r.changed())
-      EXPECT_TRUE(f.deformer.moved_this_frame(v)); // never beyond the displaced region
+    for (index_t v : r.changed()) // the region grows only over resting soft vertices
+      EXPECT_TRUE(f.deformer.moved_this_frame(v) ||
+                  (before[v].isZero(0.0) && !pins[v] && scene.malleability[v] > 0.0f));
   }
 }
 
@@ -192,10 +200,11 @@ TEST(Relaxation, SatisfiedLinksStaySatisfiedAndNeitherELinkNorTheEnergyGrows)
     const RelaxationReport report = relax_frame(r, f.deformer, f.grasp, 10);
     EXPECT_EQ(report.iterations, 10);
     ASSERT_FALSE(r.changed().empty());
-    expect_link_rule(f.links, before, r.displacements(), f.deformer.moved());
-    EXPECT_LE(link_error(f.links, r.displacements(), f.deformer.moved()),
-      link_error(f.links, before, f.deformer.moved()));
-    EXPECT_LT(dirichlet_energy(f.links, r.displacements()), dirichlet_energy(f.links, before));
+    std::vector<index_t> region = f.deformer.moved();
+    region.insert(region.end(), r.changed().begin(), r.changed().end());
+    expect_link_rule(f.links, before, r.displacements(), region);
+    EXPECT_LE(link_error(f.links, r.displacements(), region), link_error(f.links, before, region));
+    EXPECT_LT(energy(f.links, r.displacements()), energy(f.links, before));
   }
 }
 
@@ -205,11 +214,11 @@ TEST(Relaxation, EnergyNeverGrowsFromOneSweepToTheNext)
   lifted_fault_step(s, true);
   const Frame& f = s.frame;
   Relaxer r(f.links);
-  double previous = dirichlet_energy(f.links, displacements(f.deformer));
+  double previous = energy(f.links, displacements(f.deformer));
   for (int sweeps = 1; sweeps <= 6; ++sweeps)
   {
     relax_frame(r, f.deformer, f.grasp, sweeps);
-    const double e = dirichlet_energy(f.links, r.displacements());
+    const double e = energy(f.links, r.displacements());
     EXPECT_LE(e, previous) << sweeps;
     previous = e;
   }
@@ -221,24 +230,24 @@ TEST(Relaxation, FaultStepBendsLess)
   lifted_fault_step(s, false);
   const Frame& f = s.frame;
   const std::vector<Eigen::Vector3d> rest = rest_of(s.mesh);
-  const std::vector<index_t> soft = displaced_soft(f);
+  Relaxer r(f.links);
+  relax_frame(r, f.deformer, f.grasp, 100);
+  const std::vector<index_t> soft = displaced_soft(f, r);
   const BendingError before =
     bending_error(rest, s.mesh.connectivity, displacements(f.deformer), soft);
-  Relaxer r(f.links);
-  relax_frame(r, f.deformer, f.grasp, 20);
   const BendingError after = bending_error(rest, s.mesh.connectivity, r.displacements(), soft);
   std::printf("bending over %zu edges: max %.4f -> %.4f rad, rms %.4f -> %.4f rad\n", after.edges,
     before.max, after.max, before.rms, after.rms);
-  // Measured: max 1.73 -> 1.47, rms 0.171 -> 0.146 (see relaxation.h for what the
-  // satisfied links keep).
-  EXPECT_LT(after.rms, 0.9 * before.rms);
-  EXPECT_LT(after.max, 0.9 * before.max);
+  // Measured: max 1.73 -> 1.19, rms 0.133 -> 0.096; what is left is mostly the cliff
+  // along the grasp's row, links ChainMail left violated by ~6 edge lengths.
+  EXPECT_LT(after.rms, 0.8 * before.rms);
+  EXPECT_LT(after.max, 0.8 * before.max);
 }
 
 TEST(Relaxation, WorkFollowsTheDisplacedRegionNotTheMesh)
 {
   RelaxationReport reports[2];
-  const index_t sizes[2] = { 61, 161 };
+  const index_t sizes[2] = { 101, 201 };
   for (int k = 0; k < 2; ++k)
   {
     const index_t n = sizes[k];
@@ -253,6 +262,11 @@ TEST(Relaxation, WorkFollowsTheDisplacedRegionNotTheMesh)
     }
     Relaxer r(f.links);
     reports[k] = relax_frame(r, f.deformer, f.grasp, 8);
+    for (index_t v : r.changed())
+    {
+      const index_t i = v % n, j = v / n;
+      ASSERT_TRUE(i > 0 && j > 0 && i < n - 1 && j < n - 1); // the grown region too
+    }
   }
   EXPECT_GT(reports[0].updates, 0u);
   EXPECT_EQ(reports[0].updates, reports[1].updates);

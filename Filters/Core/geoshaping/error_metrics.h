@@ -106,8 +106,9 @@ ReferenceError reference_error(const LinkMesh& mesh, const Displacements& u,
 // two are coplanar: the jump of the surface normal across e), and
 //   bend_e = | theta_e(x0 + u) - theta_e(x0) |,
 // the change of that jump the deformation made (so the rest shape's own relief counts 0;
-// a rigid motion gives 0 up to rounding). Over the edges with an end in `vertices`
-// (e.g. the displaced soft region):
+// a rigid motion gives 0 up to rounding). Over the edges whose two triangles have all
+// their vertices in `vertices` (e.g. the displaced soft region: the intended crease
+// where it meets a rigid part is left out):
 //   max = max_e bend_e,   rms = sqrt(mean_e bend_e^2),   in radians.
 // Folding a flat sheet by phi along a line of edges gives max = phi. Triangles must be
 // consistently oriented; border and non-manifold edges (not exactly two triangles) and

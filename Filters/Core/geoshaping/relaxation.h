@@ -16,24 +16,35 @@ class ChainMailDeformer;
 // ChainMail moves each vertex to the nearest point of one valid region, so on a triangle
 // grid the result is faceted (ridges, saw-tooth "teeth" along diagonals). The relaxation
 // smooths the displacement field u = x - x0 (not the positions: the rest shape's own
-// relief is kept) by Gauss-Seidel sweeps of the Dirichlet energy
+// relief is kept) by Gauss-Seidel sweeps, over-relaxed, of the energy
 //
-//   E_D(u) = sum over edges (a, b) of |u_a - u_b|^2,
+//   E(u) = sum over edges (a, b) of |u_a - u_b|^2  +  alpha sum over v in F of |u_v|^2
 //
-// minimised over the free vertices F = the start's displaced vertices that are neither
-// the grasp, nor pinned, nor rigid (malleability 0, or params t = k = 1, h = 0), each kept
-// inside its valid regions. Every other vertex is fixed: grasp, pins and rigid regions
-// stay bit for bit as given, vertices outside the start stay at rest, so the relaxed
-// region never grows beyond the displaced one.
+// (the Dirichlet energy E_D plus a weak tether to rest, alpha = rest_tether), minimised
+// over the free vertices F, each kept inside its valid regions. Every other vertex is
+// fixed: grasp, pins and rigid vertices (malleability 0, or params t = k = 1, h = 0) stay
+// bit for bit as given. F starts as the start's displaced vertices that are none of
+// those, and grows by one ring per sweep: after a sweep, the resting neighbours (again
+// neither grasp, pinned nor rigid) of every vertex of F that moved more than
+// growth_threshold * L in it join F. Why grow: ChainMail leaves every vertex on the
+// border of its sponsor's region, so its facets are at the steepest slope the links
+// allow and meet the rest at a staircase along the diagonals (the "teeth"). Lowering a
+// facet would break a satisfied link (below); what rounds the shape is the rest beyond
+// the border rising toward its neighbours, ring after ring, which then lets the facets
+// above it leave their steepest slope. Why the tether: without it nothing holds the
+// grown region, and the least-E_D shape is the whole soft sheet translated with the
+// grasp; with it the relaxed displacement decays away from the grasp over about
+// sqrt(degree / alpha) edges (~17 on a triangle grid), and growth stops where it falls
+// below the threshold.
 //
 // Update of a free vertex v with neighbours N(v) (all of them, fixed or free, at their
-// current values): E_D restricted to u_v is |N(v)| |u_v - m|^2 + const with the umbrella
-// target m = mean_{n in N(v)} u_n, an isotropic quadratic, so its minimiser over a convex
-// set C is the Euclidean projection of m onto C. C is where the links of v stay as good
-// as the rule below asks. For each neighbour n there are two directed links (v w.r.t. n
-// with v's params, n w.r.t. v with n's params, valid_region.h), each with its distance
-// d to its region (link_distance). The rule, with B = the largest d over the links of F
-// in the start (E_link of the start, in mesh units):
+// current values): E restricted to u_v is (|N(v)| + alpha) |u_v - m|^2 + const with
+// m = sum_{n in N(v)} u_n / (|N(v)| + alpha), an isotropic quadratic, so its minimiser
+// over a convex set C is the Euclidean projection q of m onto C. C is where the links of
+// v stay as good as the rule below asks. For each neighbour n there are two directed
+// links (v w.r.t. n with v's params, n w.r.t. v with n's params, valid_region.h), each
+// with its distance d to its region (link_distance). The rule, with B = the largest d
+// over the links of the initial F in the start (E_link of the start, in mesh units):
 //
 //   a link with d = 0 (satisfied) must keep d = 0;
 //   a violated link may take any d <= max(its d, B).
@@ -48,31 +59,38 @@ class ChainMailDeformer;
 // - Link: the cylinders of different links intersect in no closed form; q = m.
 //
 // Acceptance, the projection back ("after each smoothing step the links are checked",
-// with link_distance itself, so rounding cannot break the rule): q is taken if every link
-// of v obeys the rule, otherwise q is halved toward the current u_v (at most 30 times)
-// and the current value is kept if no halving passes. Each link's distance is convex in
-// u_v and the current point passes, so the accepted points of the segment form an
-// interval from the current point, along which E_D decreases (convex, least at q). Hence
-// after every single update: the rule holds for every link of the mesh, and E_D never
-// grows (equality only when v does not move).
-//
-// Why the result stays faceted in places: ChainMail leaves each vertex on the border of
-// its sponsor's region, so a convex ridge at the steepest allowed slope cannot be lowered
-// without breaking a satisfied link; the relaxation rounds the concave creases and the
-// violated (rigid/soft) borders, and lowers E_D, but keeps what the satisfied links pin.
+// with link_distance itself, so rounding cannot break the rule): the update tries
+// u_v = c + t (q - c), c the current value, for t = omega (over_relaxation), then 1,
+// 1/2, 1/4, ... (30 halvings), and takes the first that obeys the rule for every link of
+// v; none passing keeps c. Each link's distance is convex in u_v and c passes, so the
+// passing t form an interval from 0. Along the ray E is a parabola least at
+// t* = (m - c).(q - c) / |q - c|^2 >= 1 (q is the projection of m onto a convex set
+// holding c), so E(t) < E(0) for 0 < t < 2 t*, which holds every t tried (omega < 2).
+// Hence after every single update: the rule holds for every link of the mesh, and E
+// never grows (equality only when v does not move).
 //
 // A sweep visits F in the order of the start list (for a ChainMail frame: the order of
 // moving, outward from the grasp). The run stops after `iterations` sweeps, when the
 // largest coordinate change of a sweep is <= tolerance * L (L the mean edge length), or
 // when `stop` returns true (asked after every sweep). Repeated sweeps converge toward
-// the constrained harmonic field: the least-E_D shape inside the valid regions with the
-// grasp, pins, rigid parts and the border of the displaced region fixed.
+// the least-E shape inside the valid regions with the grasp, pins and rigid parts fixed.
 //
 // Tetrahedral meshes are relaxed the same way (the edge graph Laplacian).
 //
-// Cost: per sweep O(sum of the degrees of F), at most 31 link checks per edge; memory
-// O(n) scratch allocated once by the constructor, each call resets only what the
-// previous one touched. Never O(mesh) per call.
+// Cost: per sweep O(sum of the degrees of F), at most 31 link checks per edge, with F at
+// most the displaced region grown by one ring per sweep so far; memory O(n) scratch
+// allocated once by the constructor, each call resets only what the previous one
+// touched. Never O(mesh) per call (unless the sweeps reach the whole mesh).
+
+// A free vertex that moves more than this (times L) in a sweep brings its resting
+// neighbours into F for the next sweep.
+constexpr double growth_threshold = 1e-3;
+// The over-relaxation factor omega of each update (successive over-relaxation; 1.9
+// reached the smoothest Figure 5D in 100 sweeps of 1.5, 1.7, 1.9).
+constexpr double over_relaxation = 1.9;
+// The weight alpha of the tether to rest (relative to the unit weight of an edge).
+constexpr double rest_tether = 0.02;
+
 struct RelaxationOptions
 {
   int iterations = 0;      // sweeps; 0 leaves the start exactly as given
@@ -84,7 +102,7 @@ struct RelaxationReport
 {
   int iterations = 0;          // sweeps run
   double update = 0.0;         // largest coordinate change in the last sweep, / L
-  std::size_t free = 0;        // |F|
+  std::size_t free = 0;        // |F| at the end (it grows ring by ring)
   std::size_t updates = 0;     // vertex updates (|F| per sweep): the work done
   std::size_t rejected = 0;    // updates where no halving passed (the vertex stayed)
   std::size_t link_checks = 0; // link_distance evaluations
@@ -121,7 +139,8 @@ private:
   Displacements start_;               // per free vertex: its start value
   std::vector<double> before_;        // scratch: link distances before an update
   std::vector<index_t> changed_;
-  double budget_ = 0.0; // the start's largest link distance over the free vertices' links
+  std::vector<index_t> frontier_; // scratch: free vertices that moved more than growth
+  double budget_ = 0.0;           // the start's largest link distance over the free vertices' links
 };
 
 // The relaxation after a deformer's frame (its moved vertices and their displacements).
