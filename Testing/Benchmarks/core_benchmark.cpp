@@ -94,14 +94,18 @@ void BM_BfsFloor(benchmark::State& state)
   state.SetLabel("BFS floor");
 }
 
-// Figure 5D's scene: the painted fault step, grasped mid-step (FIFO Priority, lift 10).
-Scene& fault_step()
+// Figure 5D's scene: the painted fault step, grasped mid-step (FIFO Priority, lift 10);
+// its triangles for the bending measure.
+Scene& fault_step(const SampleMesh** triangles = nullptr)
 {
   static Scene s;
+  static SampleMesh mesh;
+  if (triangles)
+    *triangles = &mesh;
   if (s.deformer)
     return s;
   const FaultStepParams p;
-  const SampleMesh mesh = fault_step_horizon(p);
+  mesh = fault_step_horizon(p);
   const std::vector<float> m = fault_step_malleability(mesh, p);
   s.deformer = std::make_unique<ChainMailDeformer>();
   s.deformer->set_mesh(mesh.xyz.data(), mesh.num_points(), mesh.adjacency());
@@ -116,12 +120,44 @@ Scene& fault_step()
   return s;
 }
 
+// E_link (over the relaxed region) and, on a triangle mesh, the bending of the soft
+// vertices displaced before or after, of the frame and of its relaxation: counters.
+void quality(benchmark::State& state, const LinkMesh& links, const ChainMailDeformer& d,
+  const Relaxer& r, const SampleMesh* triangles)
+{
+  std::vector<index_t> region = d.moved();
+  region.insert(region.end(), r.changed().begin(), r.changed().end());
+  const Displacements before = displacements(d);
+  state.counters["elink_before"] = link_error(links, before, region);
+  state.counters["elink_after"] = link_error(links, r.displacements(), region);
+  if (!triangles)
+    return;
+  std::vector<index_t> soft;
+  std::vector<std::uint8_t> seen(std::size_t(links.size()), 0);
+  for (index_t v : region)
+    if (!links.rigid[std::size_t(v)] && !seen[std::size_t(v)])
+    {
+      seen[std::size_t(v)] = 1;
+      soft.push_back(v);
+    }
+  std::vector<Eigen::Vector3d> rest(std::size_t(links.size()));
+  for (index_t v = 0; v < links.size(); ++v)
+    rest[std::size_t(v)] = Eigen::Vector3d(triangles->xyz.data() + 3 * v);
+  const BendingError b0 = bending_error(rest, triangles->connectivity, before, soft);
+  const BendingError b1 = bending_error(rest, triangles->connectivity, r.displacements(), soft);
+  state.counters["bend_max_before"] = b0.max;
+  state.counters["bend_max_after"] = b1.max;
+  state.counters["bend_rms_before"] = b0.rms;
+  state.counters["bend_rms_after"] = b1.rms;
+}
+
 // Arguments: displaced target (0: the fault step), sweeps.
 void BM_Relaxation(benchmark::State& state)
 {
   const std::size_t target = std::size_t(state.range(0));
   const int sweeps = int(state.range(1));
-  Scene& s = target == 0 ? fault_step() : scene(side_for(target), target);
+  const SampleMesh* triangles = nullptr;
+  Scene& s = target == 0 ? fault_step(&triangles) : scene(side_for(target), target);
   s.deformer->set_queue(QueueKind::fifo_priority);
   const LinkMesh links = link_mesh(*s.deformer);
   Relaxer relaxer(links);
@@ -146,6 +182,8 @@ void BM_Relaxation(benchmark::State& state)
   state.counters["relax_ms"] = 1e3 * relax_s / n;
   state.counters["relax_over_frame"] = relax_s / frame_s;
   state.counters["sweeps_run"] = report.iterations;
+  state.counters["relaxed"] = double(relaxer.changed().size());
+  quality(state, links, *s.deformer, relaxer, triangles);
   state.SetLabel(target == 0 ? "fault step" : "painted grid");
 }
 
