@@ -27,7 +27,8 @@
  * malleability, the pins or the transfer curves change. `RelaxationIterations` (default
  * 0, off) then smooths the displaced soft region (facets, saw-tooth "teeth") within the
  * links: grasp, pins and rigid regions stay exact, satisfied links stay satisfied, the
- * link error never grows; same cost behaviour.
+ * link error never grows; its region widens by one ring per sweep (docs/deformer.md,
+ * "Relaxation").
  *
  * Changing only the grasp, the displacement, the queue or the transfer curves reuses
  * the adjacency and rest state; the output points persist between updates and only the
@@ -200,10 +201,12 @@ public:
   /// Sweeps of the relaxation pass after ChainMail and the refinement (0, the default:
   /// none), at most MAX_RELAXATION_ITERATIONS (200, the plugin's range; larger values
   /// are clamped). Each sweep moves every displaced soft vertex toward the mean of its
-  /// neighbours (Gauss-Seidel on the Dirichlet energy of the displacement, the core's
-  /// relaxation.h) as far as its links allow: grasp, pins and rigid vertices stay
-  /// exactly, a link that holds keeps holding, the link error never grows. The pass
-  /// stops early once nothing moves, or when the pipeline asks the filter to abort.
+  /// neighbours (over-relaxed Gauss-Seidel on the Dirichlet energy of the displacement
+  /// with a weak tether to rest, the core's relaxation.h) as far as its links allow, and
+  /// adds the resting soft neighbours of the vertices that moved for the next sweep:
+  /// grasp, pins and rigid vertices stay exactly, a link that holds keeps holding, the
+  /// link error never grows. The pass stops early once nothing moves, or when the
+  /// pipeline asks the filter to abort.
   vtkSetClampMacro(RelaxationIterations, int, 0, MAX_RELAXATION_ITERATIONS);
   vtkGetMacro(RelaxationIterations, int);
   ///@}
