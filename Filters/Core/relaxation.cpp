@@ -19,14 +19,6 @@ bool holds_still(const LinkMesh& m, index_t v, index_t grasp)
   const bool point_region = p.stretch == 1.0 && p.compression == 1.0 && p.shear == 0.0;
   return v == grasp || m.is_pinned(v) || m.rigid[std::size_t(v)] || point_region;
 }
-
-// Widens the slab [lo, hi] of one direction, per axis, to include w: the box in which no
-// axis of that direction gets further from its region than it is now.
-void widen(Box& b, const Eigen::Vector3d& w)
-{
-  b.lo = b.lo.cwiseMin(w);
-  b.hi = b.hi.cwiseMax(w);
-}
 } // namespace
 
 Relaxer::Relaxer(const LinkMesh& mesh)
