@@ -3,6 +3,8 @@
 #include "geoshaping/chainmail_deformer.h"
 #include "geoshaping/valid_region.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -197,6 +199,88 @@ ReferenceError reference_error(const LinkMesh& m, const Displacements& u, const 
   for (index_t v : vertices)
     accumulate(u, r, v, worst, sum, count);
   return finish(m, worst, sum, count);
+}
+
+namespace
+{
+// Normal (not normalised) of triangle t at positions rest + u.
+Eigen::Vector3d triangle_normal(const std::vector<Eigen::Vector3d>& rest,
+  const std::vector<index_t>& triangles, const Displacements& u, std::size_t t, bool deformed)
+{
+  Eigen::Vector3d p[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    const std::size_t v = std::size_t(triangles[3 * t + std::size_t(k)]);
+    p[k] = deformed ? Eigen::Vector3d(rest[v] + u[v]) : rest[v];
+  }
+  return (p[1] - p[0]).cross(p[2] - p[0]);
+}
+
+double normal_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+} // namespace
+
+BendingError bending_error(const std::vector<Eigen::Vector3d>& rest,
+  const std::vector<index_t>& triangles, const Displacements& u,
+  const std::vector<index_t>& vertices)
+{
+  const std::size_t n = std::min(rest.size(), u.size());
+  std::vector<std::uint8_t> in_region(n, 0);
+  for (index_t v : vertices)
+    if (v >= 0 && std::size_t(v) < n)
+      in_region[std::size_t(v)] = 1;
+  // (low end, high end, triangle) of each edge of a triangle inside the region.
+  struct Side
+  {
+    index_t a, b;
+    std::size_t t;
+    bool operator<(const Side& o) const { return a != o.a ? a < o.a : b != o.b ? b < o.b : t < o.t; }
+  };
+  std::vector<Side> sides;
+  for (std::size_t t = 0; 3 * t + 2 < triangles.size(); ++t)
+  {
+    const index_t* c = triangles.data() + 3 * t;
+    bool inside = true;
+    for (int k = 0; k < 3; ++k)
+      inside = inside && c[k] >= 0 && std::size_t(c[k]) < n && in_region[std::size_t(c[k])];
+    if (!inside)
+      continue;
+    for (int k = 0; k < 3; ++k)
+    {
+      const index_t a = c[k], b = c[(k + 1) % 3];
+      if (a != b)
+        sides.push_back({ std::min(a, b), std::max(a, b), t });
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  BendingError e;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < sides.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < sides.size() && sides[j].a == sides[i].a && sides[j].b == sides[i].b)
+      ++j;
+    if (j - i == 2)
+    {
+      const Eigen::Vector3d r1 = triangle_normal(rest, triangles, u, sides[i].t, false);
+      const Eigen::Vector3d r2 = triangle_normal(rest, triangles, u, sides[i + 1].t, false);
+      const Eigen::Vector3d d1 = triangle_normal(rest, triangles, u, sides[i].t, true);
+      const Eigen::Vector3d d2 = triangle_normal(rest, triangles, u, sides[i + 1].t, true);
+      if (!r1.isZero(0.0) && !r2.isZero(0.0) && !d1.isZero(0.0) && !d2.isZero(0.0))
+      {
+        const double bend =
+          finite_or_inf(std::abs(normal_angle(d1, d2) - normal_angle(r1, r2)));
+        e.max = std::max(e.max, bend);
+        sum += bend * bend;
+        ++e.edges;
+      }
+    }
+    i = j;
+  }
+  e.rms = e.edges > 0 ? std::sqrt(sum / double(e.edges)) : 0.0;
+  return e;
 }
 
 double temporal_error(

@@ -85,8 +85,12 @@ int vtkChainMailDeformationFilter::RequestData(
   this->NumberOfRefinementSweeps = 0;
   this->NumberOfRefinedPoints = 0;
   this->LastRefinementMilliseconds = 0.0;
+  this->NumberOfRelaxationSweeps = 0;
+  this->NumberOfRelaxedPoints = 0;
+  this->LastRelaxationMilliseconds = 0.0;
   vtkInternals& in = *this->Internals;
   in.Refining = false;
+  in.Relaxing = false;
 
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   if (controller && controller->GetNumberOfProcesses() > 1)
@@ -155,6 +159,7 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "GenerateDiagnostics: " << this->GenerateDiagnostics << "\n";
   os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";
+  os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
   os << indent << "NumberOfEdits: " << this->Internals->EditRecords.size() << "\n";
   os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";
 }

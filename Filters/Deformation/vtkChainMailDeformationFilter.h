@@ -24,7 +24,11 @@
  * displaced region, grasp and pins fixed), so a user can buy a lower E_link with time.
  * Its cost follows the displaced region (plus any rigid region it touches), never the
  * mesh; the per-vertex link data is rebuilt (O(points)) only when the geometry, the
- * malleability, the pins or the transfer curves change.
+ * malleability, the pins or the transfer curves change. `RelaxationIterations` (default
+ * 0, off) then smooths the displaced soft region (facets, saw-tooth "teeth") within the
+ * links: grasp, pins and rigid regions stay exact, satisfied links stay satisfied, the
+ * link error never grows; its region widens by one ring per sweep (docs/deformer.md,
+ * "Relaxation").
  *
  * Changing only the grasp, the displacement, the queue or the transfer curves reuses
  * the adjacency and rest state; the output points persist between updates and only the
@@ -61,7 +65,8 @@
 
 #include <limits> // For quiet_NaN
 
-#include <memory> // For std::unique_ptr
+#include <functional> // For std::function
+#include <memory>     // For std::unique_ptr
 #include <string> // For std::string
 #include <vector> // For std::vector
 
@@ -101,7 +106,8 @@ public:
   };
   enum
   {
-    MAX_REFINEMENT_ITERATIONS = 64
+    MAX_REFINEMENT_ITERATIONS = 64,
+    MAX_RELAXATION_ITERATIONS = 200
   };
 
   ///@{
@@ -192,6 +198,20 @@ public:
   ///@}
 
   ///@{
+  /// Sweeps of the relaxation pass after ChainMail and the refinement (0, the default:
+  /// none), at most MAX_RELAXATION_ITERATIONS (200, the plugin's range; larger values
+  /// are clamped). Each sweep moves every displaced soft vertex toward the mean of its
+  /// neighbours (over-relaxed Gauss-Seidel on the Dirichlet energy of the displacement
+  /// with a weak tether to rest, the core's relaxation.h) as far as its links allow, and
+  /// adds the resting soft neighbours of the vertices that moved for the next sweep:
+  /// grasp, pins and rigid vertices stay exactly, a link that holds keeps holding, the
+  /// link error never grows. The pass stops early once nothing moves, or when the
+  /// pipeline asks the filter to abort.
+  vtkSetClampMacro(RelaxationIterations, int, 0, MAX_RELAXATION_ITERATIONS);
+  vtkGetMacro(RelaxationIterations, int);
+  ///@}
+
+  ///@{
   /// When on (default), malleability 0 gives exactly (1, 1, 0), rigid, whatever the curves.
   vtkSetMacro(ExactRigidAtZero, bool);
   vtkGetMacro(ExactRigidAtZero, bool);
@@ -232,6 +252,14 @@ public:
   vtkGetMacro(NumberOfRefinementSweeps, int);
   vtkGetMacro(NumberOfRefinedPoints, vtkIdType);
   vtkGetMacro(LastRefinementMilliseconds, double);
+  ///@}
+
+  ///@{
+  /// Figures of the last relaxation pass: sweeps run, vertices it moved, and its time in
+  /// milliseconds (all 0 without relaxation).
+  vtkGetMacro(NumberOfRelaxationSweeps, int);
+  vtkGetMacro(NumberOfRelaxedPoints, vtkIdType);
+  vtkGetMacro(LastRelaxationMilliseconds, double);
   ///@}
 
   ///@{
@@ -286,6 +314,7 @@ protected:
   int OutputPointsPrecision = vtkAlgorithm::DEFAULT_PRECISION;
   bool GenerateDiagnostics = false;
   int RefinementIterations = 0;
+  int RelaxationIterations = 0;
 
   vtkIdType NumberOfDisplacedPoints = 0;
   vtkIdType NumberOfExaminedCandidates = 0;
@@ -295,6 +324,9 @@ protected:
   int NumberOfRefinementSweeps = 0;
   vtkIdType NumberOfRefinedPoints = 0;
   double LastRefinementMilliseconds = 0.0;
+  int NumberOfRelaxationSweeps = 0;
+  vtkIdType NumberOfRelaxedPoints = 0;
+  double LastRelaxationMilliseconds = 0.0;
   int NumberOfRebuilds = 0;
 
 private:
@@ -303,6 +335,11 @@ private:
 
   // The refinement pass after a successful frame grasping `grasp`.
   void Refine(vtkIdType grasp);
+  // The relaxation pass after it (or after the frame when there is no refinement).
+  void Relax(vtkIdType grasp);
+  // A pass's progress and abort check, asked after every sweep; what an abort keeps.
+  std::function<bool()> SweepMonitor(int total, int& sweeps, bool& aborted);
+  void KeepAbortedPass(const char* pass, int done, int total);
   // The stages of RequestData (vtkChainMailDeformationFilterUpdate.cxx).
   bool UpdateGeometry(vtkPointSet* input);
   bool UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);

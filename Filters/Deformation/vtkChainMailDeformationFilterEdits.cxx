@@ -5,43 +5,82 @@
 
 using namespace vtkChainMailDeformationFilterDetail;
 
+std::function<bool()> vtkChainMailDeformationFilter::SweepMonitor(
+  int total, int& sweeps, bool& aborted)
+{
+  // Asked after every sweep: the progress bar moves, and an abort stops the sweeps.
+  return [this, total, &sweeps, &aborted]
+  {
+    this->UpdateProgress(double(++sweeps) / std::max(1, total));
+    aborted = this->CheckAbort();
+    return aborted;
+  };
+}
+
+void vtkChainMailDeformationFilter::KeepAbortedPass(const char* pass, int done, int total)
+{
+  // Each sweep keeps a valid deformation: the result so far is kept rather than emptied
+  // by the executive.
+  this->SetAbortOutput(false);
+  this->SetAbortExecute(0);
+  vtkWarningMacro(<< pass << " stopped after " << done << " of " << total
+                  << " sweeps at the user's request.");
+}
+
 void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
 {
   vtkInternals& in = *this->Internals;
-  const geoshaping::TransferFunction& tf = in.Deformer.transfer_function();
-  if (!in.Projector || !SameTransfer(tf, in.LinksTransfer))
-  {
-    in.Links = geoshaping::link_mesh(in.Deformer);
-    in.LinksTransfer = tf;
-    in.Projector = std::make_unique<geoshaping::LinkProjector>(in.Links);
-  }
+  in.EnsureLinks();
   const auto start = std::chrono::steady_clock::now();
-  // Asked after every sweep: the progress bar moves, and an abort stops the sweeps.
   int sweeps = 0;
   bool aborted = false;
-  const geoshaping::ProjectionReport report = geoshaping::refine_links(*in.Projector, in.Deformer,
-    geoshaping::index_t(grasp), this->RefinementIterations,
-    [this, &sweeps, &aborted]
-    {
-      this->UpdateProgress(double(++sweeps) / std::max(1, this->RefinementIterations));
-      aborted = this->CheckAbort();
-      return aborted;
-    });
+  const geoshaping::ProjectionReport report =
+    geoshaping::refine_links(*in.Projector, in.Deformer, geoshaping::index_t(grasp),
+      this->RefinementIterations, this->SweepMonitor(this->RefinementIterations, sweeps, aborted));
   if (aborted)
   {
-    // Each sweep only lowers the link error: the result so far is a valid deformation,
-    // kept rather than emptied by the executive.
-    this->SetAbortOutput(false);
-    this->SetAbortExecute(0);
-    vtkWarningMacro("Refinement stopped after " << report.iterations << " of "
-                                                << this->RefinementIterations
-                                                << " sweeps at the user's request.");
+    this->KeepAbortedPass("Refinement", report.iterations, this->RefinementIterations);
   }
   this->LastRefinementMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfRefinementSweeps = report.iterations;
   this->NumberOfRefinedPoints = vtkIdType(in.Projector->changed().size());
   in.Refining = true;
+}
+
+void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
+{
+  vtkInternals& in = *this->Internals;
+  in.EnsureLinks();
+  // The start: the frame's result after the refinement (if any), given sparsely.
+  IdList vertices = in.Deformer.moved();
+  if (in.Refining)
+  {
+    for (geoshaping::index_t v : in.Projector->changed())
+      if (!in.Deformer.moved_this_frame(v))
+        vertices.push_back(v);
+  }
+  geoshaping::Displacements values;
+  values.reserve(vertices.size());
+  for (geoshaping::index_t v : vertices)
+    values.push_back(in.FinalDisplacement(v));
+  const auto start = std::chrono::steady_clock::now();
+  int sweeps = 0;
+  bool aborted = false;
+  geoshaping::RelaxationOptions options;
+  options.iterations = this->RelaxationIterations;
+  options.stop = this->SweepMonitor(this->RelaxationIterations, sweeps, aborted);
+  const geoshaping::RelaxationReport report =
+    in.Relaxer->relax(geoshaping::index_t(grasp), vertices, values, options);
+  if (aborted)
+  {
+    this->KeepAbortedPass("Relaxation", report.iterations, this->RelaxationIterations);
+  }
+  this->LastRelaxationMilliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  this->NumberOfRelaxationSweeps = report.iterations;
+  this->NumberOfRelaxedPoints = vtkIdType(in.Relaxer->changed().size());
+  in.Relaxing = true;
 }
 
 void vtkChainMailDeformationFilter::AddEdit(const char* record)
@@ -91,12 +130,13 @@ void vtkChainMailDeformationFilter::CommitEdit()
     return;
   }
   IdList vertices = in.Deformer.moved();
-  if (in.Refining)
-  {
-    for (geoshaping::index_t v : in.Refined)
+  IdList beyond; // what the passes moved outside the frame's region, once each
+  for (const IdList* pass : IdLists{ &in.Refined, &in.Relaxed })
+    for (geoshaping::index_t v : *pass)
       if (!in.Deformer.moved_this_frame(v))
-        vertices.push_back(v);
-  }
+        beyond.push_back(v);
+  std::sort(beyond.begin(), beyond.end());
+  vertices.insert(vertices.end(), beyond.begin(), std::unique(beyond.begin(), beyond.end()));
   std::vector<Eigen::Vector3d> displacements;
   displacements.reserve(vertices.size());
   for (geoshaping::index_t v : vertices)
@@ -105,6 +145,7 @@ void vtkChainMailDeformationFilter::CommitEdit()
   in.LastEdit = in.History.record(in.History.applied() - 1);
   in.EditRecords.push_back(in.LastEdit);
   in.Refining = false;
+  in.Relaxing = false;
   in.Projector.reset();
   // Released: the next update shows the committed shape, not the grasp applied again.
   this->LastGraspPointId = -1;

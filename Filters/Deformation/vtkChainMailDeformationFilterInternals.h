@@ -27,6 +27,7 @@
 #include "geoshaping/chainmail_deformer.h"
 #include "geoshaping/edit_history.h"
 #include "geoshaping/link_projection.h"
+#include "geoshaping/relaxation.h"
 #include "geoshaping/sparse_normals.h"
 
 #include <chrono>
@@ -60,6 +61,16 @@ struct vtkChainMailDeformationFilter::vtkInternals
   geoshaping::TransferFunction LinksTransfer;
   std::vector<geoshaping::index_t> Refined;
   bool Refining = false; // the last update wrote the projector's result
+  // The relaxation pass (after the refinement, on the same link data) and the vertices it
+  // moved (its region grows beyond the frame's, so they are written and restored as the
+  // refined ones are).
+  std::unique_ptr<geoshaping::Relaxer> Relaxer;
+  std::vector<geoshaping::index_t> Relaxed; // as Refined, for the relaxer's changes
+  bool Relaxing = false;                    // the last update wrote the relaxer's result
+
+  // The link data and both passes' scratch, rebuilt when Projector was reset or the
+  // transfer curves changed.
+  void EnsureLinks();
 
   // Editing: the applied edits' records (the EditHistory property), the history that
   // applies them (with the undone tail kept for redo), and the last frame's recipe.
@@ -72,7 +83,9 @@ struct vtkChainMailDeformationFilter::vtkInternals
   // Displacement of v from its rest position in the last frame (refined or not).
   const Eigen::Vector3d& FinalDisplacement(geoshaping::index_t v) const
   {
-    return this->Refining ? this->Projector->displacement(v) : this->Deformer.displacement(v);
+    return this->Relaxing   ? this->Relaxer->displacement(v)
+           : this->Refining ? this->Projector->displacement(v)
+                            : this->Deformer.displacement(v);
   }
 
   // Whether input point v moved by u lands where the output's point type holds it:
@@ -167,5 +180,19 @@ inline geoshaping::Curve MakeCurve(
   return c;
 }
 } // namespace vtkChainMailDeformationFilterDetail
+
+inline void vtkChainMailDeformationFilter::vtkInternals::EnsureLinks()
+{
+  const geoshaping::TransferFunction& tf = this->Deformer.transfer_function();
+  if (!this->Projector ||
+      !vtkChainMailDeformationFilterDetail::SameTransfer(tf, this->LinksTransfer))
+  {
+    this->Links = geoshaping::link_mesh(this->Deformer);
+    this->LinksTransfer = tf;
+    this->Projector = std::make_unique<geoshaping::LinkProjector>(this->Links);
+    this->Relaxer = std::make_unique<geoshaping::Relaxer>(this->Links);
+  }
+  this->Links.frame = this->Deformer.valid_region_frame(); // the relaxation keeps these regions
+}
 
 #endif

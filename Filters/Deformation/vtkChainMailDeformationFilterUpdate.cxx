@@ -72,7 +72,9 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
     in.Locator = nullptr;
     in.Projector.reset();
     in.Refined.clear();
+    in.Relaxed.clear();
     in.Refining = false;
+    in.Relaxing = false;
     in.History.clear();
     in.EditsDirty = true;
     in.Warned.clear();
@@ -357,6 +359,10 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       {
         this->Refine(grasp);
       }
+      if (r.ok && this->RelaxationIterations > 0)
+      {
+        this->Relax(grasp);
+      }
       if (r.ok && !this->OutputFits())
       {
         // The last frame's vertices are still shown: restore them with the stale ones.
@@ -364,6 +370,7 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
         stale.insert(stale.end(), shown.begin(), shown.end());
         in.Deformer.reset();
         in.Refining = false;
+        in.Relaxing = false;
         this->NumberOfDisplacedPoints = 0;
         this->LastGraspPointId = -1;
         this->LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
@@ -377,7 +384,8 @@ bool vtkChainMailDeformationFilter::OutputFits()
   vtkInternals& in = *this->Internals;
   const IdList none;
   for (const IdList* list :
-    IdLists{ &in.Deformer.moved(), in.Refining ? &in.Projector->changed() : &none })
+    IdLists{ &in.Deformer.moved(), in.Refining ? &in.Projector->changed() : &none,
+      in.Relaxing ? &in.Relaxer->changed() : &none })
     for (geoshaping::index_t v : *list)
     {
       Eigen::Vector3d x;
@@ -407,9 +415,11 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
   // A vertex moved last time and again now is written once, by the second pass.
   const auto& deformer = in.Deformer;
   const IdList previouslyRefined = std::move(in.Refined);
+  const IdList previouslyRelaxed = std::move(in.Relaxed);
   RewritePoints(
     inPoints->GetData(), outPoints->GetData(),
-    IdLists{ &deformer.previously_moved(), &previouslyRefined, &stale, &touched },
+    IdLists{
+      &deformer.previously_moved(), &previouslyRefined, &previouslyRelaxed, &stale, &touched },
     [&deformer](geoshaping::index_t v) { return deformer.moved_this_frame(v); },
     [&deformer](geoshaping::index_t v) { return deformer.committed_offset(v); });
   in.Refined.clear();
@@ -417,16 +427,22 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
   {
     in.Refined = in.Projector->changed();
   }
+  in.Relaxed.clear();
+  if (in.Relaxing)
+  {
+    in.Relaxed = in.Relaxer->changed(); // may reach beyond the frame's region
+  }
   RewritePoints(
-    inPoints->GetData(), outPoints->GetData(), IdLists{ &deformer.moved(), &in.Refined },
+    inPoints->GetData(), outPoints->GetData(),
+    IdLists{ &deformer.moved(), &in.Refined, &in.Relaxed },
     [](geoshaping::index_t) { return false; },
     [&in](geoshaping::index_t v) -> Eigen::Vector3d
     { return in.Deformer.committed_offset(v) + in.FinalDisplacement(v); });
   // What changed since the last update: everything either pass wrote.
   vtkIdTypeArray* changed = in.Changed;
   changed->SetNumberOfTuples(0);
-  for (const IdList* written : IdLists{ &deformer.previously_moved(), &previouslyRefined, &stale,
-         &touched, &deformer.moved(), &in.Refined })
+  for (const IdList* written : IdLists{ &deformer.previously_moved(), &previouslyRefined,
+         &previouslyRelaxed, &stale, &touched, &deformer.moved(), &in.Refined, &in.Relaxed })
     for (geoshaping::index_t v : *written)
       changed->InsertNextValue(v);
   if (in.OutputNormals)
@@ -452,7 +468,7 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
     {
       sponsor->SetValue(v, in.Deformer.sponsor(v));
     }
-    for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined })
+    for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined, &in.Relaxed })
       for (geoshaping::index_t v : *write)
       {
         displacement->SetTuple(v, in.FinalDisplacement(v).data());

@@ -3,9 +3,16 @@
 // and a 1,000-vertex grasp on a 4,000,000-vertex mesh. BM_Frame's last argument is the
 // valid region frame (0 Axes, the paper's box; 1 Link, the rotation-invariant cylinder);
 // each frame's pull is calibrated on its own to displace the target count.
+// BM_Relaxation: the relaxation pass after a frame, timed interleaved with the frame
+// itself (frame, pass, frame, pass, ...) so the ratio is not skewed by load drifting
+// between two separate runs.
 #include "bench_scenes.h"
+#include "geoshaping/relaxation.h"
+#include "geoshaping/sample_scenes.h"
 
 #include <benchmark/benchmark.h>
+
+#include <chrono>
 
 #include <map>
 #include <memory>
@@ -87,6 +94,99 @@ void BM_BfsFloor(benchmark::State& state)
   state.SetLabel("BFS floor");
 }
 
+// Figure 5D's scene: the painted fault step, grasped mid-step (FIFO Priority, lift 10);
+// its triangles for the bending measure.
+Scene& fault_step(const SampleMesh** triangles = nullptr)
+{
+  static Scene s;
+  static SampleMesh mesh;
+  if (triangles)
+    *triangles = &mesh;
+  if (s.deformer)
+    return s;
+  const FaultStepParams p;
+  mesh = fault_step_horizon(p);
+  const std::vector<float> m = fault_step_malleability(mesh, p);
+  s.deformer = std::make_unique<ChainMailDeformer>();
+  s.deformer->set_mesh(mesh.xyz.data(), mesh.num_points(), mesh.adjacency());
+  s.deformer->set_malleability(m.data());
+  const Eigen::Vector3d at(50.0, 30.0, 10.0);
+  s.grasp = 0;
+  for (index_t v = 0; v < mesh.num_points(); ++v)
+    if ((Eigen::Vector3d(mesh.xyz.data() + 3 * v) - at).squaredNorm() <
+        (Eigen::Vector3d(mesh.xyz.data() + 3 * s.grasp) - at).squaredNorm())
+      s.grasp = v;
+  s.pull = 10.0;
+  return s;
+}
+
+// E_link (over the relaxed region) and, on a triangle mesh, the bending of the soft
+// vertices displaced before or after, of the frame and of its relaxation: counters.
+void quality(benchmark::State& state, const LinkMesh& links, const ChainMailDeformer& d,
+  const Relaxer& r, const SampleMesh* triangles)
+{
+  std::vector<index_t> region = d.moved();
+  region.insert(region.end(), r.changed().begin(), r.changed().end());
+  const Displacements before = displacements(d);
+  state.counters["elink_before"] = link_error(links, before, region);
+  state.counters["elink_after"] = link_error(links, r.displacements(), region);
+  if (!triangles)
+    return;
+  std::vector<index_t> soft;
+  std::vector<std::uint8_t> seen(std::size_t(links.size()), 0);
+  for (index_t v : region)
+    if (!links.rigid[std::size_t(v)] && !seen[std::size_t(v)])
+    {
+      seen[std::size_t(v)] = 1;
+      soft.push_back(v);
+    }
+  std::vector<Eigen::Vector3d> rest(std::size_t(links.size()));
+  for (index_t v = 0; v < links.size(); ++v)
+    rest[std::size_t(v)] = Eigen::Vector3d(triangles->xyz.data() + 3 * v);
+  const BendingError b0 = bending_error(rest, triangles->connectivity, before, soft);
+  const BendingError b1 = bending_error(rest, triangles->connectivity, r.displacements(), soft);
+  state.counters["bend_max_before"] = b0.max;
+  state.counters["bend_max_after"] = b1.max;
+  state.counters["bend_rms_before"] = b0.rms;
+  state.counters["bend_rms_after"] = b1.rms;
+}
+
+// Arguments: displaced target (0: the fault step), sweeps.
+void BM_Relaxation(benchmark::State& state)
+{
+  const std::size_t target = std::size_t(state.range(0));
+  const int sweeps = int(state.range(1));
+  const SampleMesh* triangles = nullptr;
+  Scene& s = target == 0 ? fault_step(&triangles) : scene(side_for(target), target);
+  s.deformer->set_queue(QueueKind::fifo_priority);
+  const LinkMesh links = link_mesh(*s.deformer);
+  Relaxer relaxer(links);
+  using clock = std::chrono::steady_clock;
+  double frame_s = 0.0, relax_s = 0.0;
+  RelaxationReport report;
+  FrameResult r;
+  for (auto _ : state)
+  {
+    const auto t0 = clock::now();
+    r = s.deformer->deform(s.grasp, { 0.0, 0.0, s.pull });
+    const auto t1 = clock::now();
+    report = relax_frame(relaxer, *s.deformer, s.grasp, sweeps);
+    const auto t2 = clock::now();
+    frame_s += std::chrono::duration<double>(t1 - t0).count();
+    relax_s += std::chrono::duration<double>(t2 - t1).count();
+    benchmark::DoNotOptimize(report.updates);
+  }
+  const double n = double(state.iterations());
+  state.counters["displaced"] = double(r.moved);
+  state.counters["frame_ms"] = 1e3 * frame_s / n;
+  state.counters["relax_ms"] = 1e3 * relax_s / n;
+  state.counters["relax_over_frame"] = relax_s / frame_s;
+  state.counters["sweeps_run"] = report.iterations;
+  state.counters["relaxed"] = double(relaxer.changed().size());
+  quality(state, links, *s.deformer, relaxer, triangles);
+  state.SetLabel(target == 0 ? "fault step" : "painted grid");
+}
+
 void TableArgs(benchmark::internal::Benchmark* b)
 {
   for (int q = 0; q < 4; ++q)
@@ -106,5 +206,10 @@ BENCHMARK(BM_BfsFloor)
   ->ArgsProduct({ { 0 }, { 9152, 14088, 17289, 18225, 29241, 1000000 } })
   ->Unit(benchmark::kMillisecond)
   ->MinTime(0.2);
+
+BENCHMARK(BM_Relaxation)
+  ->ArgsProduct({ { 0, 29241 }, { 1, 10, 100 } })
+  ->Unit(benchmark::kMillisecond)
+  ->MinTime(0.5);
 
 BENCHMARK_MAIN();

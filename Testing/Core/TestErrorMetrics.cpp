@@ -3,6 +3,7 @@
 #include "geoshaping/valid_region.h"
 #include "test_meshes.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -249,4 +250,80 @@ TEST(ErrorMetrics, NonFiniteDisplacementReportsInfinityNotNaN)
   const Displacements u{ { 0, 0, 0 }, { std::nan(""), 0, 0 } };
   EXPECT_TRUE(std::isinf(link_error(m, u)));
   EXPECT_TRUE(std::isinf(rigid_error(m, u)));
+}
+
+namespace
+{
+// An nx-by-ny grid in z = 0, each quad split along its (i, j)-(i+1, j+1) diagonal,
+// counter-clockwise seen from +z.
+std::vector<index_t> grid_triangles(index_t nx, index_t ny)
+{
+  std::vector<index_t> t;
+  for (index_t j = 0; j + 1 < ny; ++j)
+    for (index_t i = 0; i + 1 < nx; ++i)
+    {
+      const index_t a = grid_id(nx, i, j), b = grid_id(nx, i + 1, j), c = grid_id(nx, i + 1, j + 1),
+                    d = grid_id(nx, i, j + 1);
+      t.insert(t.end(), { a, b, c, a, c, d });
+    }
+  return t;
+}
+
+std::vector<index_t> all_vertices(index_t n)
+{
+  std::vector<index_t> v(static_cast<std::size_t>(n));
+  for (index_t i = 0; i < n; ++i)
+    v[i] = i;
+  return v;
+}
+} // namespace
+
+TEST(ErrorMetrics, FoldingAFlatSheetAlongAGridLineBendsByTheFoldAngle)
+{
+  const index_t nx = 9, ny = 5, fold = 4;
+  const auto rest = points(geoshaping::testing::triangle_grid(nx, ny, 1.0));
+  const double phi = 0.7;
+  Displacements u(rest.size(), Eigen::Vector3d::Zero());
+  for (index_t v = 0; v < index_t(rest.size()); ++v)
+  {
+    const double s = rest[v].x() - fold;
+    if (s > 0.0)
+      u[v] = Eigen::Vector3d(fold + s * std::cos(phi), rest[v].y(), s * std::sin(phi)) - rest[v];
+  }
+  const BendingError e = bending_error(rest, grid_triangles(nx, ny), u, all_vertices(nx * ny));
+  // Interior edges: 8*5 + 9*4 + 8*4 = 108 edges, 2*8 + 2*4 = 24 on the border; the fold
+  // bends the 4 on x = 4 by phi, the rest not at all.
+  EXPECT_EQ(e.edges, 84u);
+  EXPECT_NEAR(e.max, phi, 1e-12);
+  EXPECT_NEAR(e.rms, phi * std::sqrt(4.0 / 84.0), 1e-12);
+  // Over the band of columns 3..5 only: the edges whose two triangles lie in it are the
+  // 4 on the fold, 2 * 4 diagonals and 2 * 3 interior horizontals.
+  std::vector<index_t> band;
+  for (index_t j = 0; j < ny; ++j)
+    for (index_t i = fold - 1; i <= fold + 1; ++i)
+      band.push_back(grid_id(nx, i, j));
+  const BendingError in_band = bending_error(rest, grid_triangles(nx, ny), u, band);
+  EXPECT_EQ(in_band.edges, 18u);
+  EXPECT_NEAR(in_band.max, phi, 1e-12);
+  EXPECT_NEAR(in_band.rms, phi * std::sqrt(4.0 / 18.0), 1e-12);
+}
+
+TEST(ErrorMetrics, RigidMotionOfARelief)
+{
+  const index_t nx = 7, ny = 6;
+  auto rest = points(geoshaping::testing::triangle_grid(nx, ny, 1.0));
+  for (auto& p : rest)
+    p.z() = std::sin(p.x()) * std::cos(0.7 * p.y()); // the rest shape's own relief
+  const std::vector<index_t> triangles = grid_triangles(nx, ny);
+  const Displacements none(rest.size(), Eigen::Vector3d::Zero());
+  const BendingError at_rest = bending_error(rest, triangles, none, all_vertices(nx * ny));
+  EXPECT_EQ(at_rest.max, 0.0);
+  EXPECT_GT(at_rest.edges, 0u);
+  const Eigen::Matrix3d R =
+    Eigen::AngleAxisd(0.9, Eigen::Vector3d(1.0, -2.0, 0.5).normalized()).toRotationMatrix();
+  Displacements u(rest.size());
+  for (std::size_t v = 0; v < rest.size(); ++v)
+    u[v] = R * rest[v] + Eigen::Vector3d(3.0, -1.0, 2.0) - rest[v];
+  EXPECT_LT(bending_error(rest, triangles, u, all_vertices(nx * ny)).max, 1e-12);
+  EXPECT_EQ(bending_error(rest, triangles, u, {}).edges, 0u);
 }

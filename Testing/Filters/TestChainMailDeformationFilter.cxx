@@ -494,6 +494,73 @@ TEST(ChainMailDeformationFilter, RefinedSparseUpdatesEqualAFreshFilter)
   EXPECT_EQ(MaxPointDifference(f->GetOutput(), grid), 0.0);
 }
 
+TEST(ChainMailDeformationFilter, RelaxationKeepsGraspAndLinksAndSparseUpdatesEqualAFreshFilter)
+{
+  auto grid = IslandGrid();
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputData(grid);
+  EXPECT_EQ(f->GetRelaxationIterations(), 0);
+  const vtkIdType grasps[5] = { 5 * 30 + 5, 25 * 30 + 25, 5 * 30 + 5, 15 * 30 + 2, 25 * 30 + 4 };
+  const double moves[5][3] = { { 0, 0, 10 }, { 2, 0, -6 }, { 0, 0, 10 }, { 0, 3, 4 }, { 1, 1, 1 } };
+  const int refine[5] = { 0, 4, 0, 8, 0 };
+  const int relax[5] = { 10, 5, 0, 20, 0 };
+  for (int k = 0; k < 5; ++k)
+  {
+    f->SetGraspPointId(grasps[k]);
+    f->SetDisplacement(moves[k][0], moves[k][1], moves[k][2]);
+    f->SetRefinementIterations(refine[k]);
+    f->SetRelaxationIterations(relax[k]);
+    f->Update();
+    EXPECT_EQ(f->GetNumberOfRelaxedPoints() > 0, relax[k] > 0) << "step " << k;
+    EXPECT_LE(f->GetNumberOfRelaxationSweeps(), relax[k]);
+    double p[3], q[3];
+    grid->GetPoint(grasps[k], p);
+    f->GetOutput()->GetPoint(grasps[k], q);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ(q[i], p[i] + moves[k][i]) << "step " << k;
+    vtkNew<vtkChainMailDeformationFilter> fresh, unrelaxed;
+    for (auto* g : { fresh.Get(), unrelaxed.Get() })
+    {
+      g->SetGraspPointId(grasps[k]);
+      g->SetDisplacement(moves[k][0], moves[k][1], moves[k][2]);
+      g->SetRefinementIterations(refine[k]);
+    }
+    fresh->SetRelaxationIterations(relax[k]);
+    EXPECT_EQ(MaxPointDifference(f->GetOutput(), Deform(fresh, grid)), 0.0) << "step " << k;
+    EXPECT_LE(OutputLinkError(grid, f->GetOutput()), OutputLinkError(grid, Deform(unrelaxed, grid)))
+      << "step " << k;
+  }
+  f->SetGraspPointId(-1);
+  f->Update();
+  EXPECT_EQ(MaxPointDifference(f->GetOutput(), grid), 0.0);
+  f->SetRelaxationIterations(VTK_INT_MAX);
+  EXPECT_EQ(f->GetRelaxationIterations(), vtkChainMailDeformationFilter::MAX_RELAXATION_ITERATIONS);
+  f->SetRelaxationIterations(-3);
+  EXPECT_EQ(f->GetRelaxationIterations(), 0);
+}
+
+TEST(ChainMailDeformationFilter, RelaxationRunsOnTetrahedra)
+{
+  auto slab = TetSlab(12, 12, 4, 1.0);
+  vtkNew<vtkChainMailDeformationFilter> f, plain;
+  for (auto* g : { f.Get(), plain.Get() })
+  {
+    g->SetDefaultMalleability(0.6);
+    g->SetGraspPointId(6 * 12 + 6);
+    g->SetDisplacement(0.0, 0.0, 4.0);
+  }
+  f->SetRelaxationIterations(10);
+  vtkPointSet* relaxed = Deform(f, slab);
+  EXPECT_GT(f->GetNumberOfRelaxedPoints(), 0);
+  EXPECT_GT(MaxPointDifference(relaxed, Deform(plain, slab)), 0.0);
+  for (vtkIdType v = 0; v < relaxed->GetNumberOfPoints(); ++v)
+  {
+    double p[3];
+    relaxed->GetPoint(v, p);
+    EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+  }
+}
+
 namespace
 {
 // Every output coordinate, for bit-exact comparison (float points widen exactly).

@@ -100,13 +100,38 @@ ReferenceError reference_error(const LinkMesh& mesh, const Displacements& u,
 ReferenceError reference_error(const LinkMesh& mesh, const Displacements& u,
   const Displacements& reference, const std::vector<index_t>& vertices);
 
+// Smoothness of a deformed triangle surface (the facets and saw-tooth "teeth" ChainMail
+// leaves, issue 15): for an interior edge e shared by exactly two triangles, theta_e(x) is
+// the angle between their normals, atan2(|n_1 x n_2|, n_1 . n_2) in [0, pi] (0 where the
+// two are coplanar: the jump of the surface normal across e), and
+//   bend_e = | theta_e(x0 + u) - theta_e(x0) |,
+// the change of that jump the deformation made (so the rest shape's own relief counts 0;
+// a rigid motion gives 0 up to rounding). Over the edges whose two triangles have all
+// their vertices in `vertices` (e.g. the displaced soft region: the intended crease
+// where it meets a rigid part is left out):
+//   max = max_e bend_e,   rms = sqrt(mean_e bend_e^2),   in radians.
+// Folding a flat sheet by phi along a line of edges gives max = phi. Triangles must be
+// consistently oriented; border and non-manifold edges (not exactly two triangles) and
+// edges of a degenerate triangle (zero normal at rest or deformed) are skipped. Surfaces
+// only: a tetrahedral mesh has no such measure here. Cost O(n + triangles) (a metric of
+// the report and tests, not of the frame).
+struct BendingError
+{
+  double max = 0.0;
+  double rms = 0.0;
+  std::size_t edges = 0; // edges measured
+};
+BendingError bending_error(const std::vector<Eigen::Vector3d>& rest,
+  const std::vector<index_t>& triangles, const Displacements& u,
+  const std::vector<index_t>& vertices);
+
 // E_temporal over a drag d_0, d_1, ... with configurations X(d_k):
 //   max_k max_v |X_v(d_{k+1}) - X_v(d_k)| / |d_{k+1} - d_k|
 // (infinity norm over vertices of the Euclidean per-vertex difference). It is a ratio of
 // two lengths: dividing both by the mean edge length changes nothing, so it is reported
 // as is (1 for a rigid translation). Steps with d_{k+1} == d_k are skipped.
-double temporal_error(const std::vector<Eigen::Vector3d>& drags,
-  const std::vector<Displacements>& frames);
+double temporal_error(
+  const std::vector<Eigen::Vector3d>& drags, const std::vector<Displacements>& frames);
 
 // The same metric fed one sparse frame at a time: `vertices` are those displaced in this
 // frame and `values` their displacements (every other vertex at rest). Each frame costs
