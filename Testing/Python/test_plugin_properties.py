@@ -58,6 +58,8 @@ check(list(groups) == ["Malleability", "Grasp", "Queue and transfer", "Pins", "R
 check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displacement"] and
       groups["Editing"] == ["CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"],
       "the grasp and edit groups hold their properties")
+check(groups["Refinement"] == ["RefinementIterations", "RefinementTolerance"],
+      "the refinement group holds the iteration cap and the tolerance")
 check(groups["Queue and transfer"][:2] == ["CandidateQueue", "ValidRegionFrame"],
       "ValidRegionFrame is in the queue and transfer group, after CandidateQueue")
 grouped = [name for names in groups.values() for name in names]
