@@ -159,6 +159,7 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "GenerateDiagnostics: " << this->GenerateDiagnostics << "\n";
   os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";
+  os << indent << "RefinementTolerance: " << this->RefinementTolerance << "\n";
   os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
   os << indent << "NumberOfEdits: " << this->Internals->EditRecords.size() << "\n";
   os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";

@@ -191,13 +191,19 @@ public:
   /// Sweeps of the refinement pass after ChainMail (0, the default: none, the plain
   /// ChainMail result), at most MAX_REFINEMENT_ITERATIONS (64, the plugin's range; larger
   /// values are clamped). Each sweep projects every link of the displaced region onto its
-  /// valid region once; the pass stops earlier once every link holds, or when the
+  /// valid region (in the filter's ValidRegionFrame) once (the core's refine_links,
+  /// Dykstra); the pass stops earlier once converged to RefinementTolerance, or when the
   /// pipeline asks the filter to abort (checked after every sweep).
   vtkSetClampMacro(RefinementIterations, int, 0, MAX_REFINEMENT_ITERATIONS);
   vtkGetMacro(RefinementIterations, int);
   ///@}
 
   ///@{
+  /// When the refinement pass stops before RefinementIterations: once the largest link
+  /// violation (E_link) and the last sweep's largest move are both at most this many
+  /// mean edge lengths. Default 1e-6; clamped to [1e-12, 1].
+  vtkSetClampMacro(RefinementTolerance, double, 1e-12, 1.0);
+  vtkGetMacro(RefinementTolerance, double);
   /// Sweeps of the relaxation pass after ChainMail and the refinement (0, the default:
   /// none), at most MAX_RELAXATION_ITERATIONS (200, the plugin's range; larger values
   /// are clamped). Each sweep moves every displaced soft vertex toward the mean of its
@@ -314,6 +320,7 @@ protected:
   int OutputPointsPrecision = vtkAlgorithm::DEFAULT_PRECISION;
   bool GenerateDiagnostics = false;
   int RefinementIterations = 0;
+  double RefinementTolerance = 1e-6;
   int RelaxationIterations = 0;
 
   vtkIdType NumberOfDisplacedPoints = 0;

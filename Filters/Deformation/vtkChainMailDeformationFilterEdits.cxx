@@ -34,9 +34,15 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
   const auto start = std::chrono::steady_clock::now();
   int sweeps = 0;
   bool aborted = false;
+  geoshaping::ProjectionOptions options;
+  options.max_iterations = this->RefinementIterations;
+  options.tolerance = this->RefinementTolerance;
+  // Dykstra sweeps: cheaper per iteration than ADMM and on the report's front for the
+  // interactive iteration counts (docs/report.md); ADMM computes the references.
+  options.solver = geoshaping::ProjectionSolver::dykstra;
+  options.stop = this->SweepMonitor(this->RefinementIterations, sweeps, aborted);
   const geoshaping::ProjectionReport report =
-    geoshaping::refine_links(*in.Projector, in.Deformer, geoshaping::index_t(grasp),
-      this->RefinementIterations, this->SweepMonitor(this->RefinementIterations, sweeps, aborted));
+    geoshaping::refine_links(*in.Projector, in.Deformer, geoshaping::index_t(grasp), options);
   if (aborted)
   {
     this->KeepAbortedPass("Refinement", report.iterations, this->RefinementIterations);

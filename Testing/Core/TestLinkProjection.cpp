@@ -2,6 +2,7 @@
 #include "geoshaping/link_projection.h"
 #include "test_meshes.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -64,9 +65,9 @@ std::vector<Scene> scenes()
   s.push_back({ "rigid island, FIFO", grid, island, QueueKind::fifo, grid_id(n, 12, 10),
     { 4.0, 3.0, 12.0 } });
   const Mesh quads = geoshaping::testing::quad_grid(n, n, 2.0);
-  s.push_back({ "uniform quads, FIFO Priority", quads,
-    std::vector<float>(std::size_t(quads.size()), 0.5f), QueueKind::fifo_priority,
-    grid_id(n, 5, 7), { 1.0, -3.0, 9.0 } });
+  s.push_back(
+    { "uniform quads, FIFO Priority", quads, std::vector<float>(std::size_t(quads.size()), 0.5f),
+      QueueKind::fifo_priority, grid_id(n, 5, 7), { 1.0, -3.0, 9.0 } });
   return s;
 }
 
@@ -107,8 +108,11 @@ TEST(LinkProjection, LinkErrorNeverIncreasesAcrossIterations)
     const ChainMailDeformer d = run(sc);
     const LinkMesh m = link_mesh(d);
     LinkProjector p(m);
-    double previous = link_error(m, displacements(d));
-    for (int it : { 1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128, 256, 512 })
+    // From the first iteration on (its start, the ChainMail result averaged over each
+    // rigid set, may have a larger E_link than the raw ChainMail result).
+    refine_links(p, d, sc.grasp, 1);
+    double previous = link_error(m, p.displacements(), p.region());
+    for (int it : { 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128, 256, 512 })
     {
       refine_links(p, d, sc.grasp, it);
       const double e = link_error(m, p.displacements(), p.region());
@@ -262,7 +266,165 @@ TEST(LinkProjection, DegenerateInputGivesFiniteConvergedResult)
   EXPECT_TRUE(r.converged);
   EXPECT_LE(link_error(m, ref), 1e-9);
   EXPECT_NEAR((ref[1] - start[0]).norm(), 0.0, 1e-9); // the zero-length edge: an equality
-  EXPECT_EQ(ref[4], start[4]); // no link: nothing to satisfy
+  EXPECT_EQ(ref[4], start[4]);                        // no link: nothing to satisfy
   for (const auto& u : ref)
     EXPECT_TRUE(u.allFinite());
+}
+
+namespace
+{
+ProjectionOptions solver_options(ProjectionSolver solver, double tolerance, int cap = 1000000)
+{
+  ProjectionOptions o;
+  o.solver = solver;
+  o.tolerance = tolerance;
+  o.max_iterations = cap;
+  return o;
+}
+
+double max_distance(const Displacements& a, const Displacements& b)
+{
+  double d = 0.0;
+  for (std::size_t v = 0; v < a.size(); ++v)
+    d = std::max(d, (a[v] - b[v]).norm());
+  return d;
+}
+} // namespace
+
+TEST(LinkProjection, AdmmAndDykstraFindTheSameProjection)
+{
+  // Two independent algorithms for the same strongly convex problem: their results agree
+  // to the accuracy they are run to.
+  for (const Scene& sc : scenes())
+  {
+    const ChainMailDeformer d = run(sc);
+    const LinkMesh m = link_mesh(d);
+    const Displacements start = displacements(d);
+    ProjectionReport ra, rd;
+    const Displacements a = reference_configuration(
+      m, sc.grasp, start, &ra, solver_options(ProjectionSolver::admm, 1e-10));
+    const Displacements b = reference_configuration(
+      m, sc.grasp, start, &rd, solver_options(ProjectionSolver::dykstra, 1e-10));
+    std::printf("[ admm/dykstra ] %-30s ADMM %d iterations (%d factorisations), Dykstra %d "
+                "sweeps, |difference| %.2g L\n",
+      sc.name, ra.iterations, ra.factorisations, rd.iterations, max_distance(a, b) / m.scale());
+    ASSERT_TRUE(ra.converged && rd.converged) << sc.name;
+    EXPECT_LE(link_error(m, a), 1e-10) << sc.name;
+    EXPECT_LE(max_distance(a, b), 1e-6 * m.scale()) << sc.name;
+    EXPECT_EQ(a[sc.grasp], start[sc.grasp]) << sc.name;
+    EXPECT_LE(rigid_error(m, a), 1e-12) << sc.name;
+  }
+}
+
+TEST(LinkProjection, AdmmGivesTheLazyRampInBothFrames)
+{
+  // The chain of ReferenceFromRestOfStretchedChainIsTheLazyRamp, along x: the box and the
+  // cylinder (shear 0: a segment) give the same feasible set, u_i = max(0, 8 - (19 - i)).
+  const Mesh chain = geoshaping::testing::chain(20, 10.0);
+  std::vector<Eigen::Vector3d> rest;
+  for (index_t v = 0; v < chain.size(); ++v)
+    rest.emplace_back(chain.xyz[3 * v], 0.0, 0.0);
+  TransferFunction tf;
+  tf.stretch = { 1.1, 1.1 };
+  tf.compression = { 1.0, 1.0 };
+  tf.shear = { 0.0, 0.0 };
+  LinkMesh m = link_mesh(rest, chain.adjacency, std::vector<double>(20, 0.5), tf);
+  for (ValidRegionFrame frame : { ValidRegionFrame::axes, ValidRegionFrame::link })
+  {
+    m.frame = frame;
+    Displacements start(20, Eigen::Vector3d::Zero());
+    start[19] = { 8.0, 0.0, 0.0 };
+    ProjectionReport r;
+    const Displacements ref =
+      reference_configuration(m, 19, start, &r, solver_options(ProjectionSolver::admm, 1e-10));
+    EXPECT_TRUE(r.converged) << frame_name(frame);
+    for (index_t i = 0; i < 20; ++i)
+    {
+      EXPECT_NEAR(ref[i].x(), std::max(0.0, 8.0 - (19 - i)), 1e-7 * m.mean_edge) << i;
+      EXPECT_NEAR(ref[i].y(), 0.0, 1e-9) << i;
+    }
+  }
+}
+
+TEST(LinkProjection, LinkFrameProjectionIsRotationInvariant)
+{
+  // In the Link frame the feasible set of a rotated mesh is the rotated feasible set, so
+  // the projection of the rotated start is the rotated projection.
+  const Scene sc = scenes()[3]; // uniform quads: no axis-aligned special case
+  const Mesh& mesh = sc.mesh;
+  const Eigen::Matrix3d R =
+    Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+  std::vector<double> turned(mesh.xyz.size());
+  for (std::size_t v = 0; v < mesh.xyz.size() / 3; ++v)
+  {
+    Eigen::Map<Eigen::Vector3d> to(&turned[3 * v]);
+    to = R * Eigen::Map<const Eigen::Vector3d>(&mesh.xyz[3 * v]);
+  }
+  ChainMailDeformer a, b;
+  a.set_mesh(mesh.xyz.data(), mesh.size(), mesh.adjacency);
+  b.set_mesh(turned.data(), mesh.size(), mesh.adjacency);
+  for (ChainMailDeformer* d : { &a, &b })
+  {
+    d->set_malleability(sc.malleability.data());
+    d->set_valid_region_frame(ValidRegionFrame::link);
+  }
+  // The same start for both (a's FIFO result, rotated for b), so only the projection is
+  // compared.
+  a.set_queue(QueueKind::fifo);
+  ASSERT_TRUE(a.deform(sc.grasp, sc.drag).ok);
+  const LinkMesh ma = link_mesh(a), mb = link_mesh(b);
+  const Displacements start = displacements(a);
+  Displacements turned_start(start.size());
+  for (std::size_t v = 0; v < start.size(); ++v)
+    turned_start[v] = R * start[v];
+  ProjectionReport ra, rb;
+  const ProjectionOptions o = solver_options(ProjectionSolver::admm, 1e-10);
+  const Displacements pa = reference_configuration(ma, sc.grasp, start, &ra, o);
+  const Displacements pb = reference_configuration(mb, sc.grasp, turned_start, &rb, o);
+  ASSERT_TRUE(ra.converged && rb.converged);
+  EXPECT_GT(link_error(ma, start), 0.01);
+  EXPECT_LE(link_error(ma, pa), 1e-10);
+  double defect = 0.0, size = 0.0;
+  for (std::size_t v = 0; v < pa.size(); ++v)
+  {
+    defect = std::max(defect, (R * pa[v] - pb[v]).norm());
+    size = std::max(size, pa[v].norm());
+  }
+  std::printf("[ link frame ] rotation defect %.2g of %.3g\n", defect, size);
+  EXPECT_LE(defect, 1e-7 * size);
+}
+
+TEST(LinkProjection, AdmmReusesItsFactorisationForTheSameRegion)
+{
+  const Scene sc = scenes()[0];
+  const ChainMailDeformer d = run(sc);
+  const LinkMesh m = link_mesh(d);
+  LinkProjector p(m);
+  const ProjectionOptions o = solver_options(ProjectionSolver::admm, 1e-8, 500);
+  const ProjectionReport first = refine_links(p, d, sc.grasp, o);
+  const Displacements u = p.displacements();
+  const ProjectionReport second = refine_links(p, d, sc.grasp, o);
+  EXPECT_GE(first.factorisations, 1);
+  EXPECT_EQ(second.factorisations, 0);
+  EXPECT_EQ(second.iterations, first.iterations);
+  for (index_t v = 0; v < m.size(); ++v)
+    EXPECT_EQ(p.displacement(v), u[v]) << v;
+}
+
+TEST(LinkProjection, RefinementToleranceStopsEarlier)
+{
+  const Scene sc = scenes()[2];
+  const ChainMailDeformer d = run(sc);
+  const LinkMesh m = link_mesh(d);
+  LinkProjector p(m);
+  for (ProjectionSolver solver : { ProjectionSolver::admm, ProjectionSolver::dykstra })
+  {
+    const ProjectionReport loose = refine_links(p, d, sc.grasp, solver_options(solver, 1e-3));
+    const double loose_error = link_error(m, p.displacements());
+    const ProjectionReport tight = refine_links(p, d, sc.grasp, solver_options(solver, 1e-9));
+    EXPECT_TRUE(loose.converged && tight.converged);
+    EXPECT_LT(loose.iterations, tight.iterations);
+    EXPECT_LE(loose_error, 1e-3);
+    EXPECT_LE(link_error(m, p.displacements()), 1e-9);
+  }
 }

@@ -189,6 +189,18 @@ TEST(ChainMailDeformationBadInput, RefinementIterationsAreCappedAtThePluginsRang
   EXPECT_EQ(f->GetRefinementIterations(), 0);
 }
 
+TEST(ChainMailDeformationBadInput, RefinementToleranceIsClampedToItsRange)
+{
+  vtkNew<vtkChainMailDeformationFilter> f;
+  EXPECT_EQ(f->GetRefinementTolerance(), 1e-6);
+  f->SetRefinementTolerance(0.0);
+  EXPECT_EQ(f->GetRefinementTolerance(), 1e-12);
+  f->SetRefinementTolerance(-1.0);
+  EXPECT_EQ(f->GetRefinementTolerance(), 1e-12);
+  f->SetRefinementTolerance(5.0);
+  EXPECT_EQ(f->GetRefinementTolerance(), 1.0);
+}
+
 namespace
 {
 // Rigid everywhere, one pinned vertex two edges from the grasp: the links between them

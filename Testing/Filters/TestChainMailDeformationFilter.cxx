@@ -465,6 +465,18 @@ TEST(ChainMailDeformationFilter, RefinementLowersLinkErrorAndKeepsGraspAndPins)
   }
   EXPECT_LT(previous, 0.9 * chainmail);
   EXPECT_EQ(f->GetNumberOfRebuilds(), 1);
+  // RefinementTolerance reaches the pass: a loose one never runs more sweeps than a tight
+  // one, and when it stops before the cap every link holds to it.
+  f->SetRefinementIterations(64);
+  f->SetRefinementTolerance(1e-12);
+  f->Update();
+  const int tight = f->GetNumberOfRefinementSweeps();
+  f->SetRefinementTolerance(10.0); // clamped to 1 mean edge
+  f->Update();
+  const int loose = f->GetNumberOfRefinementSweeps();
+  EXPECT_LE(loose, tight);
+  if (loose < 64)
+    EXPECT_LE(OutputLinkError(grid, f->GetOutput()), 1.0 + 1e-12);
 }
 
 TEST(ChainMailDeformationFilter, RefinedSparseUpdatesEqualAFreshFilter)

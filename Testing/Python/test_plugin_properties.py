@@ -58,6 +58,9 @@ check(list(groups) == ["Malleability", "Grasp", "Queue and transfer", "Pins", "R
 check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displacement"] and
       groups["Editing"] == ["CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"],
       "the grasp and edit groups hold their properties")
+check(groups["Refinement"] == ["RefinementIterations", "RefinementTolerance",
+                               "RelaxationIterations"],
+      "the refinement group holds the iteration cap, the tolerance and the relaxation")
 check(groups["Queue and transfer"][:2] == ["CandidateQueue", "ValidRegionFrame"],
       "ValidRegionFrame is in the queue and transfer group, after CandidateQueue")
 grouped = [name for names in groups.values() for name in names]

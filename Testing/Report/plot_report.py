@@ -39,29 +39,70 @@ def read(name):
         return list(csv.DictReader(f))
 
 
+def kind(r):
+    """'none', 'Dykstra' or 'ADMM' from a row's refinement column."""
+    return r["refinement"].split()[0]
+
+
+MARKERS = {"none": "o", "Dykstra": "s", "ADMM": "^"}
+
+
+def draw_variants(ax, rows, key, front=False):
+    """Every variant as one marker: colour = queue, shape = refinement, filled = Axes,
+    hollow = Link; the Pareto front (column 'front') joined by a black step line."""
+    for r in rows:
+        t, e = float(r["median_ms"]), max(float(r[key]), FLOOR)
+        filled = r["frame"] == "Axes"
+        c = COLOURS[r["queue"]]
+        ax.plot([t], [e], MARKERS[kind(r)], color=c, mfc=c if filled else "none", ms=5, mew=1)
+    if front:
+        pts = sorted((float(r["median_ms"]), max(float(r[key]), FLOOR), r) for r in rows if r["front"] == "1")
+        ax.step([p[0] for p in pts], [p[1] for p in pts], where="post", color="k", lw=0.8)
+        for t, e, r in pts:
+            label = "%s, %s, %s" % (r["queue"], r["frame"], r["refinement"])
+            ax.annotate(label, (t, e), fontsize=6, xytext=(4, 2), textcoords="offset points")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.axhline(FLOOR, color="grey", lw=0.5, ls=":")
+    ax.set_xlabel("run time per frame (ms, median)")
+    ax.grid(True, which="both", lw=0.3)
+
+
+def legend(ax):
+    from matplotlib.lines import Line2D
+    handles = [Line2D([], [], color=COLOURS[q], marker="o", ls="", label=q) for q in QUEUES]
+    handles += [Line2D([], [], color="k", marker=MARKERS[k], ls="", mfc="none", label="refinement: " + k)
+                for k in MARKERS]
+    handles += [Line2D([], [], color="k", marker="o", ls="", label="Axes frame (filled)"),
+                Line2D([], [], color="k", marker="o", ls="", mfc="none", label="Link frame (hollow)"),
+                Line2D([], [], color="k", lw=0.8, label="Pareto front")]
+    ax.legend(handles=handles, fontsize=6, loc="lower left")
+
+
 def scene_plot(scene, rows, path):
     fig, axes = plt.subplots(2, 2, figsize=(11, 8.5))
     for ax, (key, label) in zip(axes.flat, METRICS):
-        for q in QUEUES:
-            sel = [r for r in rows if r["queue"] == q]
-            t = np.array([float(r["median_ms"]) for r in sel])
-            e = np.array([float(r[key]) for r in sel])
-            n = [int(r["refinement"]) for r in sel]
-            shown = np.maximum(e, FLOOR)
-            ax.plot(t, shown, "-o", color=COLOURS[q], label=q, ms=4)
-            for ti, ei, ni, raw in zip(t, shown, n, e):
-                if ni in (0, 16) and raw > 0:
-                    ax.annotate("N=%d" % ni, (ti, ei),
-                                fontsize=7, color=COLOURS[q], xytext=(3, 3), textcoords="offset points")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.axhline(FLOOR, color="grey", lw=0.5, ls=":")
-        ax.set_xlabel("run time per frame (ms, median)")
+        draw_variants(ax, rows, key, front=(key == "E_link"))
         ax.set_ylabel(label + " / mean edge")
-        ax.grid(True, which="both", lw=0.3)
-    axes[0, 0].legend(fontsize=8, title="queue (N = refinement sweeps)", title_fontsize=8)
-    finish(fig, "%s: error against run time, 4 queues x refinement 0,1,2,4,8,16\n"
+    legend(axes[0, 0])
+    finish(fig, "%s: every variant, error against run time (front on E_link)\n"
                 "(0 drawn on the dotted floor %.0e)" % (scene, FLOOR), path, fontsize=11)
+
+
+def front_plot(rows, path):
+    scenes = list(dict.fromkeys(r["scene"] for r in rows))
+    cols = 2
+    fig, axes = plt.subplots((len(scenes) + 1) // cols, cols, figsize=(13, 5.2 * ((len(scenes) + 1) // cols)),
+                             squeeze=False)
+    for ax, scene in zip(axes.flat, scenes):
+        draw_variants(ax, [r for r in rows if r["scene"] == scene], "E_link", front=True)
+        ax.set_ylabel("E_link / mean edge (0 on the dotted floor)")
+        ax.set_title(scene, fontsize=10)
+    for ax in list(axes.flat)[len(scenes):]:
+        ax.axis("off")
+    legend(axes.flat[0])
+    finish(fig, "Pareto front of E_link against run time: queue x frame x refinement "
+                "(each marker one variant)", path, fontsize=11)
 
 
 def key_of(title):
@@ -143,6 +184,7 @@ def table1():
 
 
 rows = read("report.csv")
+front_plot(rows, os.path.join(IMG, "report-front.png"))
 for scene in dict.fromkeys(r["scene"] for r in rows):
     scene_plot(scene, [r for r in rows if r["scene"] == scene],
                os.path.join(IMG, "report-errors-%s.png" % key_of(scene)))

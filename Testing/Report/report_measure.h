@@ -1,20 +1,37 @@
 #pragma once
-// Error and run time of one deformation variant (queue x refinement sweeps) on a scene.
+// Error and run time of one deformation variant (queue x valid-region frame x refinement
+// x relaxation) on a scene.
 #include "report_scenes.h"
 
 #include "geoshaping/chainmail_deformer.h"
 #include "geoshaping/link_projection.h"
 
 #include <memory>
+#include <string>
 
 namespace geoshaping::report
 {
 
+enum class Refinement
+{
+  none,
+  dykstra, // `iterations` Dykstra sweeps
+  admm     // at most `iterations` ADMM iterations (RefinementIterations), tolerance 1e-6 L
+};
+
 struct Variant
 {
   QueueKind queue = QueueKind::fifo_priority;
-  int sweeps = 0; // refinement iterations
+  ValidRegionFrame frame = ValidRegionFrame::axes;
+  Refinement refinement = Refinement::none;
+  int iterations = 0; // refinement iterations (sweeps for Dykstra)
+  int relaxation = 0; // RelaxationIterations (branch relax15): not measured yet, always 0
 };
+// "none", "Dykstra 4", "ADMM 16", ...
+std::string refinement_name(const Variant& v);
+// "FIFO Priority, Axes, ADMM 16"
+std::string variant_name(const Variant& v);
+bool same_variant(const Variant& a, const Variant& b);
 
 struct Measurement
 {
@@ -22,19 +39,24 @@ struct Measurement
   double median_ms = 0.0;    // one frame: deform + refine
   double e_rigid = 0.0, e_link = 0.0, e_temporal = 0.0;
   ReferenceError e_ref;
+  int iterations_run = 0; // refinement iterations the frame ran
 };
 
-// One scene's deformer, metric mesh, projector and reference, built once and shared by
-// the variants.
+// One scene's deformer, metric meshes, projectors and references (one per frame), built
+// once and shared by the variants.
 class SceneBench
 {
 public:
-  // The reference is the point of F nearest the FIFO Priority result (least total
-  // movement from it), by Dykstra capped at `reference_sweeps`.
-  SceneBench(Scene scene, int reference_sweeps);
+  // The reference of each frame is the point of its F nearest the FIFO Priority result
+  // in that frame (least total movement from it), by ADMM to `reference_tolerance` L,
+  // capped at `reference_iterations`.
+  SceneBench(Scene scene, double reference_tolerance, int reference_iterations);
   const Scene& scene() const { return scene_; }
-  const ProjectionReport& reference_report() const { return reference_report_; }
-  double reference_seconds() const { return reference_seconds_; }
+  const ProjectionReport& reference_report(ValidRegionFrame f) const
+  {
+    return reference_report_[int(f)];
+  }
+  double reference_seconds(ValidRegionFrame f) const { return reference_seconds_[int(f)]; }
   std::size_t deformer_bytes() const { return deformer_.memory_bytes(); }
 
   // Times `repetitions` frames at the scene's pull (median), then measures the errors
@@ -43,21 +65,24 @@ public:
 
   // The dense displacements of one frame of `v` at `pull`.
   Displacements frame(const Variant& v, const Eigen::Vector3d& pull);
-  const LinkMesh& link_mesh() const { return links_; }
+  const LinkMesh& link_mesh(ValidRegionFrame f = ValidRegionFrame::axes) const
+  {
+    return links_[int(f)];
+  }
 
 private:
-  // Runs one frame; returns the vertices whose displacement may be non-zero and fills
-  // `values` with theirs when asked.
+  // Runs one frame; returns the vertices whose displacement may be non-zero.
   const std::vector<index_t>& run(const Variant& v, const Eigen::Vector3d& pull);
   const Eigen::Vector3d& value(const Variant& v, index_t vertex) const;
 
   Scene scene_;
   ChainMailDeformer deformer_;
-  LinkMesh links_;
-  std::unique_ptr<LinkProjector> projector_;
-  Displacements reference_;
-  ProjectionReport reference_report_;
-  double reference_seconds_ = 0.0;
+  LinkMesh links_[2];
+  std::unique_ptr<LinkProjector> projector_[2];
+  Displacements reference_[2];
+  ProjectionReport reference_report_[2];
+  double reference_seconds_[2] = { 0.0, 0.0 };
+  ProjectionReport last_;
 };
 
 double median(std::vector<double> v);

@@ -29,10 +29,10 @@ PeerResult run_peer(const Scene& scene, bool smoke)
   using Vertex = Mesh::Vertex_index;
   using Deformation = CGAL::Surface_mesh_deformation<Mesh>; // ARAP, spokes and rims
   using clock = std::chrono::steady_clock;
-  const auto ms = [](clock::time_point t) {
-    return std::chrono::duration<double, std::milli>(clock::now() - t).count();
-  };
+  const auto ms = [](clock::time_point t)
+  { return std::chrono::duration<double, std::milli>(clock::now() - t).count(); };
   PeerResult r;
+  r.scene = scene.title;
   if (scene.triangles.empty())
   {
     r.note = "Left out: the scene has no triangles.";
@@ -42,14 +42,17 @@ PeerResult run_peer(const Scene& scene, bool smoke)
   Mesh mesh;
   std::vector<Vertex> vertex(static_cast<std::size_t>(n));
   for (index_t v = 0; v < n; ++v)
-    vertex[v] = mesh.add_vertex(Kernel::Point_3(scene.xyz[3 * v], scene.xyz[3 * v + 1], scene.xyz[3 * v + 2]));
+    vertex[v] = mesh.add_vertex(
+      Kernel::Point_3(scene.xyz[3 * v], scene.xyz[3 * v + 1], scene.xyz[3 * v + 2]));
   for (std::size_t t = 0; t + 2 < scene.triangles.size(); t += 3)
-    mesh.add_face(vertex[scene.triangles[t]], vertex[scene.triangles[t + 1]], vertex[scene.triangles[t + 2]]);
+    mesh.add_face(
+      vertex[scene.triangles[t]], vertex[scene.triangles[t + 1]], vertex[scene.triangles[t + 2]]);
 
   // Region of interest: what ChainMail FIFO Priority displaces on the same pull.
   ChainMailDeformer chainmail;
   chainmail.set_mesh(scene.xyz.data(), n, scene.adjacency);
   chainmail.set_malleability(scene.malleability.data());
+  chainmail.set_queue(QueueKind::fifo_priority);
   chainmail.deform(scene.grasp, scene.pull);
   const std::vector<index_t> roi = chainmail.moved();
   r.roi = roi.size();
@@ -74,8 +77,8 @@ PeerResult run_peer(const Scene& scene, bool smoke)
   {
     const Eigen::Vector3d pull = scene.pull * (0.9 + 0.1 * f / frames);
     t = clock::now();
-    arap.set_target_position(vertex[scene.grasp],
-      Kernel::Point_3(x0[0] + pull.x(), x0[1] + pull.y(), x0[2] + pull.z()));
+    arap.set_target_position(
+      vertex[scene.grasp], Kernel::Point_3(x0[0] + pull.x(), x0[1] + pull.y(), x0[2] + pull.z()));
     arap.deform(r.iterations, 0.0);
     peer.push_back(ms(t));
     t = clock::now();
@@ -86,10 +89,13 @@ PeerResult run_peer(const Scene& scene, bool smoke)
   r.chainmail_ms = median(ours);
   r.ran = true;
   r.note = "CGAL " CGAL_STR(CGAL_VERSION) " Surface_mesh_deformation (ARAP, spokes and rims, "
-           "Eigen solver) on the " + scene.title + ": same mesh, handle = the grasp, region of "
+                                          "Eigen solver) on the " +
+           scene.title +
+           ": same mesh, handle = the grasp, region of "
            "interest = the vertices ChainMail FIFO Priority displaces (outside it fixed); " +
-           std::to_string(r.iterations) + " ARAP iterations per frame (CGAL's default), median of " +
-           std::to_string(frames) + " frames, in the same run as ChainMail.";
+           std::to_string(r.iterations) +
+           " ARAP iterations per frame (CGAL's default), median of " + std::to_string(frames) +
+           " frames, in the same run as ChainMail.";
   return r;
 }
 #endif

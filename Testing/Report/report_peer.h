@@ -12,12 +12,13 @@ namespace geoshaping::report
 struct PeerResult
 {
   bool ran = false;
-  std::string note;             // what ran, or why it was left out
-  std::size_t roi = 0;          // vertices in the region of interest
-  double preprocess_ms = 0.0;   // once per region of interest
-  double frame_ms = 0.0;        // median per frame (target moved, deform)
-  double chainmail_ms = 0.0;    // FIFO Priority on the same frame, same run
-  int iterations = 0;           // ARAP iterations per frame
+  std::string scene;          // its title
+  std::string note;           // what ran, or why it was left out
+  std::size_t roi = 0;        // vertices in the region of interest
+  double preprocess_ms = 0.0; // once per region of interest
+  double frame_ms = 0.0;      // median per frame (target moved, deform)
+  double chainmail_ms = 0.0;  // FIFO Priority on the same frame, same run
+  int iterations = 0;         // ARAP iterations per frame
 };
 
 // `scene` must carry triangles.

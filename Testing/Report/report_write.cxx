@@ -8,12 +8,27 @@
 namespace geoshaping::report
 {
 
-const Measurement* SceneResult::find(QueueKind q, int sweeps) const
+const Measurement* SceneResult::find(const Variant& wanted) const
 {
   for (const auto& [v, m] : rows)
-    if (v.queue == q && v.sweeps == sweeps)
+    if (same_variant(v, wanted))
       return &m;
-  return nullptr;
+  static const Measurement missing;
+  return &missing;
+}
+
+std::vector<bool> SceneResult::front() const
+{
+  std::vector<bool> on(rows.size(), true);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t j = 0; j < rows.size() && on[i]; ++j)
+    {
+      const Measurement &a = rows[i].second, &b = rows[j].second;
+      if (j != i && b.median_ms <= a.median_ms && b.e_link <= a.e_link &&
+          (b.median_ms < a.median_ms || b.e_link < a.e_link))
+        on[i] = false;
+    }
+  return on;
 }
 
 namespace
@@ -25,7 +40,10 @@ std::string fmt(const char* f, double x)
   return b;
 }
 
-std::string g(double x) { return fmt("%.3g", x); }
+std::string g(double x)
+{
+  return fmt("%.3g", x);
+}
 
 // Per vertex: the largest |u_i - u_j| / L over rigid neighbours j of a rigid i.
 double rigid_deviation(const LinkMesh& lm, const Displacements& u, index_t i)
@@ -41,42 +59,56 @@ double rigid_deviation(const LinkMesh& lm, const Displacements& u, index_t i)
 
 void write_table(std::ostream& md, const SceneResult& s)
 {
-  md << "| queue | refine | displaced | median ms | E_rigid | E_link | E_temporal | E_ref max | E_ref rms |\n"
-     << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const auto& [v, m] : s.rows)
-    md << "| " << queue_name(v.queue) << " | " << v.sweeps << " | " << m.displaced << " | "
-       << fmt("%.3f", m.median_ms) << " | " << g(m.e_rigid) << " | " << g(m.e_link) << " | "
-       << g(m.e_temporal) << " | " << g(m.e_ref.max) << " | " << g(m.e_ref.rms) << " |\n";
+  const std::vector<bool> front = s.front();
+  md << "| front | queue | frame | refinement | iterations run | displaced | median ms | E_rigid | "
+        "E_link | E_temporal | E_ref max | E_ref rms |\n"
+     << "|:---:|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (std::size_t i = 0; i < s.rows.size(); ++i)
+  {
+    const auto& [v, m] = s.rows[i];
+    md << "| " << (front[i] ? "**★**" : "") << " | " << queue_name(v.queue) << " | "
+       << frame_name(v.frame) << " | " << refinement_name(v) << " | " << m.iterations_run << " | "
+       << m.displaced << " | " << fmt("%.3f", m.median_ms) << " | " << g(m.e_rigid) << " | "
+       << g(m.e_link) << " | " << g(m.e_temporal) << " | " << g(m.e_ref.max) << " | "
+       << g(m.e_ref.rms) << " |\n";
+  }
 }
 
 void write_claims(std::ostream& md, const Results& r)
 {
   md << "## The paper's claims, measured\n\n";
   const SceneResult& fault = r.scenes.front();
-  const Measurement* fifo = fault.find(QueueKind::fifo, 0);
-  const Measurement* fp = fault.find(QueueKind::fifo_priority, 0);
+  const Measurement* fifo = fault.find({ QueueKind::fifo });
+  const Measurement* fp = fault.find({ QueueKind::fifo_priority });
   md << "**Figure 6** (plain FIFO ripples through a rigid region, FIFO Priority does not), "
      << fault.scene.title << ": `E_rigid` = **" << g(fifo->e_rigid) << "** under FIFO, **"
-     << g(fp->e_rigid) << "** under FIFO Priority (Priority " << g(fault.find(QueueKind::priority, 0)->e_rigid)
-     << ", Max Violation " << g(fault.find(QueueKind::max_violation, 0)->e_rigid)
-     << "). One refinement sweep takes FIFO to " << g(fault.find(QueueKind::fifo, 1)->e_rigid) << ".\n\n"
+     << g(fp->e_rigid) << "** under FIFO Priority (Priority "
+     << g(fault.find({ QueueKind::priority })->e_rigid) << ", Max Violation "
+     << g(fault.find({ QueueKind::max_violation })->e_rigid)
+     << "). One Dykstra sweep takes FIFO to "
+     << g(fault.find({ QueueKind::fifo, ValidRegionFrame::axes, Refinement::dykstra, 1 })->e_rigid)
+     << ", four ADMM iterations to "
+     << g(fault.find({ QueueKind::fifo, ValidRegionFrame::axes, Refinement::admm, 4 })->e_rigid)
+     << ".\n\n"
      << "![Figure 6: rigid deviation per vertex](img/report-figure6.png)\n\n";
   for (const SceneResult& s : r.scenes)
     if (s.scene.key == "equal_malleability")
     {
-      const Measurement* pr = s.find(QueueKind::priority, 0);
-      const Measurement* f = s.find(QueueKind::fifo_priority, 0);
+      const Measurement* pr = s.find({ QueueKind::priority });
+      const Measurement* f = s.find({ QueueKind::fifo_priority });
       md << "**Figure 8** (Priority vein-like and jumpy, FIFO Priority spiral-like and smooth), "
          << s.scene.title << ", a drag over the last quarter of the pull in small steps: "
          << "`E_temporal` = **" << g(pr->e_temporal) << "** under Priority against **"
-         << g(f->e_temporal) << "** under FIFO Priority (FIFO " << g(s.find(QueueKind::fifo, 0)->e_temporal)
+         << g(f->e_temporal) << "** under FIFO Priority (FIFO "
+         << g(s.find({ QueueKind::fifo })->e_temporal)
          << "; 1 is a rigid translation).\n\n![Figure 8](img/report-figure8.png)\n\n";
     }
   const Table1Row& last = r.table1.rows.back();
   md << "**Table 1** (the FIFO-preserving queue's overhead over FIFO, paper about 1.5x at 29,241): "
      << "FIFO Priority / FIFO = **" << fmt("%.2f", last.ms[2] / last.ms[0]) << "x** here at "
-     << last.displaced[2] << " displaced (paper " << fmt("%.2f", last.paper_ms[2] / last.paper_ms[0])
-     << "x); FIFO Priority / BFS floor = **" << fmt("%.2f", last.ms[2] / last.bfs_ms) << "x** (goal <= 2x).\n\n";
+     << last.displaced[2] << " displaced (paper "
+     << fmt("%.2f", last.paper_ms[2] / last.paper_ms[0]) << "x); FIFO Priority / BFS floor = **"
+     << fmt("%.2f", last.ms[2] / last.bfs_ms) << "x** (goal <= 2x).\n\n";
 }
 
 void write_table1(std::ostream& md, const Table1& t)
@@ -86,7 +118,9 @@ void write_table1(std::ostream& md, const Table1& t)
         "grasp pulled up by the amount that makes FIFO Priority displace the paper's count "
         "(bisection); every queue and the BFS floor timed in the same run, interleaved, "
         "median of 15. Paper: H3D on a 2.6 GHz AMD 5000+ with two haptic threads.\n\n"
-     << "| displaced (FIFO Priority) | FIFO ms (paper) | Priority ms (paper) | FIFO Priority ms (paper) | Max Violation ms | BFS floor ms | speed-up vs paper F / P / FP | Priority / FIFO (paper) | FIFO Priority / FIFO (paper) | FIFO / P / FP / MV over BFS |\n"
+     << "| displaced (FIFO Priority) | FIFO ms (paper) | Priority ms (paper) | FIFO Priority ms "
+        "(paper) | Max Violation ms | BFS floor ms | speed-up vs paper F / P / FP | Priority / "
+        "FIFO (paper) | FIFO Priority / FIFO (paper) | FIFO / P / FP / MV over BFS |\n"
      << "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Table1Row& row : t.rows)
   {
@@ -96,9 +130,10 @@ void write_table1(std::ostream& md, const Table1& t)
     md << " | " << fmt("%.3f", row.ms[3]) << " | " << fmt("%.3f", row.bfs_ms) << " | ";
     for (int q = 0; q < 3; ++q)
       md << (q ? " / " : "") << fmt("%.0f", row.paper_ms[q] / row.ms[q]) << "x";
-    md << " | " << fmt("%.2f", row.ms[1] / row.ms[0]) << " (" << fmt("%.2f", row.paper_ms[1] / row.paper_ms[0])
-       << ") | " << fmt("%.2f", row.ms[2] / row.ms[0]) << " (" << fmt("%.2f", row.paper_ms[2] / row.paper_ms[0])
-       << ") | ";
+    md << " | " << fmt("%.2f", row.ms[1] / row.ms[0]) << " ("
+       << fmt("%.2f", row.paper_ms[1] / row.paper_ms[0]) << ") | "
+       << fmt("%.2f", row.ms[2] / row.ms[0]) << " ("
+       << fmt("%.2f", row.paper_ms[2] / row.paper_ms[0]) << ") | ";
     for (int q = 0; q < 4; ++q)
       md << (q ? " / " : "") << fmt("%.2f", row.ms[q] / row.bfs_ms);
     md << " |\n";
@@ -125,8 +160,8 @@ void write_dumps(const Options& o, SceneBench& bench)
   {
     std::ofstream f(o.out + "/dump_figure6.csv");
     f << "x,y,z,uz_fifo,uz_fifo_priority,dev_fifo,dev_fifo_priority,malleability\n";
-    const Displacements a = bench.frame({ QueueKind::fifo, 0 }, s.pull);
-    const Displacements b = bench.frame({ QueueKind::fifo_priority, 0 }, s.pull);
+    const Displacements a = bench.frame({ QueueKind::fifo }, s.pull);
+    const Displacements b = bench.frame({ QueueKind::fifo_priority }, s.pull);
     for (index_t v = 0; v < n; ++v)
       f << s.xyz[3 * v] << ',' << s.xyz[3 * v + 1] << ',' << s.xyz[3 * v + 2] << ',' << a[v].z()
         << ',' << b[v].z() << ',' << rigid_deviation(lm, a, v) << ',' << rigid_deviation(lm, b, v)
@@ -140,11 +175,11 @@ void write_dumps(const Options& o, SceneBench& bench)
     f << "x,y,queue,uz,jump\n";
     for (QueueKind q : { QueueKind::fifo, QueueKind::priority, QueueKind::fifo_priority })
     {
-      const Displacements a = bench.frame({ q, 0 }, d0);
-      const Displacements b = bench.frame({ q, 0 }, d1);
+      const Displacements a = bench.frame({ q }, d0);
+      const Displacements b = bench.frame({ q }, d1);
       for (index_t v = 0; v < n; ++v)
-        f << s.xyz[3 * v] << ',' << s.xyz[3 * v + 1] << ",\"" << queue_name(q) << "\","
-          << a[v].z() << ',' << (b[v] - a[v]).norm() / (d1 - d0).norm() << '\n';
+        f << s.xyz[3 * v] << ',' << s.xyz[3 * v + 1] << ",\"" << queue_name(q) << "\"," << a[v].z()
+          << ',' << (b[v] - a[v]).norm() / (d1 - d0).norm() << '\n';
     }
   }
 }
@@ -152,14 +187,24 @@ void write_dumps(const Options& o, SceneBench& bench)
 void write_results(const Options& o, const Results& r)
 {
   std::ofstream csv(o.out + "/report.csv");
-  csv << "scene,queue,refinement,displaced,median_ms,E_rigid,E_link,E_temporal,E_ref_max,E_ref_rms\n";
+  csv << "scene,queue,frame,refinement,iterations,relaxation,iterations_run,displaced,median_ms,"
+         "E_rigid,E_link,E_temporal,E_ref_max,E_ref_rms,front\n";
   for (const SceneResult& s : r.scenes)
-    for (const auto& [v, m] : s.rows)
-      csv << '"' << s.scene.title << "\",\"" << queue_name(v.queue) << "\"," << v.sweeps << ','
-          << m.displaced << ',' << m.median_ms << ',' << m.e_rigid << ',' << m.e_link << ','
-          << m.e_temporal << ',' << m.e_ref.max << ',' << m.e_ref.rms << '\n';
+  {
+    const std::vector<bool> front = s.front();
+    for (std::size_t i = 0; i < s.rows.size(); ++i)
+    {
+      const auto& [v, m] = s.rows[i];
+      csv << '"' << s.scene.title << "\",\"" << queue_name(v.queue) << "\"," << frame_name(v.frame)
+          << ",\"" << refinement_name(v) << "\"," << v.iterations << ',' << v.relaxation << ','
+          << m.iterations_run << ',' << m.displaced << ',' << m.median_ms << ',' << m.e_rigid << ','
+          << m.e_link << ',' << m.e_temporal << ',' << m.e_ref.max << ',' << m.e_ref.rms << ','
+          << int(front[i]) << '\n';
+    }
+  }
   std::ofstream t1(o.out + "/table1.csv");
-  t1 << "target,displaced_fifo_priority,fifo_ms,priority_ms,fifo_priority_ms,max_violation_ms,bfs_ms,"
+  t1 << "target,displaced_fifo_priority,fifo_ms,priority_ms,fifo_priority_ms,max_violation_ms,bfs_"
+        "ms,"
         "paper_fifo_ms,paper_priority_ms,paper_fifo_priority_ms\n";
   for (const Table1Row& row : r.table1.rows)
     t1 << row.target << ',' << row.displaced[2] << ',' << row.ms[0] << ',' << row.ms[1] << ','
@@ -168,35 +213,78 @@ void write_results(const Options& o, const Results& r)
 
   std::ofstream md(o.out + "/report.md");
   md << "# Error against run time\n\nWritten by `Testing/Report/run-report.sh` (this file is "
-        "generated; edit report_write.cxx). Machine: "
-     << std::thread::hardware_concurrency()
+        "generated; edit report_write.cxx) in "
+     << fmt("%.0f", r.seconds) << " s. Machine: " << std::thread::hardware_concurrency()
      << " hardware threads; all variants timed in the same run, median of 9 frames (one "
-        "frame = ChainMail + the refinement pass). Errors are divided by the mean edge "
+        "frame = ChainMail + the refinement pass; an ADMM frame never reuses the previous "
+        "frame's factorisation). Errors are divided by the mean edge "
         "length (DESIGN.md section 6, docs/error-metrics.md); `E_temporal` is over a drag "
         "of 24 small steps across the last quarter of the pull.\n\n"
      << (o.smoke ? "**Smoke run (--smoke): shrunken scenes, not the report's numbers.**\n\n" : "")
-     << "![Errors against run time, fault-step horizon](img/report-errors-fault_step.png)\n\n";
+     << "## The front\n\nEvery variant: queue (FIFO, Priority, FIFO Priority, Max Violation) x "
+        "valid-region frame (Axes, Link) x refinement (none; Dykstra 1, 4, 16 sweeps; ADMM "
+        "at most 4, 16, 64 iterations, tolerance 1e-6 L) x relaxation (0 only: "
+        "RelaxationIterations is not on this branch yet). Error = `E_link`, the worst link "
+        "violation in the variant's own frame: it is what refinement and ChainMail promise "
+        "(0 = every link in its valid region), and unlike `E_ref` it needs no reference "
+        "shared across frames. The Pareto front (no variant both faster and closer) is "
+        "marked ★ in the tables and joined by a line in the plot.\n\n"
+     << "![Pareto front of E_link against run time](img/report-front.png)\n\n";
   write_claims(md, r);
   write_table1(md, r.table1);
-  md << "## ARAP peer (CGAL Surface_mesh_deformation)\n\n" << r.peer.note << "\n\n";
-  if (r.peer.ran)
-    md << "| ROI vertices | ARAP preprocess ms | ARAP ms/frame (" << r.peer.iterations
-       << " iterations) | ChainMail FIFO Priority ms/frame | ratio |\n|---:|---:|---:|---:|---:|\n| "
-       << r.peer.roi << " | " << fmt("%.2f", r.peer.preprocess_ms) << " | " << fmt("%.2f", r.peer.frame_ms)
-       << " | " << fmt("%.3f", r.peer.chainmail_ms) << " | " << fmt("%.0f", r.peer.frame_ms / r.peer.chainmail_ms)
-       << "x |\n\n";
-  md << "## Scenes and every variant\n\n";
+  md << "## Refinement at the paper's scale\n\n";
+  if (!r.scale.rows.empty())
+  {
+    md << "The Table 1 grid pulled until FIFO Priority displaces " << r.scale.displaced
+       << " vertices (Axes frame): the ChainMail frame takes **"
+       << fmt("%.2f", r.scale.chainmail_ms) << " ms** (E_link " << g(r.scale.e_link)
+       << " L); each refinement is timed with that frame, median of the run's repetitions, "
+          "interleaved, the factorisation never reused.\n\n"
+       << "| refinement | ms (ChainMail + refinement) | x ChainMail frame | E_link | iterations | "
+          "factorisations | region |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const ScaleRow& row : r.scale.rows)
+      md << "| " << row.solver << " | " << fmt("%.1f", row.ms) << " | "
+         << fmt("%.1f", row.ms / r.scale.chainmail_ms) << " | " << g(row.e_link) << " | "
+         << row.iterations << " | " << row.factorisations << " | " << row.region << " |\n";
+    md << "\n";
+  }
+  md << "## ARAP peer (CGAL Surface_mesh_deformation)\n\n";
+  for (const PeerResult& p : r.peers)
+    md << p.note << "\n\n";
+  md << "| scene | ROI vertices | ARAP preprocess ms | ARAP ms/frame | ChainMail FIFO Priority "
+        "ms/frame | ARAP / ChainMail |\n"
+        "|---|---:|---:|---:|---:|---:|\n";
+  for (const PeerResult& p : r.peers)
+    if (p.ran)
+      md << "| " << p.scene << " | " << p.roi << " | " << fmt("%.1f", p.preprocess_ms) << " | "
+         << fmt("%.2f", p.frame_ms) << " (" << p.iterations << " iterations) | "
+         << fmt("%.3f", p.chainmail_ms) << " | " << fmt("%.0f", p.frame_ms / p.chainmail_ms)
+         << "x |\n";
+  md << "\n## Scenes and every variant\n\n";
   for (const SceneResult& s : r.scenes)
   {
-    md << "### " << s.scene.title << "\n\n" << s.scene.note << ". Deformer memory "
-       << fmt("%.1f", s.bytes_per_vertex) << " bytes/vertex. Reference for `E_ref` (least total "
-       << "movement from the FIFO Priority result, Dykstra; so FIFO Priority with N sweeps converges to it): " << s.reference.iterations
-       << " sweeps in " << fmt("%.1f", s.reference_seconds) << " s, residual violation "
-       << g(s.reference.violation) << " L, "
-       << (s.reference.converged ? "converged (tolerance 1e-9 L)"
-                                 : "**not converged: capped** (E_ref below that residual is not resolved)")
-       << ", region " << s.reference.region << " vertices.\n\n"
-       << "![" << s.scene.title << "](img/report-errors-" << s.scene.key << ".png)\n\n";
+    md << "### " << s.scene.title << "\n\n"
+       << s.scene.note << ". Deformer memory " << fmt("%.1f", s.bytes_per_vertex)
+       << " bytes/vertex. References for `E_ref` (per "
+       << "frame, the least total movement from the FIFO Priority result of that frame, by "
+          "ADMM to "
+       << g(o.reference_tolerance)
+       << " L; so FIFO Priority refined to "
+          "convergence reaches it):";
+    for (ValidRegionFrame f : { ValidRegionFrame::axes, ValidRegionFrame::link })
+    {
+      const ProjectionReport& ref = s.reference[int(f)];
+      md << (f == ValidRegionFrame::link ? ";" : "") << " " << frame_name(f) << " "
+         << ref.iterations << " iterations (" << ref.factorisations << " factorisations) in "
+         << fmt("%.1f", s.reference_seconds[int(f)]) << " s, residual violation "
+         << g(ref.violation) << " L, "
+         << (ref.converged
+                ? "converged"
+                : "**not converged: capped** (E_ref below that residual is not resolved)")
+         << ", region " << ref.region << " vertices";
+    }
+    md << ".\n\n![" << s.scene.title << "](img/report-errors-" << s.scene.key << ".png)\n\n";
     write_table(md, s);
     md << '\n';
   }

@@ -30,8 +30,8 @@ struct LinkMesh
   std::vector<std::uint8_t> pinned;     // non-zero = never moves; empty = none pinned
   double mean_edge = 0.0;               // mean_edge_length(rest, *adjacency)
   // Shape of the valid regions link_distance() and link_error() measure against (the
-  // deformer's, from link_mesh(deformer)). The link projection (refinement) projects onto
-  // the axis-aligned boxes whatever this says.
+  // deformer's, from link_mesh(deformer)), and that the link projection (refinement,
+  // link_projection.h) projects onto.
   ValidRegionFrame frame = ValidRegionFrame::axes;
 
   index_t size() const { return index_t(rest.size()); }
