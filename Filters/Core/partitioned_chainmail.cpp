@@ -1,5 +1,6 @@
 #include "geoshaping/partitioned_chainmail.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace geoshaping
@@ -45,21 +46,55 @@ std::string PartitionedChainMail::set_piece(const double* xyz, index_t n, Adjace
   }
   if (first)
     lo = hi = Eigen::Vector3d::Zero();
-  deformer_.set_mesh(xyz, n, std::move(adjacency), ChainMailDeformer::origin_of(lo, hi));
-  deformer_.set_global_ids(gid);
-  deformer_.set_owned(owned);
-
-  // Who holds which of my owned vertices as a ghost: every piece's ghost ids.
+  // A point may appear several times in a piece (the same global id): the first owned
+  // copy (else the first) stands for it, with the union of the copies' neighbours; the
+  // other copies are isolated ghosts that move with it.
   local_of_.clear();
   local_of_.reserve(std::size_t(n));
-  bool duplicate = false;
-  std::vector<std::int64_t> ghosts;
+  std::vector<index_t> rep(static_cast<std::size_t>(n));
   for (index_t v = 0; v < n; ++v)
   {
-    duplicate |= !local_of_.emplace(gid[v], v).second;
-    if (!owned[v])
-      ghosts.push_back(gid[v]);
+    const auto [it, fresh] = local_of_.emplace(gid[v], v);
+    if (!fresh && owned[v] && !owned[it->second])
+      it->second = v;
   }
+  std::vector<std::uint8_t> is_owned(static_cast<std::size_t>(n), 0);
+  aliases_.clear();
+  for (index_t v = 0; v < n; ++v)
+  {
+    rep[std::size_t(v)] = local_of_[gid[v]];
+    if (rep[std::size_t(v)] != v)
+      aliases_.emplace(rep[std::size_t(v)], v);
+    else
+      is_owned[std::size_t(v)] = owned[v] != 0;
+  }
+  if (!aliases_.empty())
+  {
+    std::vector<std::vector<index_t>> rows{ static_cast<std::size_t>(n) };
+    for (index_t v = 0; v < n; ++v)
+      for (const index_t* it = adjacency.begin(v); it != adjacency.end(v); ++it)
+        if (rep[std::size_t(*it)] != rep[std::size_t(v)])
+          rows[std::size_t(rep[std::size_t(v)])].push_back(rep[std::size_t(*it)]);
+    adjacency.neighbors.clear();
+    for (index_t v = 0; v < n; ++v)
+    {
+      auto& row = rows[std::size_t(v)];
+      std::sort(row.begin(), row.end());
+      row.erase(std::unique(row.begin(), row.end()), row.end());
+      adjacency.neighbors.insert(adjacency.neighbors.end(), row.begin(), row.end());
+      adjacency.offsets[std::size_t(v) + 1] = std::int64_t(adjacency.neighbors.size());
+    }
+  }
+  deformer_.set_mesh(xyz, n, std::move(adjacency), ChainMailDeformer::origin_of(lo, hi));
+  deformer_.set_global_ids(gid);
+  deformer_.set_owned(is_owned.data());
+  owned = is_owned.data();
+
+  // Who holds which of my owned vertices as a ghost: every piece's ghost ids.
+  std::vector<std::int64_t> ghosts;
+  for (index_t v = 0; v < n; ++v)
+    if (rep[std::size_t(v)] == v && !owned[v])
+      ghosts.push_back(gid[v]);
   const auto all_ghosts = exchange.all_gather(ghosts);
   std::vector<std::vector<index_t>> held_by{ std::size_t(pieces) }; // my owned, per piece
   for (int q = 0; q < pieces; ++q)
@@ -70,16 +105,13 @@ std::string PartitionedChainMail::set_piece(const double* xyz, index_t n, Adjace
         if (it != local_of_.end() && owned[it->second])
           held_by[std::size_t(q)].push_back(it->second);
       }
-  // counts[p][q]: how many of q's ghosts p owns; the last value flags a duplicate id.
-  std::vector<std::int64_t> mine(std::size_t(pieces) + 1, 0);
+  // counts[p][q]: how many of q's ghosts p owns.
+  std::vector<std::int64_t> mine(static_cast<std::size_t>(pieces), 0);
   for (int q = 0; q < pieces; ++q)
     mine[std::size_t(q)] = std::int64_t(held_by[std::size_t(q)].size());
-  mine.back() = duplicate;
   const auto counts = exchange.all_gather(mine);
   for (int p = 0; p < pieces; ++p)
   {
-    if (counts[std::size_t(p)].back())
-      return "piece " + std::to_string(p) + " holds a global point id twice";
     std::int64_t owners = 0;
     for (int q = 0; q < pieces; ++q)
       owners += counts[std::size_t(q)][std::size_t(p)];
@@ -137,6 +169,16 @@ void PartitionedChainMail::exchange_frontier(Exchange& exchange)
         deformer_.move_vertex(
           it->second, { m.displacement[0], m.displacement[1], m.displacement[2] }, m.root);
     }
+  if (aliases_.empty())
+    return;
+  const std::size_t end = moved.size();
+  for (std::size_t k = deformer_.superstep_begin(); k < end; ++k)
+  {
+    const index_t v = moved[k];
+    const auto range = aliases_.equal_range(v);
+    for (auto it = range.first; it != range.second; ++it)
+      deformer_.move_vertex(it->second, deformer_.displacement(v), deformer_.root(v));
+  }
 }
 
 FrameResult PartitionedChainMail::deform(

@@ -27,12 +27,14 @@
 #include "geoshaping/chainmail_deformer.h"
 #include "geoshaping/edit_history.h"
 #include "geoshaping/link_projection.h"
+#include "geoshaping/partitioned_chainmail.h"
 #include "geoshaping/sparse_normals.h"
 
 #include <chrono>
 #include <initializer_list>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 struct vtkChainMailDeformationFilter::vtkInternals
@@ -99,7 +101,10 @@ struct vtkChainMailDeformationFilter::vtkInternals
   vtkSmartPointer<vtkDataArray> OutputNormals;
   std::vector<geoshaping::index_t> Affected;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
-  bool WarnedParallel = false;
+  // The distributed path (more than one process): drives Deformer over this piece.
+  std::unique_ptr<geoshaping::PartitionedChainMail> Partition;
+  // Point GlobalIds of the input, when it has them: global id -> point id.
+  std::unordered_map<std::int64_t, geoshaping::index_t> LocalOfGlobal;
   std::set<std::string> Warned; // WarnOnce's messages, cleared when the geometry changes
 };
 

@@ -101,6 +101,20 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
                                                      "grasped vertex moves.");
     }
     in.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
+    // Point GlobalIds decide the propagation order and name the grasp (docs/mpi.md), so
+    // one process gives the same result as several.
+    in.LocalOfGlobal.clear();
+    vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
+    if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
+    {
+      std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
+        in.LocalOfGlobal.emplace(gid[std::size_t(i)], geoshaping::index_t(i));
+      }
+      in.Deformer.set_global_ids(gid.data());
+    }
 
     in.OutputPoints = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
     const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT
@@ -324,6 +338,11 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
         in.Locator->BuildLocator();
       }
       grasp = in.Locator->FindClosestPoint(this->GraspPosition);
+    }
+    if (grasp >= 0 && this->GraspMode == GRASP_POINT_ID && !in.LocalOfGlobal.empty())
+    {
+      const auto it = in.LocalOfGlobal.find(grasp); // GraspPointId is a global id
+      grasp = it == in.LocalOfGlobal.end() ? n : vtkIdType(it->second);
     }
     if (grasp < 0 && this->GraspMode == GRASP_POINT_ID)
     {

@@ -132,7 +132,8 @@ std::vector<std::vector<Outcome>> run_pieces(std::vector<Piece>& pieces,
       {
         Piece& piece = pieces[std::size_t(p)];
         InProcessExchange ex(hub, p);
-        PartitionedChainMail pc;
+        ChainMailDeformer deformer;
+        PartitionedChainMail pc(deformer);
         errors[std::size_t(p)] = pc.set_piece(piece.xyz.data(), index_t(piece.global.size()),
           piece.adjacency, piece.gid.data(), piece.owned.data(), ex);
         if (!errors[std::size_t(p)].empty())
@@ -481,4 +482,61 @@ TEST(PartitionedChainMail, OnlyTheMovedFrontierCrossesPieces)
         std::find(parts[1].gid.begin(), parts[1].gid.end(), parts[0].gid[v]) != parts[1].gid.end())
       ++moved_held_elsewhere;
   EXPECT_EQ(bytes[0], moved_held_elsewhere * sizeof(MovedVertex));
+}
+
+TEST(PartitionedChainMail, APointHeldTwiceByAPieceMovesAsOne)
+{
+  // VTK pieces may hold a point twice (the same global id), each copy in some of its
+  // cells: the copies are one vertex.
+  const Scene s = painted_grid(20, 16);
+  const std::vector<Frame> frames = { { gid_at(s, 8 * 20 + 10), { 0.5, 0.0, 7.0 } } };
+  const PieceSetup setup = [](ChainMailDeformer&) {};
+  auto parts = split(s, striped(s, 2), 2);
+  for (Piece& piece : parts)
+  {
+    const index_t n = index_t(piece.global.size());
+    std::vector<std::vector<index_t>> rows{ static_cast<std::size_t>(n) };
+    for (index_t v = 0; v < n; ++v)
+      rows[std::size_t(v)].assign(piece.adjacency.begin(v), piece.adjacency.end(v));
+    for (index_t v = 0; v < n; v += 3) // a copy of every third point takes half its edges
+    {
+      const index_t copy = index_t(rows.size());
+      rows.emplace_back();
+      auto& row = rows[std::size_t(v)];
+      for (std::size_t k = 0; k < row.size(); k += 2)
+      {
+        const index_t u = row[k];
+        rows.back().push_back(u);
+        auto& back = rows[std::size_t(u)];
+        std::replace(back.begin(), back.end(), v, copy);
+        row[k] = -1;
+      }
+      row.erase(std::remove(row.begin(), row.end(), -1), row.end());
+      piece.global.push_back(piece.global[std::size_t(v)]);
+      piece.xyz.insert(
+        piece.xyz.end(), &piece.xyz[3 * std::size_t(v)], &piece.xyz[3 * std::size_t(v)] + 3);
+      piece.gid.push_back(piece.gid[std::size_t(v)]);
+      piece.owned.push_back(piece.owned[std::size_t(v)]);
+      piece.pins.push_back(piece.pins[std::size_t(v)]);
+      piece.malleability.push_back(piece.malleability[std::size_t(v)]);
+    }
+    piece.adjacency.offsets.assign(1, 0);
+    piece.adjacency.neighbors.clear();
+    for (auto& row : rows)
+    {
+      std::sort(row.begin(), row.end());
+      piece.adjacency.neighbors.insert(piece.adjacency.neighbors.end(), row.begin(), row.end());
+      piece.adjacency.offsets.push_back(std::int64_t(piece.adjacency.neighbors.size()));
+    }
+  }
+  const auto got = run_pieces(parts, frames, setup);
+  const auto whole = run_whole(s, frames, setup);
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    for (std::size_t v = 0; v < parts[p].global.size(); ++v)
+    {
+      const std::size_t g = std::size_t(parts[p].global[v]);
+      ASSERT_EQ(got[p][0].moved[v], whole[0].moved[g]) << p << " " << v;
+      ASSERT_TRUE(same_bits(got[p][0].disp[v], whole[0].disp[g])) << p << " " << v;
+    }
+  EXPECT_GT(whole[0].result.moved, 20u);
 }

@@ -76,13 +76,19 @@ protected:
   std::size_t bytes_sent_ = 0;
 };
 
+// Drives a ChainMailDeformer that holds one piece (set up by set_piece).
 class PartitionedChainMail
 {
 public:
+  explicit PartitionedChainMail(ChainMailDeformer& deformer)
+    : deformer_(deformer)
+  {
+  }
+
   // Collective. `n` local points (xyz), their adjacency (local ids), global ids and
-  // ownership (non-zero = owned). Returns "" or why the partition is refused (a ghost
-  // owned by no piece or by several, a global id twice in one piece); the same answer
-  // on every piece.
+  // ownership (non-zero = owned). A global id held twice by a piece is one point (its
+  // copies move together). Returns "" or why the partition is refused (a ghost owned by
+  // no piece or by several); the same answer on every piece.
   std::string set_piece(const double* xyz, index_t n, Adjacency adjacency, const std::int64_t* gid,
     const std::uint8_t* owned, Exchange& exchange);
   // Malleability, pins, transfer function, queue and frame are set here, the same on
@@ -100,8 +106,9 @@ public:
 private:
   void exchange_frontier(Exchange& exchange);
 
-  ChainMailDeformer deformer_;
+  ChainMailDeformer& deformer_;
   std::unordered_map<std::int64_t, index_t> local_of_; // global id -> local id
+  std::unordered_multimap<index_t, index_t> aliases_;  // local id -> its other copies
   std::vector<int> send_to_, receive_from_;
   // By local id: the indices into send_to_ of the pieces holding it as a ghost (CSR).
   std::vector<std::uint32_t> subscriber_offsets_;
