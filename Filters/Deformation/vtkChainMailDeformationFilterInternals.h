@@ -171,6 +171,21 @@ inline geoshaping::Curve MakeCurve(
   }
   return c;
 }
+
+// The transfer function of the filter's properties and the user's curve points.
+inline geoshaping::TransferFunction Transfer(vtkChainMailDeformationFilter* self,
+  const geoshaping::Curve& stretch, const geoshaping::Curve& compression,
+  const geoshaping::Curve& shear)
+{
+  const int shape = self->GetTransferCurveShape();
+  const double threshold = self->GetStepThreshold();
+  geoshaping::TransferFunction tf;
+  tf.stretch = MakeCurve(self->GetStretchRange(), shape, threshold, stretch);
+  tf.compression = MakeCurve(self->GetCompressionRange(), shape, threshold, compression);
+  tf.shear = MakeCurve(self->GetShearRange(), shape, threshold, shear);
+  tf.exact_rigid_at_zero = self->GetExactRigidAtZero();
+  return tf;
+}
 } // namespace vtkChainMailDeformationFilterDetail
 
 #endif

@@ -296,14 +296,8 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
   vtkInternals& in = *this->Internals;
   const vtkIdType n = input->GetNumberOfPoints();
   // 4. Transfer function, queue and frame, cheap to set every time.
-  geoshaping::TransferFunction tf;
-  tf.stretch =
-    MakeCurve(this->StretchRange, this->TransferCurveShape, this->StepThreshold, in.StretchCurve);
-  tf.compression = MakeCurve(
-    this->CompressionRange, this->TransferCurveShape, this->StepThreshold, in.CompressionCurve);
-  tf.shear =
-    MakeCurve(this->ShearRange, this->TransferCurveShape, this->StepThreshold, in.ShearCurve);
-  tf.exact_rigid_at_zero = this->ExactRigidAtZero;
+  const geoshaping::TransferFunction tf =
+    Transfer(this, in.StretchCurve, in.CompressionCurve, in.ShearCurve);
   if (*tf.validate())
   {
     vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");

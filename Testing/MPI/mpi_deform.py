@@ -31,7 +31,7 @@ elif scene == "plane":  # test_pvserver_loopback's scene, uniform malleability 0
     grasp_at, pull = [0.5, 0.5], [1.0, 0.0, 4.0]
 else:
     source = GOCADTSurfReader(FileName=scene)  # noqa: F405
-    grasp_at, pull = [0.5, 0.5], [0.0, 0.0, 4000.0]
+    grasp_at, pull = [0.5, 0.5], [0.0, 0.0, 80000.0]  # UTM metres, ~10 km spacing
 # Global ids = the point ids of the undistributed data (all on rank 0). Not
 # GenerateGlobalIds: it merges coincident points, and a fault's two sides must stay apart.
 ids = ProgrammableFilter(Input=source)  # noqa: F405
