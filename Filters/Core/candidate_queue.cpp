@@ -1,6 +1,8 @@
 #include "geoshaping/candidate_queue.h"
 
+#include <algorithm>
 #include <cstring>
+#include <tuple>
 
 namespace geoshaping
 {
@@ -35,23 +37,41 @@ bool parse_queue_name(const char* name, QueueKind& kind)
   return false;
 }
 
-void BucketFifoPriorityQueue::reset_ranks(index_t num_ranks)
+void SuperstepQueue::seal(std::uint32_t generation)
 {
-  head_.assign(std::size_t(num_ranks), nullptr);
-  tail_.assign(std::size_t(num_ranks), nullptr);
-  used_.clear();
-  clear();
+  auto rank = [](const SuperstepEntry& e) {
+    return std::make_tuple(e.band, e.root.generation, e.root.gid, e.candidate_gid, e.sponsor_gid);
+  };
+  std::sort(pool_.begin() + std::ptrdiff_t(sealed_), pool_.end(),
+    [&](const SuperstepEntry& a, const SuperstepEntry& b) { return rank(a) < rank(b); });
+  std::size_t begin = sealed_;
+  while (begin < pool_.size())
+  {
+    const SuperstepEntry& first = pool_[begin];
+    std::size_t end = begin + 1;
+    while (end < pool_.size() && pool_[end].band == first.band && pool_[end].root == first.root)
+      ++end;
+    groups_.push({ key(first.band, first.root, generation), begin, end });
+    begin = end;
+  }
+  sealed_ = pool_.size();
 }
 
-void BucketFifoPriorityQueue::clear()
+bool SuperstepQueue::pop(const SuperstepKey& k, std::size_t& begin, std::size_t& end)
 {
-  for (index_t rank : used_)
-    head_[std::size_t(rank)] = tail_[std::size_t(rank)] = nullptr;
-  used_.clear();
-  while (!active_.empty())
-    active_.pop();
-  front_ = nullptr;
-  used_chunks_ = 0;
+  if (groups_.empty() || groups_.top().key != k)
+    return false;
+  begin = groups_.top().begin;
+  end = groups_.top().end;
+  groups_.pop();
+  return true;
+}
+
+void SuperstepQueue::clear()
+{
+  pool_.clear();
+  sealed_ = 0;
+  groups_ = {};
 }
 
 } // namespace geoshaping

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -27,14 +28,10 @@ std::uint64_t spread3(std::uint64_t x)
 }
 } // namespace
 
-void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacency)
+bool ChainMailDeformer::bounds(
+  const double* xyz, index_t n, Eigen::Vector3d& lo, Eigen::Vector3d& hi)
 {
-  const Adjacency adj = std::move(adjacency); // the internal copy replaces it below
-  {
-    std::lock_guard<std::mutex> lock(caller_adjacency_mutex());
-    caller_adjacency_.reset();
-  }
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(0.0), hi = lo;
+  lo = hi = Eigen::Vector3d::Zero();
   bool first = true;
   for (index_t v = 0; v < n; ++v)
   {
@@ -45,7 +42,27 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
     hi = first ? p : hi.cwiseMax(p);
     first = false;
   }
-  origin_ = 0.5 * (lo + hi);
+  return !first;
+}
+
+void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacency)
+{
+  Eigen::Vector3d lo, hi;
+  bounds(xyz, n, lo, hi);
+  set_mesh(xyz, n, std::move(adjacency), origin_of(lo, hi));
+}
+
+void ChainMailDeformer::set_mesh(
+  const double* xyz, index_t n, Adjacency adjacency, const Eigen::Vector3d& origin)
+{
+  const Adjacency adj = std::move(adjacency); // the internal copy replaces it below
+  {
+    std::lock_guard<std::mutex> lock(caller_adjacency_mutex());
+    caller_adjacency_.reset();
+  }
+  Eigen::Vector3d lo, hi;
+  bounds(xyz, n, lo, hi);
+  origin_ = origin;
 
   // Internal order: Morton code of the rest position on a 2^21 lattice over the bounding
   // box (ties and non-finite positions by caller id, the latter last).
@@ -78,7 +95,8 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
   }
   std::vector<std::pair<std::uint64_t, index_t>>().swap(order);
 
-  // Internal CSR: each row keeps the caller's neighbour order (it decides queue order).
+  // Internal CSR: each row keeps the caller's neighbour order (the Priority and Max
+  // Violation queues' tie order depends on it).
   // 32-bit row offsets: 4 billion neighbour entries is far beyond any mesh that fits
   // in memory next to them (checked).
   if (adj.neighbors.size() > std::numeric_limits<std::uint32_t>::max())
@@ -108,11 +126,14 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
   slot_.assign(un, 0);
   pinned_.clear();
   pinned_inner_.clear();
+  gid_.clear();
+  ghost_.clear();
   committed_.clear();
   frame_ = 1; // stamps are 0: nothing has moved
   moved_.clear();
   previously_moved_.clear();
   moved_rec_.clear();
+  moved_root_.clear();
   set_uniform_malleability(0.5);
 }
 
@@ -174,15 +195,18 @@ void ChainMailDeformer::rebuild_ranks(const std::vector<float>& values)
 void ChainMailDeformer::finish_ranks()
 {
   num_ranks_ = std::max<index_t>(1, index_t(distinct_.size()));
-  buckets_.reset_ranks(num_ranks_);
   rebuild_rank_params();
 }
 
 void ChainMailDeformer::rebuild_rank_params()
 {
   rank_params_.resize(distinct_.size());
+  rank_band_.resize(distinct_.size());
   for (std::size_t r = 0; r < distinct_.size(); ++r)
   {
+    // The value's bits: for floats >= +0 their unsigned order is the numeric order.
+    const float value = distinct_[r] == 0.0f ? 0.0f : distinct_[r];
+    std::memcpy(&rank_band_[r], &value, sizeof value);
     // The same arithmetic as displacement_bounds() on transfer_(m).
     const ChainMailParams p = transfer_(distinct_[r]);
     rank_params_[r] = { p.stretch - 1.0, p.compression - 1.0, p.shear };
@@ -203,11 +227,32 @@ void ChainMailDeformer::set_pinned(const std::uint8_t* mask)
     pinned_inner_[i] = pinned_[std::size_t(outer_of_[i])];
 }
 
+void ChainMailDeformer::set_global_ids(const std::int64_t* gid)
+{
+  gid_.clear();
+  if (!gid)
+    return;
+  gid_.resize(nodes_.size());
+  for (std::size_t i = 0; i < nodes_.size(); ++i)
+    gid_[i] = gid[std::size_t(outer_of_[i])];
+}
+
+void ChainMailDeformer::set_owned(const std::uint8_t* mask)
+{
+  ghost_.clear();
+  if (!mask)
+    return;
+  ghost_.resize(nodes_.size());
+  for (std::size_t i = 0; i < nodes_.size(); ++i)
+    ghost_[i] = mask[std::size_t(outer_of_[i])] == 0;
+}
+
 void ChainMailDeformer::reset()
 {
   previously_moved_.swap(moved_);
   moved_.clear();
   moved_rec_.clear();
+  moved_root_.clear();
   if (++frame_ == 0) // wrapped: stale stamps could alias the new frame
   {
     for (Node& node : nodes_)
@@ -240,7 +285,7 @@ void ChainMailDeformer::set_rest(
 
 FrameResult ChainMailDeformer::deform(index_t grasp, const Eigen::Vector3d& displacement)
 {
-  reset();
+  begin_frame();
   FrameResult result;
   if (grasp < 0 || grasp >= size())
   {
@@ -264,24 +309,20 @@ FrameResult ChainMailDeformer::deform(index_t grasp, const Eigen::Vector3d& disp
     return result;
   }
   const std::size_t g = inner(grasp);
-  nodes_[g].stamp = frame_;
-  slot_[g] = 0;
-  moved_rec_.push_back({ displacement, index_t(g), -1 });
-  moved_.push_back(grasp);
-  grasp = index_t(g);
+  move(index_t(g), displacement, -1);
   switch (queue_kind_)
   {
     case QueueKind::fifo:
-      propagate(fifo_, grasp, result);
+    case QueueKind::fifo_priority:
+      end_superstep();
+      for (SuperstepKey key; (key = pending()) != SuperstepQueue::none; end_superstep())
+        result.examined += superstep(key);
       break;
     case QueueKind::priority:
-      propagate(heap_, grasp, result);
-      break;
-    case QueueKind::fifo_priority:
-      propagate(buckets_, grasp, result);
+      propagate(heap_, index_t(g), result);
       break;
     case QueueKind::max_violation:
-      propagate(violation_, grasp, result);
+      propagate(violation_, index_t(g), result);
       break;
   }
   result.ok = true;
@@ -289,12 +330,77 @@ FrameResult ChainMailDeformer::deform(index_t grasp, const Eigen::Vector3d& disp
   return result;
 }
 
+void ChainMailDeformer::begin_frame()
+{
+  reset();
+  supersteps_.clear();
+  superstep_ = 0;
+  superstep_begin_ = 0;
+}
+
+void ChainMailDeformer::move(
+  index_t i, const Eigen::Vector3d& d, index_t sponsor_slot, const SuperstepRoot& root)
+{
+  nodes_[std::size_t(i)].stamp = frame_;
+  slot_[std::size_t(i)] = index_t(moved_rec_.size());
+  moved_rec_.push_back({ d, i, sponsor_slot });
+  moved_root_.push_back(root);
+  moved_.push_back(outer_of_[std::size_t(i)]);
+}
+
+void ChainMailDeformer::move_vertex(index_t v, const Eigen::Vector3d& d, const SuperstepRoot& root)
+{
+  move(index_t(inner(v)), d, -1, root);
+}
+
+std::size_t ChainMailDeformer::superstep(const SuperstepKey& key)
+{
+  std::size_t begin, end;
+  if (!supersteps_.pop(key, begin, end))
+    return 0;
+  const SuperstepRoot root = SuperstepQueue::root_of(key);
+  return frame_kind_ == ValidRegionFrame::link ? examine<ValidRegionFrame::link>(begin, end, root)
+                                               : examine<ValidRegionFrame::axes>(begin, end, root);
+}
+
+void ChainMailDeformer::end_superstep()
+{
+  const bool banded = queue_kind_ == QueueKind::fifo_priority;
+  auto band = [&](index_t i)
+  { return banded ? rank_band_[std::size_t(nodes_[std::size_t(i)].rank)] : 0u; };
+  auto gid = [&](index_t i)
+  { return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)]; };
+  for (std::size_t slot = superstep_begin_; slot < moved_rec_.size(); ++slot)
+  {
+    const index_t s = moved_rec_[slot].vertex;
+    const std::uint32_t s_band = band(s);
+    for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
+    {
+      const index_t c = neighbors_[e];
+      if (nodes_[std::size_t(c)].stamp == frame_ ||
+          (!pinned_inner_.empty() && pinned_inner_[std::size_t(c)]) ||
+          (!ghost_.empty() && ghost_[std::size_t(c)]))
+        continue;
+      const std::uint32_t c_band = band(c);
+      const std::int64_t c_gid = gid(c);
+      // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base.
+      const SuperstepRoot root = c_band < s_band    ? SuperstepRoot{ superstep_ + 1, c_gid }
+                                 : c_band == s_band ? moved_root_[slot]
+                                                    : SuperstepRoot{};
+      supersteps_.push({ c_gid, gid(s), root, c_band, c, index_t(slot) });
+    }
+  }
+  supersteps_.seal(superstep_ + 1);
+  superstep_begin_ = moved_rec_.size();
+  ++superstep_;
+}
+
 namespace
 {
 // displacement_bounds() (valid_region.h) with the transfer function's values evaluated
 // once per malleability rank: the same operations in the same order, so bit-identical.
 template<class Params>
-inline void bounds(
+inline void box_bounds(
   const Eigen::Vector3d& o, const Params& p, Eigen::Vector3d& lo_out, Eigen::Vector3d& hi_out)
 {
   const Eigen::Vector3d a = o.cwiseAbs();
@@ -311,9 +417,51 @@ inline void bounds(
 }
 } // namespace
 
-// How far ahead in the queue the adjacency row is prefetched (measured: 8-32 alike;
-// prefetching the neighbours' records as well did not help).
-constexpr index_t prefetch_distance = 8;
+template<ValidRegionFrame Frame>
+Eigen::Vector3d ChainMailDeformer::required_displacement(
+  const Node& c, const Node& s, const Eigen::Vector3d& su) const
+{
+  // The nearest point of the region to c's rest position. Axes: in displacements
+  // u[s] + [lo - o, hi - o] (valid_region.h). Link: u[s] + the projection of -u[s] onto
+  // the cylinder, exactly u[s] when c is rigid (required_displacement() in
+  // valid_region.h, with the per-rank parameters).
+  const Eigen::Vector3d o = c.rest - s.rest;
+  if (!o.allFinite())
+    return Eigen::Vector3d::Zero();
+  const RankParams& p = rank_params_[std::size_t(c.rank)];
+  if constexpr (Frame == ValidRegionFrame::link)
+  {
+    if (p.stretch1 == 0.0 && p.compression1 == 0.0 && p.shear == 0.0)
+      return su;
+    return su + link_displacement_projection(o, p.stretch1, p.compression1, p.shear, -su);
+  }
+  else
+  {
+    Eigen::Vector3d lo, hi;
+    box_bounds(o, p, lo, hi);
+    return Eigen::Vector3d::Zero().cwiseMax(su + lo).cwiseMin(su + hi);
+  }
+}
+
+template<ValidRegionFrame Frame>
+std::size_t ChainMailDeformer::examine(
+  std::size_t begin, std::size_t end, const SuperstepRoot& root)
+{
+  const SuperstepEntry* const entries = supersteps_.entries();
+  for (std::size_t k = begin; k < end; ++k)
+  {
+    const SuperstepEntry& e = entries[k];
+    const Node& c = nodes_[std::size_t(e.vertex)];
+    if (c.stamp == frame_) // moved by an earlier entry (a sponsor of lower id) or superstep
+      continue;
+    const MovedRecord& s = moved_rec_[std::size_t(e.sponsor)];
+    const Eigen::Vector3d target =
+      required_displacement<Frame>(c, nodes_[std::size_t(s.vertex)], s.disp);
+    if (!target.isZero(0.0))
+      move(e.vertex, target, e.sponsor, root);
+  }
+  return end - begin;
+}
 
 template<class Queue>
 void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& result)
@@ -326,53 +474,23 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
     propagate<ValidRegionFrame::axes>(queue, grasp, result);
 }
 
+// Priority and Max Violation: one candidate at a time, its neighbours pushed at once.
 template<ValidRegionFrame Frame, class Queue>
 void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& result)
 {
-  Node* const nodes = nodes_.data();
-  const RankParams* const params = rank_params_.data();
-  const std::uint32_t* const offsets = offsets_.data();
-  const index_t* const neighbors = neighbors_.data();
-  const std::uint8_t* const pinned = pinned_inner_.empty() ? nullptr : pinned_inner_.data();
-  const std::uint32_t frame = frame_;
-
-  // Where candidate c must move given sponsor s: the nearest point of the region to its
-  // rest position. Axes: in displacements u[s] + [lo - o, hi - o] (valid_region.h).
-  // Link: u[s] + the projection of -u[s] onto the cylinder, exactly u[s] when c is rigid
-  // (required_displacement() in valid_region.h, with the per-rank parameters).
-  auto required_displacement = [&](const Node& c, const Node& s, const Eigen::Vector3d& su)
-  {
-    const Eigen::Vector3d o = c.rest - s.rest;
-    if (!o.allFinite())
-      return Eigen::Vector3d::Zero().eval();
-    const RankParams& p = params[c.rank];
-    if constexpr (Frame == ValidRegionFrame::link)
-    {
-      if (p.stretch1 == 0.0 && p.compression1 == 0.0 && p.shear == 0.0)
-        return su;
-      return (su + link_displacement_projection(o, p.stretch1, p.compression1, p.shear, -su))
-        .eval();
-    }
-    else
-    {
-      Eigen::Vector3d lo, hi;
-      bounds(o, p, lo, hi);
-      return Eigen::Vector3d::Zero().cwiseMax(su + lo).cwiseMin(su + hi).eval();
-    }
-  };
   auto sponsor_neighbours = [&](index_t s, index_t s_slot)
   {
-    const index_t* const end = neighbors + offsets[s + 1];
-    for (const index_t* it = neighbors + offsets[s]; it != end; ++it)
+    for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
     {
-      const index_t c = *it;
-      const Node& node = nodes[c];
-      if (node.stamp == frame || (pinned && pinned[c]))
+      const index_t c = neighbors_[e];
+      const Node& node = nodes_[std::size_t(c)];
+      if (node.stamp == frame_ || (!pinned_inner_.empty() && pinned_inner_[std::size_t(c)]))
         continue;
       double violation = 0.0;
       if constexpr (Queue::needs_violation)
-        violation =
-          required_displacement(node, nodes[s], moved_rec_[std::size_t(s_slot)].disp).norm();
+        violation = required_displacement<Frame>(
+          node, nodes_[std::size_t(s)], moved_rec_[std::size_t(s_slot)].disp)
+                      .norm();
       queue.push({ c, s_slot }, node.rank, violation);
     }
   };
@@ -384,27 +502,16 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
   while (queue.pop(cand))
   {
     ++examined;
-    if constexpr (Queue::can_peek)
-    {
-      // The adjacency row of a candidate a few places behind, read if it moves.
-      Candidate ahead;
-#if defined(__GNUC__)
-      if (queue.peek(prefetch_distance, ahead))
-        __builtin_prefetch(neighbors + offsets[ahead.vertex]);
-#endif
-    }
-    Node& c = nodes[cand.vertex];
-    if (c.stamp == frame)
+    const Node& c = nodes_[std::size_t(cand.vertex)];
+    if (c.stamp == frame_)
       continue;
     const MovedRecord& s = moved_rec_[std::size_t(cand.sponsor)];
-    const Eigen::Vector3d target = required_displacement(c, nodes[s.vertex], s.disp);
+    const Eigen::Vector3d target =
+      required_displacement<Frame>(c, nodes_[std::size_t(s.vertex)], s.disp);
     if (target.isZero(0.0))
       continue;
     const index_t slot = index_t(moved_rec_.size());
-    c.stamp = frame;
-    slot_[std::size_t(cand.vertex)] = slot;
-    moved_rec_.push_back({ target, cand.vertex, cand.sponsor });
-    moved_.push_back(outer_of_[std::size_t(cand.vertex)]);
+    move(cand.vertex, target, cand.sponsor);
     sponsor_neighbours(cand.vertex, slot);
   }
   result.examined = examined;
@@ -460,9 +567,12 @@ std::size_t ChainMailDeformer::memory_bytes() const
          committed_.capacity() * sizeof(Eigen::Vector3d) +
          (moved_.capacity() + previously_moved_.capacity()) * sizeof(index_t) +
          moved_rec_.capacity() * sizeof(MovedRecord) +
+         moved_root_.capacity() * sizeof(SuperstepRoot) +
          (inner_of_.capacity() + outer_of_.capacity()) * sizeof(index_t) +
          caller_adjacency_bytes() + offsets_.capacity() * sizeof(std::uint32_t) +
-         neighbors_.capacity() * sizeof(index_t) + buckets_.memory_bytes();
+         neighbors_.capacity() * sizeof(index_t) + supersteps_.memory_bytes() +
+         rank_band_.capacity() * sizeof(std::uint32_t) + gid_.capacity() * sizeof(std::int64_t) +
+         ghost_.capacity();
 }
 
 } // namespace geoshaping

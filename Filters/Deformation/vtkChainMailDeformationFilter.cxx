@@ -92,18 +92,8 @@ int vtkChainMailDeformationFilter::RequestData(
   in.Refining = false;
   in.Relaxing = false;
 
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (controller && controller->GetNumberOfProcesses() > 1)
+  if (this->RequestDataParallel(input, output, inputVector))
   {
-    if (!in.WarnedParallel)
-    {
-      vtkErrorMacro("ChainMailDeformation propagates through the whole connected mesh and "
-                    "cannot run on data split across "
-                    << controller->GetNumberOfProcesses()
-                    << " processes; the output is the undeformed input. Run pvserver with "
-                       "one rank (or the filter in pvpython/the builtin server).");
-      in.WarnedParallel = true;
-    }
     return 1;
   }
 

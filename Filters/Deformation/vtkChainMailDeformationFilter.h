@@ -53,9 +53,16 @@
  * NaN or infinite coordinate leaves the filter. Quiet fall-backs warn once per cause: a
  * malleability array that is not one-component numeric point data (DefaultMalleability
  * is used), a pin array of several components (component 0 is the mask), an input with
- * no cell edges (only the grasped vertex moves). In parallel
- * (more than one process) the filter refuses with a message, since the propagation
- * needs the whole connected mesh.
+ * no cell edges (only the grasped vertex moves).
+ *
+ * In parallel (more than one process, docs/mpi.md) the filter asks for one ghost level,
+ * takes point identity from the point GlobalIds and ownership from vtkGhostType, and
+ * propagates across processes in supersteps (the core's partitioned_chainmail.h): the
+ * result equals the one-process result bit for bit. GraspPointId is then a global id,
+ * as it is in one process whenever the input carries point GlobalIds. Not distributed
+ * yet, refused with the same error on every process (output = input): refinement,
+ * edits, grasp nearest to a position, the Priority and Max Violation queues, and input
+ * without GlobalIds.
  */
 #ifndef vtkChainMailDeformationFilter_h
 #define vtkChainMailDeformationFilter_h
@@ -303,6 +310,8 @@ protected:
   ~vtkChainMailDeformationFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int ComputeInputUpdateExtent(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   vtkIdType GraspPointId = -1;
   int GraspMode = GRASP_POINT_ID;
@@ -349,6 +358,10 @@ private:
   void KeepAbortedPass(const char* pass, int done, int total);
   // The stages of RequestData (vtkChainMailDeformationFilterUpdate.cxx).
   bool UpdateGeometry(vtkPointSet* input);
+  // The distributed path (vtkChainMailDeformationFilterParallel.cxx): false when this
+  // update runs in one process.
+  bool RequestDataParallel(
+    vtkPointSet* input, vtkPointSet* output, vtkInformationVector** inputVector);
   bool UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
   std::vector<int> UpdateEdits(std::vector<int>& stale);
   void Deform(vtkPointSet* input, std::vector<int>& stale);

@@ -27,6 +27,7 @@
 #include "geoshaping/chainmail_deformer.h"
 #include "geoshaping/edit_history.h"
 #include "geoshaping/link_projection.h"
+#include "geoshaping/partitioned_chainmail.h"
 #include "geoshaping/relaxation.h"
 #include "geoshaping/sparse_normals.h"
 
@@ -34,6 +35,7 @@
 #include <initializer_list>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 struct vtkChainMailDeformationFilter::vtkInternals
@@ -112,7 +114,10 @@ struct vtkChainMailDeformationFilter::vtkInternals
   vtkSmartPointer<vtkDataArray> OutputNormals;
   std::vector<geoshaping::index_t> Affected;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
-  bool WarnedParallel = false;
+  // The distributed path (more than one process): drives Deformer over this piece.
+  std::unique_ptr<geoshaping::PartitionedChainMail> Partition;
+  // Point GlobalIds of the input, when it has them: global id -> point id.
+  std::unordered_map<std::int64_t, geoshaping::index_t> LocalOfGlobal;
   std::set<std::string> Warned; // WarnOnce's messages, cleared when the geometry changes
 };
 
@@ -178,6 +183,21 @@ inline geoshaping::Curve MakeCurve(
     c.points = userPoints.points;
   }
   return c;
+}
+
+// The transfer function of the filter's properties and the user's curve points.
+inline geoshaping::TransferFunction Transfer(vtkChainMailDeformationFilter* self,
+  const geoshaping::Curve& stretch, const geoshaping::Curve& compression,
+  const geoshaping::Curve& shear)
+{
+  const int shape = self->GetTransferCurveShape();
+  const double threshold = self->GetStepThreshold();
+  geoshaping::TransferFunction tf;
+  tf.stretch = MakeCurve(self->GetStretchRange(), shape, threshold, stretch);
+  tf.compression = MakeCurve(self->GetCompressionRange(), shape, threshold, compression);
+  tf.shear = MakeCurve(self->GetShearRange(), shape, threshold, shear);
+  tf.exact_rigid_at_zero = self->GetExactRigidAtZero();
+  return tf;
 }
 } // namespace vtkChainMailDeformationFilterDetail
 

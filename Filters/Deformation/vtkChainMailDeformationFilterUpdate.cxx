@@ -103,6 +103,20 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
                                                      "grasped vertex moves.");
     }
     in.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
+    // Point GlobalIds decide the propagation order and name the grasp (docs/mpi.md), so
+    // one process gives the same result as several.
+    in.LocalOfGlobal.clear();
+    vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
+    if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
+    {
+      std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
+        in.LocalOfGlobal.emplace(gid[std::size_t(i)], geoshaping::index_t(i));
+      }
+      in.Deformer.set_global_ids(gid.data());
+    }
 
     in.OutputPoints = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
     const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT
@@ -284,14 +298,8 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
   vtkInternals& in = *this->Internals;
   const vtkIdType n = input->GetNumberOfPoints();
   // 4. Transfer function, queue and frame, cheap to set every time.
-  geoshaping::TransferFunction tf;
-  tf.stretch =
-    MakeCurve(this->StretchRange, this->TransferCurveShape, this->StepThreshold, in.StretchCurve);
-  tf.compression = MakeCurve(
-    this->CompressionRange, this->TransferCurveShape, this->StepThreshold, in.CompressionCurve);
-  tf.shear =
-    MakeCurve(this->ShearRange, this->TransferCurveShape, this->StepThreshold, in.ShearCurve);
-  tf.exact_rigid_at_zero = this->ExactRigidAtZero;
+  const geoshaping::TransferFunction tf =
+    Transfer(this, in.StretchCurve, in.CompressionCurve, in.ShearCurve);
   if (*tf.validate())
   {
     vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");
@@ -326,6 +334,11 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
         in.Locator->BuildLocator();
       }
       grasp = in.Locator->FindClosestPoint(this->GraspPosition);
+    }
+    if (grasp >= 0 && this->GraspMode == GRASP_POINT_ID && !in.LocalOfGlobal.empty())
+    {
+      const auto it = in.LocalOfGlobal.find(grasp); // GraspPointId is a global id
+      grasp = it == in.LocalOfGlobal.end() ? n : vtkIdType(it->second);
     }
     if (grasp < 0 && this->GraspMode == GRASP_POINT_ID)
     {

@@ -2,11 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 using namespace geoshaping;
 
 namespace
 {
-template <class Q>
+template<class Q>
 std::vector<index_t> drain(Q& q)
 {
   std::vector<index_t> order;
@@ -17,50 +19,44 @@ std::vector<index_t> drain(Q& q)
 }
 } // namespace
 
-TEST(CandidateQueue, FifoKeepsInsertionOrder)
+TEST(CandidateQueue, SuperstepsComeByBandRootAndGenerationEachSortedByIds)
 {
-  FifoQueue q;
-  for (index_t v : { 5, 3, 9 })
-    q.push({ v, 0 }, 9 - v, 0.0);
-  EXPECT_EQ(drain(q), (std::vector<index_t>{ 5, 3, 9 }));
-}
-
-TEST(CandidateQueue, FifoPriorityIsLowestRankFirstAndFifoAmongEquals)
-{
-  BucketFifoPriorityQueue q;
-  q.reset_ranks(3);
-  // (vertex, rank): equal ranks must leave in arrival order.
-  const std::pair<index_t, index_t> input[] = { { 10, 2 }, { 11, 1 }, { 12, 2 }, { 13, 0 },
-    { 14, 1 }, { 15, 2 }, { 16, 0 } };
-  for (auto [v, r] : input)
-    q.push({ v, 0 }, r, 0.0);
-  EXPECT_EQ(drain(q), (std::vector<index_t>{ 13, 16, 11, 14, 10, 12, 15 }));
-}
-
-TEST(CandidateQueue, FifoPriorityInterleavedPushPopAgreesWithStableSortModel)
-{
-  BucketFifoPriorityQueue q;
-  q.reset_ranks(4);
-  std::vector<std::pair<index_t, index_t>> model; // (rank, arrival)
-  std::vector<index_t> got, expected;
-  unsigned seed = 7;
-  for (index_t i = 0; i < 2000; ++i)
+  SuperstepQueue q;
+  const SuperstepRoot base{}, early{ 1, 50 }, late{ 1, 60 };
+  // (candidate gid, sponsor gid, band, root): generation 1, pushed in no particular order.
+  using In = std::tuple<std::int64_t, std::int64_t, std::uint32_t, SuperstepRoot>;
+  for (auto [c, s, b, r] : { In{ 9, 4, 2, base }, In{ 3, 8, 1, base }, In{ 9, 2, 2, base },
+         In{ 1, 5, 2, base }, In{ 3, 1, 1, base }, In{ 60, 7, 1, late }, In{ 50, 7, 1, early } })
+    q.push({ c, s, r, b, index_t(c), index_t(s) });
+  q.seal(1);
+  for (auto [c, s, b, r] : { In{ 7, 1, 1, base }, In{ 2, 2, 0, base } })
+    q.push({ c, s, r, b, index_t(c), index_t(s) });
+  q.seal(2);
+  using P = std::vector<std::pair<std::int64_t, std::int64_t>>;
+  std::vector<std::pair<SuperstepKey, P>> got;
+  for (SuperstepKey key; (key = q.top()) != SuperstepQueue::none;)
   {
-    seed = seed * 1103515245u + 12345u;
-    const index_t rank = index_t((seed >> 16) % 4);
-    q.push({ i, 0 }, rank, 0.0);
-    model.push_back({ rank, i });
-    if ((seed >> 8) % 3 == 0)
-    {
-      Candidate c;
-      ASSERT_TRUE(q.pop(c));
-      got.push_back(c.vertex);
-      auto best = std::min_element(model.begin(), model.end());
-      expected.push_back(best->second);
-      model.erase(best);
-    }
+    std::size_t b, e;
+    SuperstepKey later = key;
+    ++later[2];
+    ASSERT_FALSE(q.pop(later, b, e)); // only the lowest key pops
+    ASSERT_TRUE(q.pop(key, b, e));
+    got.push_back({ key, {} });
+    for (std::size_t k = b; k < e; ++k)
+      got.back().second.push_back({ q.entries()[k].candidate_gid, q.entries()[k].sponsor_gid });
   }
+  const std::vector<std::pair<SuperstepKey, P>> expected = { { SuperstepQueue::key(0, base, 2),
+                                                               { { 2, 2 } } },
+    { SuperstepQueue::key(1, base, 1), { { 3, 1 }, { 3, 8 } } },
+    { SuperstepQueue::key(1, base, 2), { { 7, 1 } } },
+    { SuperstepQueue::key(1, early, 1), { { 50, 7 } } },
+    { SuperstepQueue::key(1, late, 1), { { 60, 7 } } },
+    { SuperstepQueue::key(2, base, 1), { { 1, 5 }, { 9, 2 }, { 9, 4 } } } };
   EXPECT_EQ(got, expected);
+  const SuperstepRoot negative{ 7, -12 };
+  EXPECT_EQ(SuperstepQueue::root_of(SuperstepQueue::key(3, negative, 4)).gid, -12);
+  q.clear();
+  EXPECT_EQ(q.top(), SuperstepQueue::none);
 }
 
 TEST(CandidateQueue, HeapPriorityIsLowestRankFirstButNotFifoAmongEquals)

@@ -1,9 +1,11 @@
 // The optimised ChainMailDeformer against a plain reference implementation of DESIGN.md
 // section 4 and docs/deformer.md, written for clarity: per-vertex std::vectors indexed
 // by the caller's ids, the transfer function evaluated per candidate, std:: containers
-// for the queues. Every frame must agree exactly: the same vertices moved in the same
-// order, the same sponsors, bit-identical displacements, the same number of candidates
-// examined, for all four queues, across frames, pins, commits and set_rest.
+// for the queues (FIFO and FIFO Priority: a std::map from (malleability, generation) to
+// the superstep's entries, sorted when the superstep starts). Every frame must agree
+// exactly: the same vertices moved in the same order, the same sponsors, bit-identical
+// displacements, the same number of candidates examined, for all four queues, across
+// frames, pins, commits, set_rest and global ids.
 #include "geoshaping/chainmail_deformer.h"
 #include "geoshaping/valid_region.h"
 #include "test_meshes.h"
@@ -16,8 +18,11 @@
 #include <deque>
 #include <functional>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <queue>
 #include <random>
+#include <tuple>
 
 using namespace geoshaping;
 using geoshaping::testing::grid_id;
@@ -38,6 +43,9 @@ public:
     for (index_t v = 0; v < d.size(); ++v)
       rest_[v] = d.rest_local(v);
     malleability_.assign(n, 0.5f);
+    gid_.resize(n);
+    for (std::size_t v = 0; v < n; ++v)
+      gid_[v] = std::int64_t(v);
     pinned_.assign(n, 0);
     moved_flag_.assign(n, 0);
     sponsor_.assign(n, -1);
@@ -50,6 +58,7 @@ public:
     ranks();
   }
   void set_pinned(const std::vector<std::uint8_t>& p) { pinned_ = p; }
+  void set_global_ids(const std::vector<std::int64_t>& gid) { gid_ = gid; }
   void set_rest(index_t v, const Eigen::Vector3d& r) { rest_[v] = r; }
   void commit()
   {
@@ -76,33 +85,6 @@ public:
     moved_flag_[g] = 1;
     sponsor_[g] = -1;
     moved_.push_back(g);
-    // One generic queue: entries keyed per kind; FIFO Priority as (rank, sequence).
-    struct Item
-    {
-      double key;
-      std::uint64_t seq;
-      Candidate c;
-    };
-    std::deque<Candidate> fifo;
-    struct RankLater
-    {
-      bool operator()(const Item& a, const Item& b) const { return a.key > b.key; }
-    };
-    struct ViolationLater
-    {
-      bool operator()(const Item& a, const Item& b) const { return b.key > a.key; }
-    };
-    struct RankSeqLater
-    {
-      bool operator()(const Item& a, const Item& b) const
-      {
-        return a.key != b.key ? a.key > b.key : a.seq > b.seq;
-      }
-    };
-    std::priority_queue<Item, std::vector<Item>, RankLater> heap;
-    std::priority_queue<Item, std::vector<Item>, ViolationLater> violation;
-    std::priority_queue<Item, std::vector<Item>, RankSeqLater> bucket;
-    std::uint64_t seq = 0;
     auto required = [&](index_t c, index_t s)
     {
       const Eigen::Vector3d o = rest_[c] - rest_[s];
@@ -113,6 +95,94 @@ public:
       const Box b = displacement_bounds(o, tf(malleability_[c]));
       return Eigen::Vector3d::Zero().cwiseMax(disp_[s] + b.lo).cwiseMin(disp_[s] + b.hi).eval();
     };
+    auto move = [&](index_t c, index_t s, const Eigen::Vector3d& t)
+    {
+      disp_[c] = t;
+      moved_flag_[c] = 1;
+      sponsor_[c] = s;
+      moved_.push_back(c);
+    };
+    if (q == QueueKind::fifo || q == QueueKind::fifo_priority)
+      supersteps(q == QueueKind::fifo_priority, g, required, move, r);
+    else
+      sequential(q, g, required, move, r);
+    r.ok = true;
+    r.moved = moved_.size();
+    return r;
+  }
+
+  // Supersteps: every entry of the lowest (malleability, root, generation), in
+  // (candidate id, sponsor id) order; the neighbours of what a superstep moved are
+  // queued after it. A root (generation, id) starts where an entry goes down in
+  // malleability, is kept within one malleability, and is (0, 0) going up.
+  template<class Required, class Move>
+  void supersteps(bool banded, index_t g, Required required, Move move, FrameResult& r)
+  {
+    using Root = std::pair<std::uint32_t, std::int64_t>;
+    using Entry = std::tuple<std::int64_t, std::int64_t, index_t, index_t>; // gids, c, s
+    std::map<std::tuple<float, Root, std::uint32_t>, std::vector<Entry>> pending;
+    std::vector<Root> root(malleability_.size(), Root{ 0, 0 });
+    std::vector<index_t> this_step{ g };
+    std::uint32_t step = 0;
+    auto band = [&](index_t v) { return banded ? malleability_[v] : 0.0f; };
+    auto queue_neighbours = [&]
+    {
+      for (index_t s : this_step)
+        for (const index_t* it = adj_.begin(s); it != adj_.end(s); ++it)
+        {
+          const index_t c = *it;
+          if (moved_flag_[c] || pinned_[c])
+            continue;
+          const Root rc = band(c) < band(s)    ? Root{ step + 1, gid_[c] }
+                          : band(c) == band(s) ? root[s]
+                                               : Root{ 0, 0 };
+          pending[{ band(c), rc, step + 1 }].emplace_back(gid_[c], gid_[s], c, s);
+        }
+      this_step.clear();
+      ++step;
+    };
+    queue_neighbours();
+    while (!pending.empty())
+    {
+      const Root group_root = std::get<1>(pending.begin()->first);
+      std::vector<Entry> entries = std::move(pending.begin()->second);
+      pending.erase(pending.begin());
+      std::sort(entries.begin(), entries.end());
+      for (const auto& [cg, sg, c, s] : entries)
+      {
+        ++r.examined;
+        if (moved_flag_[c])
+          continue;
+        const Eigen::Vector3d t = required(c, s);
+        if (t.isZero(0.0))
+          continue;
+        move(c, s, t);
+        root[c] = group_root;
+        this_step.push_back(c);
+      }
+      queue_neighbours();
+    }
+  }
+
+  // Priority and Max Violation: one candidate at a time, its neighbours pushed at once.
+  template<class Required, class Move>
+  void sequential(QueueKind q, index_t g, Required required, Move move, FrameResult& r)
+  {
+    struct Item
+    {
+      double key;
+      Candidate c;
+    };
+    struct RankLater
+    {
+      bool operator()(const Item& a, const Item& b) const { return a.key > b.key; }
+    };
+    struct ViolationLater
+    {
+      bool operator()(const Item& a, const Item& b) const { return b.key > a.key; }
+    };
+    std::priority_queue<Item, std::vector<Item>, RankLater> heap;
+    std::priority_queue<Item, std::vector<Item>, ViolationLater> violation;
     auto sponsor = [&](index_t s)
     {
       for (const index_t* it = adj_.begin(s); it != adj_.end(s); ++it)
@@ -120,54 +190,27 @@ public:
         const index_t c = *it;
         if (moved_flag_[c] || pinned_[c])
           continue;
-        const Candidate cand{ c, s };
-        switch (q)
-        {
-          case QueueKind::fifo:
-            fifo.push_back(cand);
-            break;
-          case QueueKind::priority:
-            heap.push({ double(rank_[c]), 0, cand });
-            break;
-          case QueueKind::fifo_priority:
-            bucket.push({ double(rank_[c]), seq++, cand });
-            break;
-          case QueueKind::max_violation:
-            violation.push({ required(c, s).norm(), 0, cand });
-            break;
-        }
+        if (q == QueueKind::priority)
+          heap.push({ double(rank_[c]), { c, s } });
+        else
+          violation.push({ required(c, s).norm(), { c, s } });
       }
     };
     auto pop = [&](Candidate& out)
     {
-      switch (q)
+      if (q == QueueKind::priority)
       {
-        case QueueKind::fifo:
-          if (fifo.empty())
-            return false;
-          out = fifo.front();
-          fifo.pop_front();
-          return true;
-        case QueueKind::priority:
-          if (heap.empty())
-            return false;
-          out = heap.top().c;
-          heap.pop();
-          return true;
-        case QueueKind::fifo_priority:
-          if (bucket.empty())
-            return false;
-          out = bucket.top().c;
-          bucket.pop();
-          return true;
-        case QueueKind::max_violation:
-          if (violation.empty())
-            return false;
-          out = violation.top().c;
-          violation.pop();
-          return true;
+        if (heap.empty())
+          return false;
+        out = heap.top().c;
+        heap.pop();
+        return true;
       }
-      return false;
+      if (violation.empty())
+        return false;
+      out = violation.top().c;
+      violation.pop();
+      return true;
     };
     sponsor(g);
     Candidate c;
@@ -179,15 +222,9 @@ public:
       const Eigen::Vector3d t = required(c.vertex, c.sponsor);
       if (t.isZero(0.0))
         continue;
-      disp_[c.vertex] = t;
-      moved_flag_[c.vertex] = 1;
-      sponsor_[c.vertex] = c.sponsor;
-      moved_.push_back(c.vertex);
+      move(c.vertex, c.sponsor, t);
       sponsor(c.vertex);
     }
-    r.ok = true;
-    r.moved = moved_.size();
-    return r;
   }
 
   std::vector<index_t> moved_;
@@ -208,6 +245,7 @@ private:
   }
 
   const Adjacency& adj_;
+  std::vector<std::int64_t> gid_;
   std::vector<float> malleability_;
   std::vector<index_t> rank_;
   std::vector<std::uint8_t> pinned_;
@@ -440,4 +478,64 @@ TEST(ChainMailReference, CallerIdsAdjacencyAndMalleabilityReadBackAsGiven)
   d.set_mesh(mesh.xyz.data(), mesh.size(), geoshaping::testing::chain(mesh.size(), 1.0).adjacency);
   EXPECT_NE(copy.adjacency().neighbors, d.adjacency().neighbors);
   EXPECT_EQ(copy.adjacency().neighbors, mesh.adjacency.neighbors);
+}
+
+TEST(ChainMailReference, GlobalIdsDecideTheOrderAndRenumberingChangesNothing)
+{
+  const index_t n = 50;
+  auto mesh = jittered(geoshaping::testing::triangle_grid(n, n, 1.0), 13, 0.25);
+  const std::size_t nv = std::size_t(mesh.size());
+  std::vector<float> m(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+    m[v] = float(0.2 + 0.1 * double((v * 7) % 5));
+  std::vector<std::int64_t> gid(nv);
+  std::iota(gid.begin(), gid.end(), std::int64_t(0));
+  std::shuffle(gid.begin(), gid.end(), std::mt19937(3));
+  // The same mesh numbered backwards, with the same global ids.
+  geoshaping::testing::Mesh back;
+  std::vector<float> m_back(nv);
+  std::vector<std::int64_t> gid_back(nv);
+  AdjacencyBuilder builder(mesh.size());
+  auto flip = [&](index_t v) { return index_t(nv) - 1 - v; };
+  for (index_t v = 0; v < mesh.size(); ++v)
+  {
+    const index_t w = flip(v);
+    back.xyz.insert(
+      back.xyz.end(), &mesh.xyz[3 * std::size_t(w)], &mesh.xyz[3 * std::size_t(w)] + 3);
+    m_back[std::size_t(v)] = m[std::size_t(w)];
+    gid_back[std::size_t(v)] = gid[std::size_t(w)];
+    for (const index_t* it = mesh.adjacency.begin(w); it != mesh.adjacency.end(w); ++it)
+    {
+      const std::int64_t edge[2] = { v, flip(*it) };
+      builder.add_cell(CellKind::line, edge, 2);
+    }
+  }
+  back.adjacency = builder.build();
+  for (QueueKind q : { QueueKind::fifo, QueueKind::fifo_priority })
+  {
+    ChainMailDeformer d, e;
+    d.set_mesh(mesh.xyz.data(), mesh.size(), mesh.adjacency);
+    e.set_mesh(back.xyz.data(), back.size(), back.adjacency);
+    d.set_malleability(m.data());
+    e.set_malleability(m_back.data());
+    d.set_global_ids(gid.data());
+    e.set_global_ids(gid_back.data());
+    d.set_queue(q);
+    e.set_queue(q);
+    Reference ref(d, mesh.adjacency);
+    ref.set_malleability(m);
+    ref.set_global_ids(gid);
+    const index_t g = (n / 2) * n + n / 2;
+    expect_same_frame(d, ref, g, { 1.0, 0.5, 9.0 }, "global ids");
+    const FrameResult r = e.deform(flip(g), { 1.0, 0.5, 9.0 });
+    ASSERT_EQ(r.moved, d.moved().size());
+    EXPECT_GT(r.moved, 100u);
+    for (index_t v = 0; v < mesh.size(); ++v)
+    {
+      ASSERT_TRUE(same_bits(d.displacement(v), e.displacement(flip(v)))) << v;
+      if (d.moved_this_frame(v) && d.sponsor(v) >= 0)
+        ASSERT_EQ(d.sponsor(v), flip(e.sponsor(flip(v)))) << v;
+    }
+    EXPECT_EQ(d.global_id(7), gid[7]);
+  }
 }

@@ -2,6 +2,8 @@
 // Structures holding the (candidate, sponsor) pairs awaiting analysis.
 #include "geoshaping/adjacency.h"
 
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <queue>
@@ -12,9 +14,10 @@ namespace geoshaping
 
 enum class QueueKind
 {
-  fifo,          // first in, first out (Li & Brodlie)
+  fifo,          // breadth first in supersteps (Li & Brodlie; SuperstepQueue, band 0)
   priority,      // lowest malleability first, ties in heap order (std::priority_queue)
-  fifo_priority, // lowest malleability first, FIFO among equals (the paper's queue; default)
+  fifo_priority, // lowest malleability first, supersteps among equals (the paper's queue,
+                 // SuperstepQueue; the default)
   max_violation  // largest constraint violation first (Schill's Enhanced ChainMail)
 };
 
@@ -28,40 +31,10 @@ struct Candidate
   index_t sponsor;
 };
 
-// Every queue has push(candidate, rank, violation) / pop(out) / clear(). `rank` is the
-// index of the candidate's malleability among the mesh's sorted distinct values, so
-// rank order is malleability order and equal ranks are exactly equal malleability.
-
-class FifoQueue
-{
-public:
-  static constexpr bool needs_violation = false;
-  static constexpr bool can_peek = true;
-  void push(Candidate c, index_t, double) { items_.push_back(c); }
-  bool pop(Candidate& out)
-  {
-    if (head_ == items_.size())
-      return false;
-    out = items_[head_++];
-    return true;
-  }
-  bool peek(index_t k, Candidate& out) const
-  {
-    if (head_ + std::size_t(k) >= items_.size())
-      return false;
-    out = items_[head_ + std::size_t(k)];
-    return true;
-  }
-  void clear()
-  {
-    items_.clear();
-    head_ = 0;
-  }
-
-private:
-  std::vector<Candidate> items_;
-  std::size_t head_ = 0;
-};
+// The sequential queues (Priority, Max Violation) have push(candidate, rank, violation)
+// / pop(out) / clear(). `rank` is the index of the candidate's malleability among the
+// mesh's sorted distinct values, so rank order is malleability order and equal ranks are
+// exactly equal malleability.
 
 // A binary heap of candidates on one key: the top is the entry `Before` orders first;
 // entries with equal keys come out in whatever order the heap leaves them.
@@ -103,141 +76,96 @@ public:
   void push(Candidate c, index_t rank, double) { push_keyed(c, rank); }
 };
 
-// FIFO-preserving priority queue. One FIFO per distinct malleability value (bucket
-// indexed by rank), each a singly linked list of fixed-size chunks (64 candidates, 512
-// bytes, filled and drained in order) taken from one pool, and a min-heap of the ranks
-// whose bucket is non-empty. push: append to the bucket's tail chunk, O(1), plus one
-// heap push when the bucket was empty; pop: front of the lowest non-empty bucket, O(1),
-// plus one heap pop when it empties. With K distinct values among the queued candidates
-// the cost is O(1) amortised per operation and O(log K) <= O(log n) in the worst case;
-// order is exactly lowest malleability first, first in first out among equal values.
-// Chunks keep each bucket contiguous, so the deformer can look a few entries ahead
-// (peek) to prefetch. The pool is reused between frames, so a frame allocates nothing
-// once warm.
-class BucketFifoPriorityQueue
+// The superstep order of FIFO and FIFO Priority (docs/deformer.md, "Order"): it does
+// not depend on insertion order, so a partitioned mesh gives the same result as one
+// piece. An entry is (candidate c, sponsor s) with the key
+//
+//   (band, root, generation | candidate global id, sponsor global id)
+//
+// - band = c's malleability (FIFO: 0 for all): lowest first;
+// - root = where propagation entered c's band region. An entry into a lower band than
+//   its sponsor's starts a root (its generation, c's id); into the same band it keeps
+//   the sponsor's root; into a higher band, and from the grasp, the base root (0, 0),
+//   which comes first. A region entered downhill at several places is so filled from
+//   the first entry alone, as FIFO Priority's sequential queue does (it drains a lower
+//   band before moving anything else): a rigid region moves as one.
+// - generation = 1 + the superstep in which s moved (the grasp moves in superstep 0).
+//
+// A superstep takes every pending entry of the lowest (band, root, generation) and
+// examines them in (candidate id, sponsor id) order. The entries a superstep creates
+// all have generation t + 1 for superstep t, while its own group has generation
+// g <= t: they never join the superstep that creates them, so the deformer queues them
+// after it ("seal").
+//
+// band is the bit pattern of a float in [0, 1] (+0 for -0), whose unsigned order is the
+// numeric order, so pieces with different sets of malleability values agree on it.
+//
+// Cost: seal sorts the k entries of a generation, O(k log k), and files one group per
+// (band, root) on a binary heap of groups; pop is O(log G) for G pending groups. A frame
+// costs O(P log P) for its P pushes, P <= the sum of the degrees of the moved vertices.
+// The entry pool is reused between frames.
+struct SuperstepRoot
+{
+  std::uint32_t generation = 0; // 0: the base root
+  std::int64_t gid = 0;
+  bool operator==(const SuperstepRoot& o) const
+  {
+    return generation == o.generation && gid == o.gid;
+  }
+};
+
+struct SuperstepEntry
+{
+  std::int64_t candidate_gid;
+  std::int64_t sponsor_gid;
+  SuperstepRoot root;
+  std::uint32_t band;
+  index_t vertex;  // the candidate (the deformer's internal id)
+  index_t sponsor; // the sponsor's slot
+};
+
+// (band, root, generation) as three words compared in lexicographic order, so pieces
+// can reduce it as plain integers.
+using SuperstepKey = std::array<std::uint64_t, 3>;
+
+class SuperstepQueue
 {
 public:
-  static constexpr bool needs_violation = false;
-  static constexpr bool can_peek = true;
-  static constexpr index_t chunk_size = 62; // a chunk is 512 bytes
-  BucketFifoPriorityQueue() = default;
-  // Copies keep the ranks, not the queued candidates or the pool (scratch of a frame).
-  BucketFifoPriorityQueue(const BucketFifoPriorityQueue& o)
+  static constexpr SuperstepKey none = { ~std::uint64_t(0), ~std::uint64_t(0), ~std::uint64_t(0) };
+  static SuperstepKey key(std::uint32_t band, const SuperstepRoot& root, std::uint32_t generation)
   {
-    reset_ranks(index_t(o.head_.size()));
+    return { std::uint64_t(band) << 32 | root.generation,
+      std::uint64_t(root.gid) ^ (std::uint64_t(1) << 63), generation };
   }
-  BucketFifoPriorityQueue& operator=(const BucketFifoPriorityQueue& o)
+  static SuperstepRoot root_of(const SuperstepKey& k)
   {
-    if (this != &o)
-      reset_ranks(index_t(o.head_.size()));
-    return *this;
+    return { std::uint32_t(k[0]), std::int64_t(k[1] ^ (std::uint64_t(1) << 63)) };
   }
-  BucketFifoPriorityQueue(BucketFifoPriorityQueue&&) = default;
-  BucketFifoPriorityQueue& operator=(BucketFifoPriorityQueue&&) = default;
-  void reset_ranks(index_t num_ranks);
-  void push(Candidate c, index_t rank, double)
-  {
-    Chunk* t = tail_[std::size_t(rank)];
-    if (!t) // first push to this rank this frame
-    {
-      t = new_chunk();
-      head_[std::size_t(rank)] = tail_[std::size_t(rank)] = t;
-      used_.push_back(rank);
-      activate(rank);
-    }
-    else if (t->begin == t->end) // empty bucket (then head == tail): restart its chunk
-    {
-      t->begin = t->end = 0;
-      activate(rank);
-    }
-    else if (t->end == chunk_size)
-    {
-      Chunk* n = new_chunk();
-      t->next = n;
-      tail_[std::size_t(rank)] = t = n;
-    }
-    t->items[t->end++] = c;
-  }
-  bool pop(Candidate& out)
-  {
-    Chunk* h = front_;
-    if (!h)
-      return false;
-    out = h->items[h->begin++];
-    if (h->begin == h->end)
-    {
-      if (h->next) // a full chunk drained: the next one is non-empty
-        head_[std::size_t(rank_)] = front_ = h->next;
-      else
-        deactivate();
-    }
-    return true;
-  }
-  // The candidate `k` places behind the front of the lowest bucket, if it lies in the
-  // same chunk (a hint for prefetching: later pushes may change what comes next).
-  bool peek(index_t k, Candidate& out) const
-  {
-    if (!front_ || front_->begin + k >= front_->end)
-      return false;
-    out = front_->items[front_->begin + k];
-    return true;
-  }
+  void push(const SuperstepEntry& e) { pool_.push_back(e); }
+  // Files the entries pushed since the last seal as `generation`.
+  void seal(std::uint32_t generation);
+  // The lowest pending key, `none` when nothing is pending.
+  SuperstepKey top() const { return groups_.empty() ? none : groups_.top().key; }
+  // Removes the group `key` if it is the lowest: its entries are entries()[begin, end),
+  // sorted by (candidate id, sponsor id), valid until the next push.
+  bool pop(const SuperstepKey& key, std::size_t& begin, std::size_t& end);
+  const SuperstepEntry* entries() const { return pool_.data(); }
   void clear();
   std::size_t memory_bytes() const
   {
-    return pool_.size() * sizeof(Chunk) + (head_.capacity() + tail_.capacity()) * sizeof(Chunk*) +
-           (used_.capacity() + active_.size()) * sizeof(index_t);
+    return pool_.capacity() * sizeof(SuperstepEntry) + groups_.size() * sizeof(Group);
   }
 
 private:
-  struct Chunk
+  struct Group
   {
-    Chunk() {} // no zeroing of the items on allocation
-    index_t begin, end;
-    Chunk* next;
-    Candidate items[chunk_size];
+    SuperstepKey key;
+    std::size_t begin, end;
+    bool operator>(const Group& o) const { return key > o.key; }
   };
-  Chunk* new_chunk()
-  {
-    if (used_chunks_ == pool_.size())
-      pool_.emplace_back(new Chunk);
-    Chunk* ch = pool_[used_chunks_++].get();
-    ch->begin = ch->end = 0;
-    ch->next = nullptr;
-    return ch;
-  }
-  // The front is the head chunk of the lowest non-empty rank (rank_), cached.
-  void activate(index_t rank)
-  {
-    if (front_ && rank > rank_)
-    {
-      active_.push(rank);
-      return;
-    }
-    if (front_)
-      active_.push(rank_);
-    rank_ = rank;
-    front_ = head_[std::size_t(rank)];
-  }
-  void deactivate()
-  {
-    if (active_.empty())
-    {
-      front_ = nullptr;
-      return;
-    }
-    rank_ = active_.top();
-    active_.pop();
-    front_ = head_[std::size_t(rank_)];
-  }
-  std::vector<std::unique_ptr<Chunk>> pool_; // stable addresses, reused between frames
-  std::size_t used_chunks_ = 0;
-  std::vector<Chunk*> head_, tail_; // per rank: first and last chunk, null before any push
-  std::vector<index_t> used_;       // ranks with chunks this frame
-  Chunk* front_ = nullptr;          // head chunk of rank_, null when the queue is empty
-  index_t rank_ = 0;
-  // The other non-empty ranks.
-  std::priority_queue<index_t, std::vector<index_t>, std::greater<index_t>> active_;
+  std::vector<SuperstepEntry> pool_;
+  std::size_t sealed_ = 0; // pool_[0, sealed_) is filed in groups
+  std::priority_queue<Group, std::vector<Group>, std::greater<Group>> groups_;
 };
 
 // Enhanced ChainMail order: the candidate whose rest position lies farthest outside its

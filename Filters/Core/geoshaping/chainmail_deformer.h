@@ -27,10 +27,26 @@ struct FrameResult
 // Builds adjacency and rest state once; each frame starts from the rest state, moves
 // the grasped vertex to x0[g] + d and propagates (DESIGN.md section 4):
 //
-//   pop (c, s); skip c if it moved already this frame or is pinned;
+//   pop (c, s); skip c if it moved already this frame;
 //   box = valid region of c w.r.t. s from c's own (t, k, h);
 //   if x0[c] lies outside the box, move c to the nearest point of the box and queue
-//   its neighbours that have not moved, with c as sponsor.
+//   its neighbours that have not moved and are not pinned, with c as sponsor.
+//
+// Order. FIFO and FIFO Priority run in supersteps (SuperstepQueue, candidate_queue.h):
+// a superstep takes every pending entry of the lowest (band, root, generation), band =
+// the candidate's malleability (FIFO: one band), root = where propagation entered the
+// band's region (a region entered downhill is filled from its first entry alone, so
+// rigid regions move as one), generation = 1 + the superstep in which the sponsor
+// moved, and examines them in (candidate global id, sponsor global id) order; the first
+// sponsor that moves a candidate wins. Entries for different candidates in one
+// superstep are independent: a box depends on the candidate's rest position and
+// malleability and on the sponsor, which moved in an earlier superstep. The neighbours
+// of the vertices a superstep moved are queued after it, skipping those moved by then,
+// so the entries (and the supersteps) do not depend on the order inside a superstep.
+// Hence the result depends only on the mesh, its global ids and the pull, never on the
+// vertex numbering or on a partition into pieces (partitioned_chainmail.h). Global
+// ids are the caller's ids unless set_global_ids() gives others. Priority (heap order)
+// and Max Violation pop one candidate at a time and push its neighbours at once.
 //
 // The region is the paper's axis-aligned box (ValidRegionFrame::axes, the default) or
 // the cylinder in the frame of the rest link (ValidRegionFrame::link, rotation
@@ -60,6 +76,17 @@ public:
   // Rest positions, `n` xyz triples in any frame; the centre of their bounding box
   // becomes the local origin. Resets malleability to `default_malleability`, clears pins.
   void set_mesh(const double* xyz, index_t n, Adjacency adjacency);
+  // The same with a given local origin (pieces of one mesh share the whole mesh's, so
+  // their arithmetic is bit-identical to the whole mesh's).
+  void set_mesh(const double* xyz, index_t n, Adjacency adjacency, const Eigen::Vector3d& origin);
+  // The local origin set_mesh chooses: the centre of the bounding box of the finite
+  // points given as lo/hi (bounds() below), zero when there is none.
+  static Eigen::Vector3d origin_of(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi)
+  {
+    return 0.5 * (lo + hi);
+  }
+  // Bounding box of the finite points; false (and lo = hi = 0) when there is none.
+  static bool bounds(const double* xyz, index_t n, Eigen::Vector3d& lo, Eigen::Vector3d& hi);
   index_t size() const { return index_t(nodes_.size()); }
   // The adjacency given to set_mesh. The deformer keeps only its own renumbered copy;
   // this one is rebuilt from it on first use and cached until the next set_mesh.
@@ -77,6 +104,19 @@ public:
   void set_pinned(const std::uint8_t* mask);
   bool pinned(index_t v) const { return !pinned_.empty() && pinned_[std::size_t(v)] != 0; }
 
+  // Global ids (any distinct 64-bit values) decide the order inside a superstep; nullptr
+  // restores the default, the caller's ids.
+  void set_global_ids(const std::int64_t* gid);
+  std::int64_t global_id(index_t v) const
+  {
+    return gid_.empty() ? std::int64_t(v) : gid_[inner(v)];
+  }
+  // Ownership mask for a piece of a partitioned mesh: non-zero = owned. A vertex not
+  // owned (a ghost) is never examined here; its owner moves it and move_vertex() tells
+  // this piece. nullptr: every vertex is owned (the default).
+  void set_owned(const std::uint8_t* mask);
+  bool owned(index_t v) const { return ghost_.empty() || !ghost_[inner(v)]; }
+
   void set_transfer_function(const TransferFunction& tf);
   const TransferFunction& transfer_function() const { return transfer_; }
   void set_queue(QueueKind q) { queue_kind_ = q; }
@@ -90,6 +130,26 @@ public:
   FrameResult deform(index_t grasp, const Eigen::Vector3d& displacement);
   // Back to the rest state (sparse).
   void reset();
+
+  // The frame in supersteps, for a partitioned driver (FIFO and FIFO Priority only):
+  //   begin_frame(); move_vertex(grasp, d) on the grasp's owner; end_superstep();
+  //   while ((key = lowest pending over all pieces) != SuperstepQueue::none)
+  //     superstep(key); move_vertex() for ghosts moved by their owners; end_superstep();
+  // deform() is this loop on one piece. moved()[superstep_begin(), end) are the
+  // vertices moved in the current superstep.
+  void begin_frame();
+  // Moves v by d with no sponsor (the grasp, or a ghost moved by its owner, with the
+  // root its owner gave it); v must not have moved this frame.
+  void move_vertex(index_t v, const Eigen::Vector3d& d, const SuperstepRoot& root = {});
+  // The root of a vertex moved in the current frame (FIFO, FIFO Priority).
+  const SuperstepRoot& root(index_t v) const { return moved_root_[std::size_t(slot_[inner(v)])]; }
+  SuperstepKey pending() const { return supersteps_.top(); }
+  // Examines this piece's entries of `key` (if it is its lowest); returns how many.
+  std::size_t superstep(const SuperstepKey& key);
+  // Queues the unmoved, unpinned, owned neighbours of the vertices moved in this
+  // superstep, and starts the next.
+  void end_superstep();
+  std::size_t superstep_begin() const { return superstep_begin_; }
 
   // Editing (edit_history.h). The rest shape can change: `commit()` makes the last
   // frame's shape the rest shape of the vertices it moved (x0 += u, u = 0), in
@@ -178,6 +238,15 @@ private:
     double stretch1, compression1, shear;
   };
 
+  template<ValidRegionFrame Frame>
+  std::size_t examine(std::size_t begin, std::size_t end, const SuperstepRoot& root);
+  // Where candidate c must move given sponsor s moved by su (see propagate()).
+  template<ValidRegionFrame Frame>
+  Eigen::Vector3d required_displacement(
+    const Node& c, const Node& s, const Eigen::Vector3d& su) const;
+  void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,
+    const SuperstepRoot& root = {});
+
   mutable std::shared_ptr<const Adjacency> caller_adjacency_; // built by adjacency()
   std::vector<std::uint32_t> offsets_; // internal CSR: rows in internal order, each row's
   std::vector<index_t> neighbors_;     // neighbours in the caller's order, internal ids
@@ -188,6 +257,9 @@ private:
   std::vector<index_t> slot_;   // by internal id: slot when moved this frame
   std::vector<float> distinct_; // the sorted distinct malleability values (rank -> value)
   std::vector<RankParams> rank_params_;
+  std::vector<std::uint32_t> rank_band_; // per rank: the band (SuperstepQueue) of its value
+  std::vector<std::int64_t> gid_;        // by internal id; empty: the caller's ids
+  std::vector<std::uint8_t> ghost_;      // by internal id; empty: all owned
   index_t num_ranks_ = 1;
   std::vector<std::uint8_t> pinned_;       // by caller id; empty when none
   std::vector<std::uint8_t> pinned_inner_; // by internal id; empty when none
@@ -196,14 +268,16 @@ private:
   std::uint32_t frame_ = 0;
   std::vector<index_t> moved_, previously_moved_; // caller ids
   std::vector<MovedRecord> moved_rec_;            // by slot
+  std::vector<SuperstepRoot> moved_root_;         // by slot
 
   TransferFunction transfer_;
   QueueKind queue_kind_ = QueueKind::fifo_priority;
   ValidRegionFrame frame_kind_ = ValidRegionFrame::axes;
-  FifoQueue fifo_;
   HeapPriorityQueue heap_;
-  BucketFifoPriorityQueue buckets_;
   MaxViolationQueue violation_;
+  SuperstepQueue supersteps_;
+  std::uint32_t superstep_ = 0;     // the current superstep of the frame
+  std::size_t superstep_begin_ = 0; // slot of its first move
 };
 
 } // namespace geoshaping

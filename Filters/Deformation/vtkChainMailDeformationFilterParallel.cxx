@@ -1,0 +1,297 @@
+// The distributed path of vtkChainMailDeformationFilter (docs/mpi.md): each process
+// holds a piece with one ghost level; the core's PartitionedChainMail propagates across
+// processes through a geoshaping::Exchange over the global vtkMultiProcessController.
+#include "vtkChainMailDeformationFilterInternals.h"
+
+#include "vtkCommunicator.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "geoshaping/partitioned_chainmail.h"
+
+#include <algorithm>
+
+namespace
+{
+// geoshaping::Exchange over a vtkMultiProcessController: collectives by AllGather, the
+// moved frontier by Send/Receive to neighbour processes only, in an order every pair of
+// processes agrees on (pairs in increasing (lower, higher) order, the lower sends
+// first), so blocking sends cannot deadlock.
+class ControllerExchange : public geoshaping::Exchange
+{
+public:
+  explicit ControllerExchange(vtkMultiProcessController* c)
+    : Controller(c)
+  {
+  }
+  int pieces() const override { return this->Controller->GetNumberOfProcesses(); }
+  int piece() const override { return this->Controller->GetLocalProcessId(); }
+
+  geoshaping::SuperstepKey all_min(const geoshaping::SuperstepKey& value) override
+  {
+    std::vector<unsigned long long> all(3 * std::size_t(this->pieces()));
+    const unsigned long long mine[3] = { value[0], value[1], value[2] };
+    this->Controller->AllGather(mine, all.data(), 3);
+    geoshaping::SuperstepKey m = value;
+    for (std::size_t p = 0; p < all.size(); p += 3)
+      m = std::min(m, geoshaping::SuperstepKey{ all[p], all[p + 1], all[p + 2] });
+    return m;
+  }
+
+  std::vector<std::vector<std::int64_t>> all_gather(
+    const std::vector<std::int64_t>& values) override
+  {
+    const int n = this->pieces();
+    std::vector<vtkIdType> lengths(static_cast<std::size_t>(n)), offsets(std::size_t(n) + 1, 0);
+    const vtkIdType mine = vtkIdType(values.size());
+    this->Controller->AllGather(&mine, lengths.data(), 1);
+    for (int p = 0; p < n; ++p)
+      offsets[std::size_t(p) + 1] = offsets[std::size_t(p)] + lengths[std::size_t(p)];
+    std::vector<long long> send(values.begin(), values.end()), all(std::size_t(offsets.back()));
+    this->Controller->GetCommunicator()->AllGatherV(
+      send.data(), all.data(), mine, lengths.data(), offsets.data());
+    std::vector<std::vector<std::int64_t>> out(static_cast<std::size_t>(n));
+    for (int p = 0; p < n; ++p)
+      out[std::size_t(p)].assign(
+        all.begin() + offsets[std::size_t(p)], all.begin() + offsets[std::size_t(p) + 1]);
+    return out;
+  }
+
+  std::vector<std::vector<geoshaping::MovedVertex>> exchange(const std::vector<int>& to,
+    const std::vector<std::vector<geoshaping::MovedVertex>>& out,
+    const std::vector<int>& from) override
+  {
+    const int me = this->piece();
+    std::vector<std::vector<geoshaping::MovedVertex>> in(from.size());
+    std::vector<int> peers(to);
+    peers.insert(peers.end(), from.begin(), from.end());
+    std::sort(peers.begin(), peers.end());
+    peers.erase(std::unique(peers.begin(), peers.end()), peers.end());
+    for (int q : peers)
+    {
+      const auto t = std::find(to.begin(), to.end(), q);
+      const auto f = std::find(from.begin(), from.end(), q);
+      auto send = [&]
+      {
+        if (t == to.end())
+          return;
+        const auto& box = out[std::size_t(t - to.begin())];
+        const vtkIdType count = vtkIdType(box.size());
+        this->Controller->Send(&count, 1, q, Tag);
+        if (count > 0)
+          this->Controller->Send(reinterpret_cast<const char*>(box.data()),
+            count * vtkIdType(sizeof(geoshaping::MovedVertex)), q, Tag + 1);
+        this->bytes_sent_ += box.size() * sizeof(geoshaping::MovedVertex);
+      };
+      auto receive = [&]
+      {
+        if (f == from.end())
+          return;
+        auto& box = in[std::size_t(f - from.begin())];
+        vtkIdType count = 0;
+        this->Controller->Receive(&count, 1, q, Tag);
+        box.resize(std::size_t(count));
+        if (count > 0)
+          this->Controller->Receive(reinterpret_cast<char*>(box.data()),
+            count * vtkIdType(sizeof(geoshaping::MovedVertex)), q, Tag + 1);
+      };
+      if (me < q)
+      {
+        send();
+        receive();
+      }
+      else
+      {
+        receive();
+        send();
+      }
+    }
+    return in;
+  }
+
+private:
+  static constexpr int Tag = 914300;
+  vtkMultiProcessController* Controller;
+};
+
+// True on every process when `ok` is true on every process.
+bool AllAgree(ControllerExchange& ex, bool ok)
+{
+  for (const auto& v : ex.all_gather({ ok ? 1 : 0 }))
+    if (!v[0])
+      return false;
+  return true;
+}
+} // namespace
+
+using namespace vtkChainMailDeformationFilterDetail;
+
+int vtkChainMailDeformationFilter::ComputeInputUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::ComputeInputUpdateExtent(request, inputVector, outputVector))
+    return 0;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    // One ring of ghosts: every neighbour of an owned point is on this process.
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    vtkInformation* outInfo = outputVector->GetInformationObject(0);
+    const int levels =
+      outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+        ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+        : 0;
+    inInfo->Set(
+      vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(levels, 1));
+  }
+  return 1;
+}
+
+bool vtkChainMailDeformationFilter::RequestDataParallel(
+  vtkPointSet* input, vtkPointSet* output, vtkInformationVector** inputVector)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() < 2)
+    return false;
+  vtkInternals& in = *this->Internals;
+  ControllerExchange ex(controller);
+
+  // Not distributed yet: decided from properties, so the same on every process.
+  std::string refused;
+  if (this->RefinementIterations > 0)
+    refused = "RefinementIterations > 0 (refinement)";
+  else if (this->RelaxationIterations > 0)
+    refused = "RelaxationIterations > 0 (relaxation)";
+  else if (!in.EditRecords.empty())
+    refused = "edits (EditHistory, CommitEdit)";
+  else if (this->GraspMode == GRASP_NEAREST_TO_POSITION)
+    refused = "GraspMode nearest to a position (use a GraspPointId: a global point id)";
+  else if (this->CandidateQueue != FIFO && this->CandidateQueue != FIFO_PRIORITY)
+    refused = std::string("the ") +
+              geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) +
+              " queue (sequential; use FIFO or FIFO Priority)";
+  if (!refused.empty())
+  {
+    vtkErrorMacro("Not supported on data split across " << ex.pieces()
+                                                        << " processes yet: " << refused
+                                                        << "; output is the undeformed input.");
+    return true;
+  }
+
+  // Local checks, agreed on by every process (a process that stopped alone would leave
+  // the others waiting in a collective).
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
+  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+  std::string problem;
+  if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
+    problem = "more than 2^31 - 1 points";
+  else if (n > 0 && (!gids || gids->GetNumberOfTuples() != n))
+    problem = "no point GlobalIds (add them before distributing, e.g. GenerateGlobalIds)";
+  else if (n > 0 && (!ghosts || ghosts->GetNumberOfTuples() != n))
+    problem = "no vtkGhostType point array (ownership of the points)";
+  std::vector<double> xyz;
+  vtkIdType firstBad = -1;
+  if (problem.empty() && n > 0 &&
+      vtkGeoShapingAdapter::PointsAsDouble(input->GetPoints(), xyz, firstBad) > 0)
+    problem = "non-finite point coordinates";
+  if (!problem.empty())
+    vtkErrorMacro(
+      "Process " << ex.piece() << ": " << problem << "; output is the undeformed input.");
+  if (!AllAgree(ex, problem.empty()))
+  {
+    if (problem.empty())
+      vtkErrorMacro("Another process refused its piece; output is the undeformed input.");
+    in.GeometryValid = false;
+    in.Partition.reset();
+    return true;
+  }
+
+  // Geometry: rebuilt on every process when it changed on any.
+  const bool stale = !in.Partition || !in.GeometryValid ||
+                     in.GeometryPoints != input->GetPoints() || in.GeometrySize != n ||
+                     in.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
+                     in.GeometryPrecision != this->OutputPointsPrecision;
+  if (!AllAgree(ex, !stale))
+  {
+    in.GeometryValid = false;
+    if (n > 0)
+      this->UpdateGeometry(input); // the output points, normals and locator caches
+    vtkIdType skipped = 0;
+    geoshaping::Adjacency adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
+    std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
+    std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
+      owned[std::size_t(i)] = (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
+    }
+    in.Partition = std::make_unique<geoshaping::PartitionedChainMail>(in.Deformer);
+    const std::string error = in.Partition->set_piece(
+      xyz.data(), geoshaping::index_t(n), std::move(adjacency), gid.data(), owned.data(), ex);
+    in.MalleabilitySource = nullptr; // set_piece reset the deformer's arrays
+    in.PinSource = nullptr;
+    in.MalleabilityDefault = -1.0;
+    if (!error.empty())
+    {
+      vtkErrorMacro("Refused partition: " << error << "; output is the undeformed input.");
+      in.GeometryValid = false;
+      in.Partition.reset();
+      return true;
+    }
+    in.GeometryValid = true;
+  }
+  if (!AllAgree(ex, n == 0 || this->UpdateMalleabilityAndPins(inputVector, n)))
+  {
+    in.Deformer.reset();
+    return true;
+  }
+
+  const geoshaping::TransferFunction tf =
+    Transfer(this, in.StretchCurve, in.CompressionCurve, in.ShearCurve);
+  if (*tf.validate())
+  {
+    vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");
+    return true;
+  }
+  in.Deformer.set_transfer_function(tf);
+  in.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
+  in.Deformer.set_valid_region_frame(
+    static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame));
+  if (this->GraspPointId < 0)
+  {
+    in.Deformer.reset(); // no grasp: the rest shape
+  }
+  else
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const geoshaping::FrameResult r = in.Partition->deform(this->GraspPointId,
+      Eigen::Vector3d(this->Displacement[0], this->Displacement[1], this->Displacement[2]), ex);
+    this->LastDeformationMilliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (!r.ok)
+    {
+      vtkErrorMacro("No deformation: " << r.message << "; output is the undeformed input.");
+    }
+    // Totals over all processes.
+    std::int64_t moved = 0, examined = 0;
+    for (const auto& v : ex.all_gather({ std::int64_t(r.moved), std::int64_t(r.examined) }))
+    {
+      moved += v[0];
+      examined += v[1];
+    }
+    this->NumberOfDisplacedPoints = vtkIdType(moved);
+    this->NumberOfExaminedCandidates = vtkIdType(examined);
+    this->LastGraspPointId = r.ok ? this->GraspPointId : -1;
+    if (r.ok && n > 0 && !this->OutputFits())
+    {
+      in.Deformer.reset();
+      this->NumberOfDisplacedPoints = 0;
+      this->LastGraspPointId = -1;
+    }
+  }
+  if (n > 0)
+    this->WriteOutput(input, output, {}, {});
+  return true;
+}

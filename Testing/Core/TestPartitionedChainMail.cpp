@@ -1,0 +1,542 @@
+// The partitioned ChainMail (partitioned_chainmail.h) against the whole mesh: pieces run
+// by threads exchanging through InProcessExchange must give every vertex the whole
+// mesh's displacement, bit for bit, for any partition into 1..4 pieces.
+#include "geoshaping/in_process_exchange.h"
+#include "geoshaping/partitioned_chainmail.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <functional>
+#include <numeric>
+#include <random>
+#include <set>
+#include <thread>
+
+using namespace geoshaping;
+using geoshaping::testing::Mesh;
+
+namespace
+{
+
+struct Scene
+{
+  Mesh mesh;
+  std::vector<float> malleability;
+  std::vector<std::uint8_t> pins;
+  std::vector<std::int64_t> gid; // not the vertex ids: a shuffled, sparse numbering
+};
+
+struct Piece
+{
+  std::vector<index_t> global; // local -> whole-mesh vertex
+  std::vector<double> xyz;
+  Adjacency adjacency;
+  std::vector<std::int64_t> gid;
+  std::vector<std::uint8_t> owned, pins;
+  std::vector<float> malleability;
+};
+
+// Piece p holds the vertices it owns, their neighbours (the ghost ring) and `extra`
+// ghosts, in a shuffled local order.
+std::vector<Piece> split(const Scene& s, const std::vector<int>& owner, int pieces,
+  const std::vector<std::vector<index_t>>& extra = {}, unsigned seed = 1)
+{
+  const Adjacency& adj = s.mesh.adjacency;
+  std::mt19937 rng(seed);
+  std::vector<Piece> out(static_cast<std::size_t>(pieces));
+  for (int p = 0; p < pieces; ++p)
+  {
+    std::set<index_t> local;
+    for (index_t v = 0; v < s.mesh.size(); ++v)
+      if (owner[std::size_t(v)] == p)
+      {
+        local.insert(v);
+        local.insert(adj.begin(v), adj.end(v));
+      }
+    if (std::size_t(p) < extra.size())
+      local.insert(extra[std::size_t(p)].begin(), extra[std::size_t(p)].end());
+    Piece& piece = out[std::size_t(p)];
+    piece.global.assign(local.begin(), local.end());
+    std::shuffle(piece.global.begin(), piece.global.end(), rng);
+    std::vector<index_t> local_of(static_cast<std::size_t>(s.mesh.size()), -1);
+    for (std::size_t i = 0; i < piece.global.size(); ++i)
+      local_of[std::size_t(piece.global[i])] = index_t(i);
+    piece.adjacency.offsets.push_back(0);
+    for (index_t v : piece.global)
+    {
+      piece.xyz.insert(
+        piece.xyz.end(), &s.mesh.xyz[3 * std::size_t(v)], &s.mesh.xyz[3 * std::size_t(v)] + 3);
+      std::vector<index_t> row;
+      for (const index_t* it = adj.begin(v); it != adj.end(v); ++it)
+        if (local_of[std::size_t(*it)] >= 0)
+          row.push_back(local_of[std::size_t(*it)]);
+      std::sort(row.begin(), row.end());
+      piece.adjacency.neighbors.insert(piece.adjacency.neighbors.end(), row.begin(), row.end());
+      piece.adjacency.offsets.push_back(std::int64_t(piece.adjacency.neighbors.size()));
+      piece.gid.push_back(s.gid[std::size_t(v)]);
+      piece.owned.push_back(owner[std::size_t(v)] == p);
+      piece.pins.push_back(s.pins[std::size_t(v)]);
+      piece.malleability.push_back(s.malleability[std::size_t(v)]);
+    }
+  }
+  return out;
+}
+
+struct Frame
+{
+  std::int64_t grasp; // global id
+  Eigen::Vector3d pull;
+};
+
+// What a frame left on one piece (or the whole mesh), by local vertex.
+struct Outcome
+{
+  FrameResult result;
+  std::vector<Eigen::Vector3d> disp;
+  std::vector<std::uint8_t> moved;
+  std::vector<std::int64_t> sponsor_gid; // -1: none
+};
+
+Outcome record(const ChainMailDeformer& d, const FrameResult& r)
+{
+  Outcome o{ r, {}, {}, {} };
+  for (index_t v = 0; v < d.size(); ++v)
+  {
+    o.disp.push_back(d.displacement(v));
+    o.moved.push_back(d.moved_this_frame(v));
+    const index_t s = d.moved_this_frame(v) ? d.sponsor(v) : -1;
+    o.sponsor_gid.push_back(s < 0 ? -1 : d.global_id(s));
+  }
+  return o;
+}
+
+using PieceSetup = std::function<void(ChainMailDeformer&)>;
+
+// Runs the frames on every piece, each in its own thread; [piece][frame].
+std::vector<std::vector<Outcome>> run_pieces(std::vector<Piece>& pieces,
+  const std::vector<Frame>& frames, const PieceSetup& setup,
+  std::vector<std::string>* setup_errors = nullptr, std::vector<std::size_t>* bytes = nullptr)
+{
+  const int n = int(pieces.size());
+  InProcessHub hub(n);
+  std::vector<std::vector<Outcome>> out(pieces.size());
+  std::vector<std::string> errors(pieces.size());
+  std::vector<std::size_t> sent(pieces.size());
+  std::vector<std::thread> threads;
+  for (int p = 0; p < n; ++p)
+    threads.emplace_back(
+      [&, p]
+      {
+        Piece& piece = pieces[std::size_t(p)];
+        InProcessExchange ex(hub, p);
+        ChainMailDeformer deformer;
+        PartitionedChainMail pc(deformer);
+        errors[std::size_t(p)] = pc.set_piece(piece.xyz.data(), index_t(piece.global.size()),
+          piece.adjacency, piece.gid.data(), piece.owned.data(), ex);
+        if (!errors[std::size_t(p)].empty())
+          return;
+        ChainMailDeformer& d = pc.deformer();
+        d.set_malleability(piece.malleability.data());
+        d.set_pinned(piece.pins.data());
+        setup(d);
+        for (const Frame& f : frames)
+          out[std::size_t(p)].push_back(record(d, pc.deform(f.grasp, f.pull, ex)));
+        sent[std::size_t(p)] = ex.bytes_sent();
+      });
+  for (auto& t : threads)
+    t.join();
+  if (setup_errors)
+    *setup_errors = errors;
+  if (bytes)
+    *bytes = sent;
+  return out;
+}
+
+std::vector<Outcome> run_whole(
+  const Scene& s, const std::vector<Frame>& frames, const PieceSetup& setup)
+{
+  ChainMailDeformer d;
+  d.set_mesh(s.mesh.xyz.data(), s.mesh.size(), s.mesh.adjacency);
+  d.set_global_ids(s.gid.data());
+  d.set_malleability(s.malleability.data());
+  d.set_pinned(s.pins.data());
+  setup(d);
+  std::vector<Outcome> out;
+  for (const Frame& f : frames)
+  {
+    const auto it = std::find(s.gid.begin(), s.gid.end(), f.grasp);
+    out.push_back(record(d, d.deform(index_t(it - s.gid.begin()), f.pull)));
+  }
+  return out;
+}
+
+bool same_bits(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  return std::memcmp(a.data(), b.data(), 3 * sizeof(double)) == 0;
+}
+
+// Every piece's owned vertices and ghosts equal the whole mesh's, bit for bit; each
+// moved vertex is moved by exactly one piece (its owner).
+void expect_same(const std::vector<Piece>& pieces, const std::vector<std::vector<Outcome>>& got,
+  const std::vector<Outcome>& whole, const std::string& what)
+{
+  for (std::size_t f = 0; f < whole.size(); ++f)
+  {
+    const Outcome& w = whole[f];
+    std::size_t moved = 0, examined = 0;
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+    {
+      const Outcome& o = got[p][f];
+      const std::string where =
+        what + " frame " + std::to_string(f) + " piece " + std::to_string(p);
+      ASSERT_EQ(o.result.ok, w.result.ok) << where << ": " << o.result.message;
+      if (!w.result.ok)
+        continue;
+      moved += o.result.moved;
+      examined += o.result.examined;
+      for (std::size_t v = 0; v < pieces[p].global.size(); ++v)
+      {
+        const std::size_t g = std::size_t(pieces[p].global[v]);
+        ASSERT_EQ(o.moved[v], w.moved[g]) << where << " vertex " << g;
+        ASSERT_TRUE(same_bits(o.disp[v], w.disp[g])) << where << " vertex " << g;
+        if (pieces[p].owned[v])
+          ASSERT_EQ(o.sponsor_gid[v], w.sponsor_gid[g]) << where << " vertex " << g;
+      }
+    }
+    if (w.result.ok)
+    {
+      EXPECT_EQ(moved, w.result.moved) << what << " frame " << f;
+      EXPECT_EQ(examined, w.result.examined) << what << " frame " << f;
+    }
+  }
+}
+
+std::vector<std::int64_t> shuffled_ids(index_t n, unsigned seed)
+{
+  std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
+  std::iota(gid.begin(), gid.end(), std::int64_t(0));
+  std::shuffle(gid.begin(), gid.end(), std::mt19937(seed));
+  for (auto& g : gid)
+    g = 3 * g + 1000000007LL; // sparse and large
+  return gid;
+}
+
+// A jittered triangle grid painted in bands, with a rigid (0) block and a wall of pins.
+Scene painted_grid(index_t nx, index_t ny)
+{
+  Scene s;
+  s.mesh = geoshaping::testing::triangle_grid(nx, ny, 1.0);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  for (double& x : s.mesh.xyz)
+    x += jitter(rng);
+  s.malleability.resize(std::size_t(s.mesh.size()));
+  s.pins.assign(s.malleability.size(), 0);
+  for (index_t j = 0; j < ny; ++j)
+    for (index_t i = 0; i < nx; ++i)
+    {
+      const double b = 0.5 + 0.5 * std::sin(0.3 * i) * std::cos(0.25 * j);
+      float m = float(0.2 + 0.1 * std::floor(b * 7.999));
+      if (i >= nx / 3 && i < nx / 3 + 6 && j >= ny / 2 && j < ny / 2 + 5)
+        m = 0.0f;
+      s.malleability[std::size_t(j * nx + i)] = m;
+      if (j == ny / 4 && i > 3 && i < nx - 4)
+        s.pins[std::size_t(j * nx + i)] = 1;
+    }
+  s.gid = shuffled_ids(s.mesh.size(), 17);
+  return s;
+}
+
+// A tetrahedral slab: a jittered nx x ny x nz lattice cut into tetrahedra (UTM-sized).
+Scene tet_slab(index_t nx, index_t ny, index_t nz)
+{
+  Scene s;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  for (index_t k = 0; k < nz; ++k)
+    for (index_t j = 0; j < ny; ++j)
+      for (index_t i = 0; i < nx; ++i)
+        for (double c : { double(i), double(j), 0.5 * double(k) })
+          s.mesh.xyz.push_back(5e5 + c + jitter(rng));
+  const index_t n = nx * ny * nz;
+  AdjacencyBuilder builder(n);
+  auto id = [&](index_t i, index_t j, index_t k) { return std::int64_t((k * ny + j) * nx + i); };
+  for (index_t k = 0; k + 1 < nz; ++k)
+    for (index_t j = 0; j + 1 < ny; ++j)
+      for (index_t i = 0; i + 1 < nx; ++i)
+      {
+        // The six tetrahedra of a cube around its main diagonal.
+        const std::int64_t c[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+          id(i, j + 1, k + 1) };
+        const int tets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
+          { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
+        for (const auto& t : tets)
+        {
+          const std::int64_t ids[4] = { c[t[0]], c[t[1]], c[t[2]], c[t[3]] };
+          builder.add_cell(CellKind::tetra, ids, 4);
+        }
+      }
+  s.mesh.adjacency = builder.build();
+  s.malleability.resize(std::size_t(n));
+  std::uniform_int_distribution<int> band(0, 4);
+  for (float& m : s.malleability)
+    m = 0.25f * float(band(rng));
+  s.pins.assign(std::size_t(n), 0);
+  s.pins[std::size_t(id(nx / 2, 1, 0))] = 1;
+  s.gid = shuffled_ids(n, 23);
+  return s;
+}
+
+std::vector<int> striped(const Scene& s, int pieces)
+{
+  double lo = 1e300, hi = -1e300;
+  for (index_t v = 0; v < s.mesh.size(); ++v)
+  {
+    lo = std::min(lo, s.mesh.xyz[3 * std::size_t(v)]);
+    hi = std::max(hi, s.mesh.xyz[3 * std::size_t(v)]);
+  }
+  std::vector<int> owner(static_cast<std::size_t>(s.mesh.size()));
+  for (index_t v = 0; v < s.mesh.size(); ++v)
+    owner[std::size_t(v)] =
+      std::min(pieces - 1, int(double(pieces) * (s.mesh.xyz[3 * std::size_t(v)] - lo) / (hi - lo)));
+  return owner;
+}
+
+std::vector<int> random_owner(const Scene& s, const std::vector<int>& choices, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, choices.size() - 1);
+  std::vector<int> owner(static_cast<std::size_t>(s.mesh.size()));
+  for (int& o : owner)
+    o = choices[pick(rng)];
+  return owner;
+}
+
+std::int64_t gid_at(const Scene& s, index_t v)
+{
+  return s.gid[std::size_t(v)];
+}
+
+void expect_partitions_match(
+  const Scene& s, const std::vector<Frame>& frames, const std::string& what)
+{
+  for (QueueKind q : { QueueKind::fifo_priority, QueueKind::fifo })
+    for (ValidRegionFrame f : { ValidRegionFrame::axes, ValidRegionFrame::link })
+    {
+      const PieceSetup setup = [&](ChainMailDeformer& d)
+      {
+        d.set_queue(q);
+        d.set_valid_region_frame(f);
+      };
+      const auto whole = run_whole(s, frames, setup);
+      for (int pieces = 1; pieces <= 4; ++pieces)
+      {
+        const std::string name = what + " " + queue_name(q) + " " + frame_name(f) + " " +
+                                 std::to_string(pieces) + " pieces";
+        auto parts = split(s, striped(s, pieces), pieces);
+        expect_same(parts, run_pieces(parts, frames, setup), whole, name + " striped");
+        std::vector<int> all(static_cast<std::size_t>(pieces));
+        std::iota(all.begin(), all.end(), 0);
+        auto random = split(s, random_owner(s, all, unsigned(pieces)), pieces, {}, 9);
+        expect_same(random, run_pieces(random, frames, setup), whole, name + " random");
+      }
+    }
+}
+
+} // namespace
+
+TEST(PartitionedChainMail, PaintedGridEqualsTheWholeMeshForAnyPartition)
+{
+  const index_t nx = 36, ny = 30;
+  const Scene s = painted_grid(nx, ny);
+  expect_partitions_match(s,
+    { { gid_at(s, (ny / 2) * nx + nx / 2), { 0.5, -0.3, 6.0 } },
+      { gid_at(s, (ny / 2 + 2) * nx + nx / 3 + 2), { 3.0, 2.0, 10.0 } }, // inside the rigid block
+      { gid_at(s, 3), { -1.0, 0.0, 25.0 } } },
+    "painted grid");
+}
+
+TEST(PartitionedChainMail, TetrahedralSlabEqualsTheWholeMeshForAnyPartition)
+{
+  const Scene s = tet_slab(14, 10, 5);
+  expect_partitions_match(s,
+    { { gid_at(s, (2 * 10 + 5) * 14 + 7), { 1.0, -2.0, 4.0 } },
+      { gid_at(s, 0), { 0.5, 0.5, 3.0 } } },
+    "tet slab");
+}
+
+TEST(PartitionedChainMail, RigidRegionMovesAsOneAcrossPieceBordersAndPinsBlock)
+{
+  const auto island = geoshaping::testing::rigid_island();
+  Scene s{ island.mesh, island.malleability,
+    std::vector<std::uint8_t>(island.malleability.size(), 0), shuffled_ids(island.mesh.size(), 3) };
+  // Pins: a row below the grasp.
+  for (index_t i = 5; i < 26; ++i)
+    s.pins[std::size_t(4 * 31 + i)] = 1;
+  const std::vector<Frame> frames = { { gid_at(s, island.grasp),
+    Eigen::Vector3d(island.pull[0], island.pull[1], island.pull[2]) } };
+  const PieceSetup setup = [](ChainMailDeformer&) {};
+  auto parts = split(s, random_owner(s, { 0, 1, 2, 3 }, 4), 4);
+  const auto got = run_pieces(parts, frames, setup);
+  expect_same(parts, got, run_whole(s, frames, setup), "island");
+  // Independently of the whole mesh: the island's vertices, on whichever piece owns
+  // them, all have one displacement, and no pinned vertex moved.
+  std::vector<Eigen::Vector3d> rigid;
+  std::size_t pinned_moved = 0, moved = 0;
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    for (std::size_t v = 0; v < parts[p].global.size(); ++v)
+    {
+      if (!parts[p].owned[v])
+        continue;
+      moved += got[p][0].moved[v];
+      pinned_moved += parts[p].pins[v] && got[p][0].moved[v];
+      if (parts[p].malleability[v] == 0.0f)
+        rigid.push_back(got[p][0].disp[v]);
+    }
+  ASSERT_EQ(rigid.size(), 49u);
+  EXPECT_GT(moved, 49u);
+  EXPECT_EQ(pinned_moved, 0u);
+  EXPECT_FALSE(rigid.front().isZero(0.0));
+  for (const auto& d : rigid)
+    EXPECT_TRUE(same_bits(d, rigid.front()));
+}
+
+TEST(PartitionedChainMail, EmptyPieceAndGhostOnlyPieceTakePart)
+{
+  const Scene s = painted_grid(24, 20);
+  const std::vector<Frame> frames = { { gid_at(s, 10 * 24 + 12), { 0.0, 1.0, 8.0 } } };
+  const PieceSetup setup = [](ChainMailDeformer&) {};
+  const auto whole = run_whole(s, frames, setup);
+  // Piece 1 holds nothing at all.
+  auto empty = split(s, random_owner(s, { 0, 2 }, 5), 3);
+  ASSERT_TRUE(empty[1].global.empty());
+  expect_same(empty, run_pieces(empty, frames, setup), whole, "empty piece");
+  // Piece 2 owns nothing but holds ghosts around the grasp.
+  std::vector<index_t> ghosts;
+  for (index_t j = 6; j < 14; ++j)
+    for (index_t i = 8; i < 16; ++i)
+      ghosts.push_back(j * 24 + i);
+  auto ghost_only = split(s, striped(s, 2), 3, { {}, {}, ghosts });
+  ASSERT_FALSE(ghost_only[2].global.empty());
+  expect_same(ghost_only, run_pieces(ghost_only, frames, setup), whole, "ghost-only piece");
+}
+
+TEST(PartitionedChainMail, SequentialQueuesAndBadGraspsFailOnEveryPiece)
+{
+  const Scene s = painted_grid(16, 12);
+  const index_t pinned = 3 * 16 + 6; // on the wall of pins
+  ASSERT_TRUE(s.pins[std::size_t(pinned)]);
+  const std::vector<Frame> frames = { { gid_at(s, 50), { 0.0, 0.0, 2.0 } },
+    { -5, { 0.0, 0.0, 2.0 } }, { gid_at(s, pinned), { 0.0, 0.0, 2.0 } },
+    { gid_at(s, 50), { 0.0, NAN, 2.0 } } };
+  for (QueueKind q : { QueueKind::priority, QueueKind::max_violation, QueueKind::fifo_priority })
+  {
+    auto parts = split(s, striped(s, 3), 3);
+    const auto got = run_pieces(parts, frames, [q](ChainMailDeformer& d) { d.set_queue(q); });
+    for (std::size_t f = 0; f < frames.size(); ++f)
+      for (const auto& piece : got)
+      {
+        EXPECT_EQ(piece[f].result.ok, q == QueueKind::fifo_priority && f == 0) << f;
+        EXPECT_EQ(piece[f].result.message, got[0][f].result.message);
+        if (!piece[f].result.ok)
+          EXPECT_EQ(std::count(piece[f].moved.begin(), piece[f].moved.end(), 1), 0);
+      }
+  }
+}
+
+TEST(PartitionedChainMail, GhostOwnedByNoPieceIsRefusedOnEveryPiece)
+{
+  const Scene s = painted_grid(16, 12);
+  auto parts = split(s, striped(s, 2), 2);
+  // Piece 0 gives up ownership of one of its vertices that piece 1 holds as a ghost.
+  for (std::size_t v = 0; v < parts[0].global.size(); ++v)
+    if (parts[0].owned[v] &&
+        std::find(parts[1].gid.begin(), parts[1].gid.end(), parts[0].gid[v]) != parts[1].gid.end())
+    {
+      parts[0].owned[v] = 0;
+      break;
+    }
+  std::vector<std::string> errors;
+  run_pieces(
+    parts, {}, [](ChainMailDeformer&) {}, &errors);
+  ASSERT_FALSE(errors[0].empty());
+  EXPECT_EQ(errors[0], errors[1]);
+}
+
+TEST(PartitionedChainMail, OnlyTheMovedFrontierCrossesPieces)
+{
+  // Two stripes: what crosses is the moved vertices on the border, 32 bytes each.
+  const Scene s = painted_grid(40, 20);
+  const std::vector<Frame> frames = { { gid_at(s, 10 * 40 + 5), { 0.0, 0.0, 3.0 } } };
+  auto parts = split(s, striped(s, 2), 2);
+  std::vector<std::size_t> bytes;
+  const auto got = run_pieces(
+    parts, frames, [](ChainMailDeformer&) {}, nullptr, &bytes);
+  std::size_t moved_held_elsewhere = 0; // moved owned vertices the other piece holds
+  for (std::size_t v = 0; v < parts[0].global.size(); ++v)
+    if (parts[0].owned[v] && got[0][0].moved[v] &&
+        std::find(parts[1].gid.begin(), parts[1].gid.end(), parts[0].gid[v]) != parts[1].gid.end())
+      ++moved_held_elsewhere;
+  EXPECT_EQ(bytes[0], moved_held_elsewhere * sizeof(MovedVertex));
+}
+
+TEST(PartitionedChainMail, APointHeldTwiceByAPieceMovesAsOne)
+{
+  // VTK pieces may hold a point twice (the same global id), each copy in some of its
+  // cells: the copies are one vertex.
+  const Scene s = painted_grid(20, 16);
+  const std::vector<Frame> frames = { { gid_at(s, 8 * 20 + 10), { 0.5, 0.0, 7.0 } } };
+  const PieceSetup setup = [](ChainMailDeformer&) {};
+  auto parts = split(s, striped(s, 2), 2);
+  for (Piece& piece : parts)
+  {
+    const index_t n = index_t(piece.global.size());
+    std::vector<std::vector<index_t>> rows{ static_cast<std::size_t>(n) };
+    for (index_t v = 0; v < n; ++v)
+      rows[std::size_t(v)].assign(piece.adjacency.begin(v), piece.adjacency.end(v));
+    for (index_t v = 0; v < n; v += 3) // a copy of every third point takes half its edges
+    {
+      const index_t copy = index_t(rows.size());
+      rows.emplace_back();
+      auto& row = rows[std::size_t(v)];
+      for (std::size_t k = 0; k < row.size(); k += 2)
+      {
+        const index_t u = row[k];
+        rows.back().push_back(u);
+        auto& back = rows[std::size_t(u)];
+        std::replace(back.begin(), back.end(), v, copy);
+        row[k] = -1;
+      }
+      row.erase(std::remove(row.begin(), row.end(), -1), row.end());
+      piece.global.push_back(piece.global[std::size_t(v)]);
+      piece.xyz.insert(
+        piece.xyz.end(), &piece.xyz[3 * std::size_t(v)], &piece.xyz[3 * std::size_t(v)] + 3);
+      piece.gid.push_back(piece.gid[std::size_t(v)]);
+      piece.owned.push_back(piece.owned[std::size_t(v)]);
+      piece.pins.push_back(piece.pins[std::size_t(v)]);
+      piece.malleability.push_back(piece.malleability[std::size_t(v)]);
+    }
+    piece.adjacency.offsets.assign(1, 0);
+    piece.adjacency.neighbors.clear();
+    for (auto& row : rows)
+    {
+      std::sort(row.begin(), row.end());
+      piece.adjacency.neighbors.insert(piece.adjacency.neighbors.end(), row.begin(), row.end());
+      piece.adjacency.offsets.push_back(std::int64_t(piece.adjacency.neighbors.size()));
+    }
+  }
+  const auto got = run_pieces(parts, frames, setup);
+  const auto whole = run_whole(s, frames, setup);
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    for (std::size_t v = 0; v < parts[p].global.size(); ++v)
+    {
+      const std::size_t g = std::size_t(parts[p].global[v]);
+      ASSERT_EQ(got[p][0].moved[v], whole[0].moved[g]) << p << " " << v;
+      ASSERT_TRUE(same_bits(got[p][0].disp[v], whole[0].disp[g])) << p << " " << v;
+    }
+  EXPECT_GT(whole[0].result.moved, 20u);
+}
