@@ -34,7 +34,7 @@ double link_term(const LinkMesh& m, const Displacements& u, index_t i, index_t j
 }
 
 // Max of `term` over the undirected edges, each visited once.
-template <class Term>
+template<class Term>
 double max_over_edges(const LinkMesh& m, Term term)
 {
   const Adjacency& adj = *m.adjacency;
@@ -47,7 +47,7 @@ double max_over_edges(const LinkMesh& m, Term term)
 
 // Max of `term` over the edges with an end in `vertices` (some visited twice: harmless
 // for a max).
-template <class Term>
+template<class Term>
 double max_over_edges(const LinkMesh& m, const std::vector<index_t>& vertices, Term term)
 {
   const Adjacency& adj = *m.adjacency;
@@ -167,8 +167,7 @@ double rigid_error(const LinkMesh& m, const Displacements& u)
 
 double rigid_error(const LinkMesh& m, const Displacements& u, const std::vector<index_t>& vertices)
 {
-  return max_over_edges(
-    m, vertices, [&](index_t i, index_t j) { return rigid_term(m, u, i, j); });
+  return max_over_edges(m, vertices, [&](index_t i, index_t j) { return rigid_term(m, u, i, j); });
 }
 
 double link_error(const LinkMesh& m, const Displacements& u)
@@ -178,8 +177,7 @@ double link_error(const LinkMesh& m, const Displacements& u)
 
 double link_error(const LinkMesh& m, const Displacements& u, const std::vector<index_t>& vertices)
 {
-  return max_over_edges(
-    m, vertices, [&](index_t i, index_t j) { return link_term(m, u, i, j); });
+  return max_over_edges(m, vertices, [&](index_t i, index_t j) { return link_term(m, u, i, j); });
 }
 
 ReferenceError reference_error(const LinkMesh& m, const Displacements& u, const Displacements& r)
@@ -236,7 +234,10 @@ BendingError bending_error(const std::vector<Eigen::Vector3d>& rest,
   {
     index_t a, b;
     std::size_t t;
-    bool operator<(const Side& o) const { return a != o.a ? a < o.a : b != o.b ? b < o.b : t < o.t; }
+    bool operator<(const Side& o) const
+    {
+      return a != o.a ? a < o.a : b != o.b ? b < o.b : t < o.t;
+    }
   };
   std::vector<Side> sides;
   for (std::size_t t = 0; 3 * t + 2 < triangles.size(); ++t)
@@ -270,8 +271,7 @@ BendingError bending_error(const std::vector<Eigen::Vector3d>& rest,
       const Eigen::Vector3d d2 = triangle_normal(rest, triangles, u, sides[i + 1].t, true);
       if (!r1.isZero(0.0) && !r2.isZero(0.0) && !d1.isZero(0.0) && !d2.isZero(0.0))
       {
-        const double bend =
-          finite_or_inf(std::abs(normal_angle(d1, d2) - normal_angle(r1, r2)));
+        const double bend = finite_or_inf(std::abs(normal_angle(d1, d2) - normal_angle(r1, r2)));
         e.max = std::max(e.max, bend);
         sum += bend * bend;
         ++e.edges;

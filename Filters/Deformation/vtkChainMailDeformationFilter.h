@@ -74,8 +74,8 @@
 
 #include <functional> // For std::function
 #include <memory>     // For std::unique_ptr
-#include <string> // For std::string
-#include <vector> // For std::vector
+#include <string>     // For std::string
+#include <vector>     // For std::vector
 
 class vtkIdTypeArray;
 class vtkPiecewiseFunction;

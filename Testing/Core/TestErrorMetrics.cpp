@@ -29,7 +29,10 @@ Adjacency edges(index_t n, std::initializer_list<std::pair<index_t, index_t>> li
   return b.build();
 }
 
-ChainMailParams params(double t, double k, double h) { return { t, k, h }; }
+ChainMailParams params(double t, double k, double h)
+{
+  return { t, k, h };
+}
 } // namespace
 
 TEST(ErrorMetrics, MeanEdgeLengthOfUnitGridIsOne)

@@ -78,10 +78,10 @@ double link_error(const LinkMesh& mesh, const Displacements& u);
 // `vertices` holds every vertex with u != 0 (the displaced region: its one-ring is
 // reached through the edges) the result equals the dense metric, at O(edges of the
 // region) cost.
-double rigid_error(const LinkMesh& mesh, const Displacements& u,
-  const std::vector<index_t>& vertices);
-double link_error(const LinkMesh& mesh, const Displacements& u,
-  const std::vector<index_t>& vertices);
+double rigid_error(
+  const LinkMesh& mesh, const Displacements& u, const std::vector<index_t>& vertices);
+double link_error(
+  const LinkMesh& mesh, const Displacements& u, const std::vector<index_t>& vertices);
 
 // E_ref: per-vertex distance d_v = |u_v - r_v| to a reference configuration r,
 //   max = max_v d_v / L,   rms = sqrt(sum_v d_v^2 / m) / L,
@@ -93,8 +93,8 @@ struct ReferenceError
   double max = 0.0;
   double rms = 0.0;
 };
-ReferenceError reference_error(const LinkMesh& mesh, const Displacements& u,
-  const Displacements& reference);
+ReferenceError reference_error(
+  const LinkMesh& mesh, const Displacements& u, const Displacements& reference);
 // Over `vertices` (no duplicates) only; equal to the dense value when it holds every
 // vertex displaced in u or r.
 ReferenceError reference_error(const LinkMesh& mesh, const Displacements& u,
@@ -140,8 +140,8 @@ class TemporalError
 {
 public:
   explicit TemporalError(index_t num_vertices);
-  void add_frame(const Eigen::Vector3d& drag, const std::vector<index_t>& vertices,
-    const Displacements& values);
+  void add_frame(
+    const Eigen::Vector3d& drag, const std::vector<index_t>& vertices, const Displacements& values);
   double value() const { return worst_; }
 
 private:
@@ -155,7 +155,7 @@ private:
 };
 
 // Drives `deformer` through the drag with grasp `grasp` and returns E_temporal.
-double temporal_error(ChainMailDeformer& deformer, index_t grasp,
-  const std::vector<Eigen::Vector3d>& drags);
+double temporal_error(
+  ChainMailDeformer& deformer, index_t grasp, const std::vector<Eigen::Vector3d>& drags);
 
 } // namespace geoshaping
