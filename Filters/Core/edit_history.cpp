@@ -1,5 +1,7 @@
 #include "geoshaping/edit_history.h"
 
+#include "geoshaping/bit_cast.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -73,20 +75,6 @@ bool unbase64(const std::string& in, std::vector<unsigned char>& out)
   return true;
 }
 
-std::uint64_t double_bits(double x)
-{
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  return bits;
-}
-
-double bits_double(std::uint64_t bits)
-{
-  double x;
-  std::memcpy(&x, &bits, sizeof x);
-  return x;
-}
-
 std::string hex(double x)
 {
   char buffer[40];
@@ -134,7 +122,7 @@ std::string encode_edit(const Edit& e)
   {
     put_bytes(payload, std::uint32_t(e.vertices[i]), 4);
     for (int k = 0; k < 3; ++k)
-      put_bytes(payload, double_bits(e.displacements[i][k]), 8);
+      put_bytes(payload, bit_cast<std::uint64_t>(e.displacements[i][k]), 8);
   }
   out << base64(payload);
   return out.str();
@@ -185,7 +173,7 @@ bool decode_edit(const std::string& record, index_t n, Edit& e, std::string& err
     }
     e.vertices[i] = v;
     for (int k = 0; k < 3; ++k)
-      e.displacements[i][k] = bits_double(get_bytes(p + 4 + 8 * k, 8));
+      e.displacements[i][k] = bit_cast<double>(get_bytes(p + 4 + 8 * k, 8));
     if (!e.displacements[i].allFinite())
     {
       error = "edit has a non-finite displacement";

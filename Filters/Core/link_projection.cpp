@@ -321,16 +321,7 @@ void LinkProjector::run_dykstra(const ProjectionOptions& options, ProjectionRepo
   while (report.iterations < options.max_iterations)
   {
     const double update = sweep();
-    ++report.iterations;
-    const double violation = max_violation();
-    report.converged = violation <= tol && update <= tol;
-    if (violation < best_violation_ || report.converged)
-    {
-      best_violation_ = violation;
-      best_update_ = update;
-      keep_best();
-    }
-    if (report.converged || (options.stop && options.stop()))
+    if (finish_iteration(report, max_violation(), update, tol, options))
       break;
   }
 }
@@ -461,15 +452,7 @@ void LinkProjector::run_admm(const ProjectionOptions& options, ProjectionReport&
     }
     grow.clear();
     violation = std::max(violation, pending_violation(tol, &grow));
-    ++report.iterations;
-    report.converged = violation <= tol && update <= tol;
-    if (violation < best_violation_ || report.converged)
-    {
-      best_violation_ = violation;
-      best_update_ = update;
-      keep_best();
-    }
-    if (report.converged || (options.stop && options.stop()))
+    if (finish_iteration(report, violation, update, tol, options))
       break;
     // Ring vertices pushed against links that are not in yet: add their links (the
     // region grows where the projection pushes) and refactorise; every 10 iterations
@@ -536,6 +519,20 @@ ProjectionReport LinkProjector::project(index_t grasp, const std::vector<index_t
   report.region = region_.size();
   report.links = links_.size();
   return report;
+}
+
+bool LinkProjector::finish_iteration(ProjectionReport& report, double violation, double update,
+  double tol, const ProjectionOptions& options)
+{
+  ++report.iterations;
+  report.converged = violation <= tol && update <= tol;
+  if (violation < best_violation_ || report.converged)
+  {
+    best_violation_ = violation;
+    best_update_ = update;
+    keep_best();
+  }
+  return report.converged || (options.stop && options.stop());
 }
 
 ProjectionReport refine_links(LinkProjector& projector, const ChainMailDeformer& deformer,

@@ -1,5 +1,7 @@
 #include "geoshaping/partitioned_chainmail.h"
 
+#include "geoshaping/bit_cast.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -10,16 +12,12 @@ namespace
 {
 std::int64_t bits(double x)
 {
-  std::int64_t b;
-  std::memcpy(&b, &x, sizeof b);
-  return b;
+  return bit_cast<std::int64_t>(x);
 }
 
 double from_bits(std::int64_t b)
 {
-  double x;
-  std::memcpy(&x, &b, sizeof x);
-  return x;
+  return bit_cast<double>(b);
 }
 } // namespace
 

@@ -192,6 +192,11 @@ private:
   double max_violation() const;
   double pending_violation(double tol, std::vector<index_t>* grow);
   void keep_best();
+  // Ends an iteration of either solver: counts it, decides convergence (violation and
+  // update both <= tol), keeps the iterate of least violation; true when the run is over
+  // (converged, or options.stop says so).
+  bool finish_iteration(ProjectionReport& report, double violation, double update, double tol,
+    const ProjectionOptions& options);
   void run_dykstra(const ProjectionOptions& options, ProjectionReport& report);
   void run_admm(const ProjectionOptions& options, ProjectionReport& report);
   bool factorise(double rho);
