@@ -77,17 +77,7 @@ int vtkChainMailDeformationFilter::RequestData(
     return 0;
   }
   output->ShallowCopy(input);
-  this->NumberOfDisplacedPoints = 0;
-  this->NumberOfExaminedCandidates = 0;
-  this->LastDeformationMilliseconds = 0.0;
-  this->LastGraspPointId = -1;
-  this->LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
-  this->NumberOfRefinementSweeps = 0;
-  this->NumberOfRefinedPoints = 0;
-  this->LastRefinementMilliseconds = 0.0;
-  this->NumberOfRelaxationSweeps = 0;
-  this->NumberOfRelaxedPoints = 0;
-  this->LastRelaxationMilliseconds = 0.0;
+  this->Statistics = FrameStatistics();
   vtkInternals& in = *this->Internals;
   in.Refining = false;
   in.Relaxing = false;

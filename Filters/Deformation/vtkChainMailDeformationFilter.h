@@ -252,27 +252,27 @@ public:
   /// malleability the deformation used there (NaN without a grasp; a NaN or missing
   /// value reads as the deformer took it: NaN counts as rigid, 0). A haptic client reads
   /// the last one for the grasp's coupling stiffness, also against a remote server.
-  vtkGetMacro(NumberOfDisplacedPoints, vtkIdType);
-  vtkGetMacro(NumberOfExaminedCandidates, vtkIdType);
-  vtkGetMacro(LastDeformationMilliseconds, double);
-  vtkGetMacro(LastGraspPointId, vtkIdType);
-  vtkGetMacro(LastGraspMalleability, double);
+  vtkIdType GetNumberOfDisplacedPoints() { return this->Statistics.NumberOfDisplacedPoints; }
+  vtkIdType GetNumberOfExaminedCandidates() { return this->Statistics.NumberOfExaminedCandidates; }
+  double GetLastDeformationMilliseconds() { return this->Statistics.LastDeformationMilliseconds; }
+  vtkIdType GetLastGraspPointId() { return this->Statistics.LastGraspPointId; }
+  double GetLastGraspMalleability() { return this->Statistics.LastGraspMalleability; }
   ///@}
 
   ///@{
   /// Figures of the last refinement pass: sweeps run, vertices it moved off the
   /// ChainMail result, and its time in milliseconds (all 0 without refinement).
-  vtkGetMacro(NumberOfRefinementSweeps, int);
-  vtkGetMacro(NumberOfRefinedPoints, vtkIdType);
-  vtkGetMacro(LastRefinementMilliseconds, double);
+  int GetNumberOfRefinementSweeps() { return this->Statistics.NumberOfRefinementSweeps; }
+  vtkIdType GetNumberOfRefinedPoints() { return this->Statistics.NumberOfRefinedPoints; }
+  double GetLastRefinementMilliseconds() { return this->Statistics.LastRefinementMilliseconds; }
   ///@}
 
   ///@{
   /// Figures of the last relaxation pass: sweeps run, vertices it moved, and its time in
   /// milliseconds (all 0 without relaxation).
-  vtkGetMacro(NumberOfRelaxationSweeps, int);
-  vtkGetMacro(NumberOfRelaxedPoints, vtkIdType);
-  vtkGetMacro(LastRelaxationMilliseconds, double);
+  int GetNumberOfRelaxationSweeps() { return this->Statistics.NumberOfRelaxationSweeps; }
+  vtkIdType GetNumberOfRelaxedPoints() { return this->Statistics.NumberOfRelaxedPoints; }
+  double GetLastRelaxationMilliseconds() { return this->Statistics.LastRelaxationMilliseconds; }
   ///@}
 
   ///@{
@@ -332,17 +332,23 @@ protected:
   double RefinementTolerance = 1e-6;
   int RelaxationIterations = 0;
 
-  vtkIdType NumberOfDisplacedPoints = 0;
-  vtkIdType NumberOfExaminedCandidates = 0;
-  double LastDeformationMilliseconds = 0.0;
-  vtkIdType LastGraspPointId = -1;
-  double LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
-  int NumberOfRefinementSweeps = 0;
-  vtkIdType NumberOfRefinedPoints = 0;
-  double LastRefinementMilliseconds = 0.0;
-  int NumberOfRelaxationSweeps = 0;
-  vtkIdType NumberOfRelaxedPoints = 0;
-  double LastRelaxationMilliseconds = 0.0;
+  // What the last update did (the information properties above), in one place: every
+  // RequestData starts from FrameStatistics{} and each stage fills its part.
+  struct FrameStatistics
+  {
+    vtkIdType NumberOfDisplacedPoints = 0;
+    vtkIdType NumberOfExaminedCandidates = 0;
+    double LastDeformationMilliseconds = 0.0;
+    vtkIdType LastGraspPointId = -1;
+    double LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
+    int NumberOfRefinementSweeps = 0;
+    vtkIdType NumberOfRefinedPoints = 0;
+    double LastRefinementMilliseconds = 0.0;
+    int NumberOfRelaxationSweeps = 0;
+    vtkIdType NumberOfRelaxedPoints = 0;
+    double LastRelaxationMilliseconds = 0.0;
+  };
+  FrameStatistics Statistics;
   int NumberOfRebuilds = 0;
 
 private:

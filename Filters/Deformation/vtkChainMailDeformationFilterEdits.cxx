@@ -47,10 +47,10 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
   {
     this->KeepAbortedPass("Refinement", report.iterations, this->RefinementIterations);
   }
-  this->LastRefinementMilliseconds =
+  this->Statistics.LastRefinementMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  this->NumberOfRefinementSweeps = report.iterations;
-  this->NumberOfRefinedPoints = vtkIdType(in.Projector->changed().size());
+  this->Statistics.NumberOfRefinementSweeps = report.iterations;
+  this->Statistics.NumberOfRefinedPoints = vtkIdType(in.Projector->changed().size());
   in.Refining = true;
 }
 
@@ -82,10 +82,10 @@ void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
   {
     this->KeepAbortedPass("Relaxation", report.iterations, this->RelaxationIterations);
   }
-  this->LastRelaxationMilliseconds =
+  this->Statistics.LastRelaxationMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  this->NumberOfRelaxationSweeps = report.iterations;
-  this->NumberOfRelaxedPoints = vtkIdType(in.Relaxer->changed().size());
+  this->Statistics.NumberOfRelaxationSweeps = report.iterations;
+  this->Statistics.NumberOfRelaxedPoints = vtkIdType(in.Relaxer->changed().size());
   in.Relaxing = true;
 }
 
@@ -130,7 +130,7 @@ int vtkChainMailDeformationFilter::GetNumberOfRedoableEdits()
 void vtkChainMailDeformationFilter::CommitEdit()
 {
   vtkInternals& in = *this->Internals;
-  if (!in.GeometryValid || in.EditsDirty || this->LastGraspPointId < 0)
+  if (!in.GeometryValid || in.EditsDirty || this->Statistics.LastGraspPointId < 0)
   {
     vtkWarningMacro("CommitEdit: nothing to commit (no deformation in the last update).");
     return;
@@ -154,8 +154,8 @@ void vtkChainMailDeformationFilter::CommitEdit()
   in.Relaxing = false;
   in.Projector.reset();
   // Released: the next update shows the committed shape, not the grasp applied again.
-  this->LastGraspPointId = -1;
-  this->LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
+  this->Statistics.LastGraspPointId = -1;
+  this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
   this->GraspPointId = -1;
   std::fill(this->Displacement, this->Displacement + 3, 0.0);
   this->Modified();

@@ -268,7 +268,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     const auto start = std::chrono::steady_clock::now();
     const geoshaping::FrameResult r = in.Partition->deform(this->GraspPointId,
       Eigen::Vector3d(this->Displacement[0], this->Displacement[1], this->Displacement[2]), ex);
-    this->LastDeformationMilliseconds =
+    this->Statistics.LastDeformationMilliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (!r.ok)
     {
@@ -281,14 +281,14 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       moved += v[0];
       examined += v[1];
     }
-    this->NumberOfDisplacedPoints = vtkIdType(moved);
-    this->NumberOfExaminedCandidates = vtkIdType(examined);
-    this->LastGraspPointId = r.ok ? this->GraspPointId : -1;
+    this->Statistics.NumberOfDisplacedPoints = vtkIdType(moved);
+    this->Statistics.NumberOfExaminedCandidates = vtkIdType(examined);
+    this->Statistics.LastGraspPointId = r.ok ? this->GraspPointId : -1;
     if (r.ok && n > 0 && !this->OutputFits())
     {
       in.Deformer.reset();
-      this->NumberOfDisplacedPoints = 0;
-      this->LastGraspPointId = -1;
+      this->Statistics.NumberOfDisplacedPoints = 0;
+      this->Statistics.LastGraspPointId = -1;
     }
   }
   if (n > 0)

@@ -356,16 +356,16 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       const auto start = std::chrono::steady_clock::now();
       const geoshaping::FrameResult r = in.Deformer.deform(geoshaping::index_t(grasp),
         Eigen::Vector3d(this->Displacement[0], this->Displacement[1], this->Displacement[2]));
-      this->LastDeformationMilliseconds =
+      this->Statistics.LastDeformationMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       if (!r.ok)
       {
         vtkErrorMacro("No deformation: " << r.message << "; output is the undeformed input.");
       }
-      this->NumberOfDisplacedPoints = vtkIdType(r.moved);
-      this->NumberOfExaminedCandidates = vtkIdType(r.examined);
-      this->LastGraspPointId = r.ok ? grasp : -1;
-      this->LastGraspMalleability =
+      this->Statistics.NumberOfDisplacedPoints = vtkIdType(r.moved);
+      this->Statistics.NumberOfExaminedCandidates = vtkIdType(r.examined);
+      this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
+      this->Statistics.LastGraspMalleability =
         r.ok ? double(in.Deformer.malleability(grasp)) : std::numeric_limits<double>::quiet_NaN();
       in.FrameRecipe = Recipe(this, grasp);
       if (r.ok && this->RefinementIterations > 0)
@@ -384,9 +384,9 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
         in.Deformer.reset();
         in.Refining = false;
         in.Relaxing = false;
-        this->NumberOfDisplacedPoints = 0;
-        this->LastGraspPointId = -1;
-        this->LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
+        this->Statistics.NumberOfDisplacedPoints = 0;
+        this->Statistics.LastGraspPointId = -1;
+        this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
       }
     }
   }
