@@ -28,7 +28,7 @@ std::vector<Variant> variants()
   const std::pair<Refinement, int> refinements[] = { { Refinement::none, 0 },
     { Refinement::dykstra, 1 }, { Refinement::dykstra, 4 }, { Refinement::dykstra, 16 },
     { Refinement::admm, 4 }, { Refinement::admm, 16 }, { Refinement::admm, 64 } };
-  const int relaxations[] = { 0 }; // RelaxationIterations (relax15): add values once merged
+  const int relaxations[] = { 0 }; // RelaxationIterations: not measured in the report yet
   std::vector<Variant> list;
   for (QueueKind q : queues)
     for (ValidRegionFrame f : frames)

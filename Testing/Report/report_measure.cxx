@@ -82,8 +82,8 @@ const std::vector<index_t>& SceneBench::run(const Variant& v, const Eigen::Vecto
   deformer_.set_valid_region_frame(v.frame);
   deformer_.deform(scene_.grasp, pull);
   last_ = ProjectionReport();
-  // The relaxation pass (RelaxationIterations, branch relax15) goes here, after ChainMail
-  // and before the refinement, once its core API is merged: v.relaxation is always 0 now.
+  // The relaxation pass (RelaxationIterations, geoshaping/relaxation.h) belongs after the
+  // refinement, as in the filter; not measured yet: v.relaxation is always 0.
   if (v.refinement == Refinement::none)
     return deformer_.moved();
   ProjectionOptions o;

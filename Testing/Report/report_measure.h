@@ -25,7 +25,7 @@ struct Variant
   ValidRegionFrame frame = ValidRegionFrame::axes;
   Refinement refinement = Refinement::none;
   int iterations = 0; // refinement iterations (sweeps for Dykstra)
-  int relaxation = 0; // RelaxationIterations (branch relax15): not measured yet, always 0
+  int relaxation = 0; // RelaxationIterations: not measured yet, always 0
 };
 // "none", "Dykstra 4", "ADMM 16", ...
 std::string refinement_name(const Variant& v);

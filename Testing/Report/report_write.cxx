@@ -224,7 +224,7 @@ void write_results(const Options& o, const Results& r)
      << "## The front\n\nEvery variant: queue (FIFO, Priority, FIFO Priority, Max Violation) x "
         "valid-region frame (Axes, Link) x refinement (none; Dykstra 1, 4, 16 sweeps; ADMM "
         "at most 4, 16, 64 iterations, tolerance 1e-6 L) x relaxation (0 only: "
-        "RelaxationIterations is not on this branch yet). Error = `E_link`, the worst link "
+        "the relaxation is not measured here yet). Error = `E_link`, the worst link "
         "violation in the variant's own frame: it is what refinement and ChainMail promise "
         "(0 = every link in its valid region), and unlike `E_ref` it needs no reference "
         "shared across frames. The Pareto front (no variant both faster and closer) is "
