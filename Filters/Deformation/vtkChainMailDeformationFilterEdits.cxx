@@ -152,7 +152,7 @@ void vtkChainMailDeformationFilter::CommitEdit()
   in.EditRecords.push_back(in.LastEdit);
   in.Refining = false;
   in.Relaxing = false;
-  in.Projector.reset();
+  in.Invalidate(vtkInternals::Stale::Links);
   // Released: the next update shows the committed shape, not the grasp applied again.
   this->Statistics.LastGraspPointId = -1;
   this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();

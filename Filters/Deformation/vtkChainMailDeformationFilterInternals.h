@@ -74,6 +74,18 @@ struct vtkChainMailDeformationFilter::vtkInternals
   // transfer curves changed.
   void EnsureLinks();
 
+  // Cache invalidation, in one place. Links: the link data of the refinement and the
+  // relaxation (malleability, pins or the rest shape changed; rebuilt by EnsureLinks on
+  // next use). Geometry: everything derived from the input's points and cells, the
+  // links, the array sources, the locator, the passes' written vertices, the edit
+  // history (replayed from EditRecords) and the once-only warnings.
+  enum class Stale
+  {
+    Links,
+    Geometry
+  };
+  void Invalidate(Stale level);
+
   // Editing: the applied edits' records (the EditHistory property), the history that
   // applies them (with the undone tail kept for redo), and the last frame's recipe.
   std::vector<std::string> EditRecords;
@@ -200,6 +212,25 @@ inline geoshaping::TransferFunction Transfer(vtkChainMailDeformationFilter* self
   return tf;
 }
 } // namespace vtkChainMailDeformationFilterDetail
+
+inline void vtkChainMailDeformationFilter::vtkInternals::Invalidate(Stale level)
+{
+  this->Projector.reset();
+  if (level == Stale::Links)
+    return;
+  this->GeometryValid = false;
+  this->MalleabilitySource = nullptr;
+  this->PinSource = nullptr;
+  this->MalleabilityDefault = -1.0;
+  this->Locator = nullptr;
+  this->Refined.clear();
+  this->Relaxed.clear();
+  this->Refining = false;
+  this->Relaxing = false;
+  this->History.clear();
+  this->EditsDirty = true;
+  this->Warned.clear();
+}
 
 inline void vtkChainMailDeformationFilter::vtkInternals::EnsureLinks()
 {

@@ -61,23 +61,11 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   if (!in.GeometryValid || in.GeometryPoints != inPoints || in.GeometrySize != n ||
       in.GeometryTime != geometryTime || in.GeometryPrecision != this->OutputPointsPrecision)
   {
-    in.GeometryValid = false;
+    in.Invalidate(vtkInternals::Stale::Geometry);
     in.GeometryPoints = inPoints;
     in.GeometrySize = n;
     in.GeometryTime = geometryTime;
     in.GeometryPrecision = this->OutputPointsPrecision;
-    in.MalleabilitySource = nullptr;
-    in.PinSource = nullptr;
-    in.MalleabilityDefault = -1.0;
-    in.Locator = nullptr;
-    in.Projector.reset();
-    in.Refined.clear();
-    in.Relaxed.clear();
-    in.Refining = false;
-    in.Relaxing = false;
-    in.History.clear();
-    in.EditsDirty = true;
-    in.Warned.clear();
 
     std::vector<double> xyz;
     vtkIdType firstBad;
@@ -245,7 +233,7 @@ bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
     }
     in.MalleabilitySource = malleability;
     in.MalleabilityDefault = this->DefaultMalleability;
-    in.Projector.reset();
+    in.Invalidate(vtkInternals::Stale::Links);
   }
   if (pins != in.PinSource || (pins && pins->GetMTime() != in.PinTime))
   {
@@ -262,7 +250,7 @@ bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
       in.Deformer.set_pinned(nullptr);
     }
     in.PinSource = pins;
-    in.Projector.reset();
+    in.Invalidate(vtkInternals::Stale::Links);
   }
   return true;
 }
@@ -287,7 +275,7 @@ std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& st
   IdList touched = in.History.take_touched();
   if (!touched.empty())
   {
-    in.Projector.reset(); // its links were built from the old rest shape
+    in.Invalidate(vtkInternals::Stale::Links); // built from the old rest shape
   }
 
   return touched;
