@@ -79,8 +79,7 @@ int vtkChainMailDeformationFilter::RequestData(
   output->ShallowCopy(input);
   this->Statistics = FrameStatistics();
   vtkInternals& in = *this->Internals;
-  in.Refining = false;
-  in.Relaxing = false;
+  in.Passes.begin_frame();
 
   if (this->RequestDataParallel(input, output, inputVector))
   {
@@ -141,6 +140,6 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";
   os << indent << "RefinementTolerance: " << this->RefinementTolerance << "\n";
   os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
-  os << indent << "NumberOfEdits: " << this->Internals->EditRecords.size() << "\n";
+  os << indent << "NumberOfEdits: " << this->Internals->Edits.records().size() << "\n";
   os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";
 }

@@ -285,8 +285,10 @@ public:
   ///@}
 
   ///@{
-  /// Commands. CommitEdit: the last update's shape becomes the rest shape (an edit is
-  /// appended, the redo tail dropped) and the grasp is released. UndoEdit / RedoEdit:
+  /// Commands (geoshaping::EditSession). CommitEdit: the last update's shape becomes the
+  /// rest shape (an edit is appended, the redo tail dropped); GraspPointId and
+  /// Displacement are left as the client set them: release the grasp (GraspPointId -1),
+  /// or the next update applies it again to the new rest shape. UndoEdit / RedoEdit:
   /// drop the last edit / re-append the next undone one. ResetEdits: drop every edit
   /// (all stay redoable). Each takes effect at the next update.
   void CommitEdit();

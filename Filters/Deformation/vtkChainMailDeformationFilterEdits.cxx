@@ -1,4 +1,6 @@
-// Refinement and editing (commit, undo, redo) of vtkChainMailDeformationFilter.
+// The passes after the frame (refinement, relaxation) and the edit commands of
+// vtkChainMailDeformationFilter: progress, abort and statistics around the core's
+// geoshaping::FramePasses and geoshaping::EditSession.
 #include "vtkChainMailDeformationFilterInternals.h"
 
 #include <algorithm>
@@ -30,7 +32,6 @@ void vtkChainMailDeformationFilter::KeepAbortedPass(const char* pass, int done, 
 void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
 {
   vtkInternals& in = *this->Internals;
-  in.EnsureLinks();
   const auto start = std::chrono::steady_clock::now();
   int sweeps = 0;
   bool aborted = false;
@@ -42,7 +43,7 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
   options.solver = geoshaping::ProjectionSolver::dykstra;
   options.stop = this->SweepMonitor(this->RefinementIterations, sweeps, aborted);
   const geoshaping::ProjectionReport report =
-    geoshaping::refine_links(*in.Projector, in.Deformer, geoshaping::index_t(grasp), options);
+    in.Passes.refine(in.Deformer, geoshaping::index_t(grasp), options);
   if (aborted)
   {
     this->KeepAbortedPass("Refinement", report.iterations, this->RefinementIterations);
@@ -50,26 +51,12 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
   this->Statistics.LastRefinementMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->Statistics.NumberOfRefinementSweeps = report.iterations;
-  this->Statistics.NumberOfRefinedPoints = vtkIdType(in.Projector->changed().size());
-  in.Refining = true;
+  this->Statistics.NumberOfRefinedPoints = vtkIdType(in.Passes.refined_count());
 }
 
 void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
 {
   vtkInternals& in = *this->Internals;
-  in.EnsureLinks();
-  // The start: the frame's result after the refinement (if any), given sparsely.
-  IdList vertices = in.Deformer.moved();
-  if (in.Refining)
-  {
-    for (geoshaping::index_t v : in.Projector->changed())
-      if (!in.Deformer.moved_this_frame(v))
-        vertices.push_back(v);
-  }
-  geoshaping::Displacements values;
-  values.reserve(vertices.size());
-  for (geoshaping::index_t v : vertices)
-    values.push_back(in.FinalDisplacement(v));
   const auto start = std::chrono::steady_clock::now();
   int sweeps = 0;
   bool aborted = false;
@@ -77,7 +64,7 @@ void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
   options.iterations = this->RelaxationIterations;
   options.stop = this->SweepMonitor(this->RelaxationIterations, sweeps, aborted);
   const geoshaping::RelaxationReport report =
-    in.Relaxer->relax(geoshaping::index_t(grasp), vertices, values, options);
+    in.Passes.relax(in.Deformer, geoshaping::index_t(grasp), options);
   if (aborted)
   {
     this->KeepAbortedPass("Relaxation", report.iterations, this->RelaxationIterations);
@@ -85,109 +72,78 @@ void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
   this->Statistics.LastRelaxationMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->Statistics.NumberOfRelaxationSweeps = report.iterations;
-  this->Statistics.NumberOfRelaxedPoints = vtkIdType(in.Relaxer->changed().size());
-  in.Relaxing = true;
+  this->Statistics.NumberOfRelaxedPoints = vtkIdType(in.Passes.relaxed_count());
 }
 
 void vtkChainMailDeformationFilter::AddEdit(const char* record)
 {
-  this->Internals->EditRecords.emplace_back(record ? record : "");
-  this->Internals->EditsDirty = true;
+  this->Internals->Edits.add(record ? record : "");
   this->Modified();
 }
 
 void vtkChainMailDeformationFilter::RemoveAllEdits()
 {
-  this->Internals->EditRecords.clear();
-  this->Internals->EditsDirty = true;
+  this->Internals->Edits.clear();
   this->Modified();
 }
 
 int vtkChainMailDeformationFilter::GetNumberOfEdits()
 {
-  return static_cast<int>(this->Internals->EditRecords.size());
+  return static_cast<int>(this->Internals->Edits.records().size());
 }
 
 const char* vtkChainMailDeformationFilter::GetEdit(int i)
 {
-  const auto& records = this->Internals->EditRecords;
+  const auto& records = this->Internals->Edits.records();
   return i >= 0 && std::size_t(i) < records.size() ? records[std::size_t(i)].c_str() : nullptr;
 }
 
 const char* vtkChainMailDeformationFilter::GetLastEdit()
 {
-  return this->Internals->LastEdit.c_str();
+  return this->Internals->Edits.last_edit().c_str();
 }
 
 int vtkChainMailDeformationFilter::GetNumberOfRedoableEdits()
 {
-  const vtkInternals& in = *this->Internals;
-  return in.History.size() > in.EditRecords.size()
-           ? static_cast<int>(in.History.size() - in.EditRecords.size())
-           : 0;
+  return this->Internals->Edits.redoable();
 }
 
 void vtkChainMailDeformationFilter::CommitEdit()
 {
   vtkInternals& in = *this->Internals;
-  if (!in.GeometryValid || in.EditsDirty || this->Statistics.LastGraspPointId < 0)
+  std::vector<geoshaping::index_t> vertices;
+  geoshaping::Displacements displacements;
+  in.Passes.final_shape(in.Deformer, vertices, displacements);
+  if (!in.GeometryValid || this->Statistics.LastGraspPointId < 0 ||
+      !in.Edits.commit(in.Deformer, in.FrameRecipe, vertices, displacements))
   {
     vtkWarningMacro("CommitEdit: nothing to commit (no deformation in the last update).");
     return;
   }
-  IdList vertices = in.Deformer.moved();
-  IdList beyond; // what the passes moved outside the frame's region, once each
-  for (const IdList* pass : IdLists{ &in.Refined, &in.Relaxed })
-    for (geoshaping::index_t v : *pass)
-      if (!in.Deformer.moved_this_frame(v))
-        beyond.push_back(v);
-  std::sort(beyond.begin(), beyond.end());
-  vertices.insert(vertices.end(), beyond.begin(), std::unique(beyond.begin(), beyond.end()));
-  std::vector<Eigen::Vector3d> displacements;
-  displacements.reserve(vertices.size());
-  for (geoshaping::index_t v : vertices)
-    displacements.push_back(in.FinalDisplacement(v));
-  in.History.commit(in.Deformer, in.FrameRecipe, vertices, displacements);
-  in.LastEdit = in.History.record(in.History.applied() - 1);
-  in.EditRecords.push_back(in.LastEdit);
-  in.Refining = false;
-  in.Relaxing = false;
+  in.Passes.begin_frame();
   in.Invalidate(vtkInternals::Stale::Links);
-  // Released: the next update shows the committed shape, not the grasp applied again.
+  // The frame is now the rest shape. GraspPointId and Displacement are the client's: it
+  // releases them (ParaView's proxy does, docs/editing.md), else the next update applies
+  // the grasp again, to the new rest shape.
   this->Statistics.LastGraspPointId = -1;
   this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
-  this->GraspPointId = -1;
-  std::fill(this->Displacement, this->Displacement + 3, 0.0);
   this->Modified();
 }
 
 void vtkChainMailDeformationFilter::UndoEdit()
 {
-  vtkInternals& in = *this->Internals;
-  if (in.EditRecords.empty())
-    return;
-  in.EditRecords.pop_back();
-  in.EditsDirty = true;
-  this->Modified();
+  if (this->Internals->Edits.undo())
+    this->Modified();
 }
 
 void vtkChainMailDeformationFilter::RedoEdit()
 {
-  vtkInternals& in = *this->Internals;
-  if (in.History.size() <= in.EditRecords.size())
-    return;
-  in.LastEdit = in.History.record(in.EditRecords.size());
-  in.EditRecords.push_back(in.LastEdit);
-  in.EditsDirty = true;
-  this->Modified();
+  if (this->Internals->Edits.redo())
+    this->Modified();
 }
 
 void vtkChainMailDeformationFilter::ResetEdits()
 {
-  vtkInternals& in = *this->Internals;
-  if (in.EditRecords.empty())
-    return;
-  in.EditRecords.clear();
-  in.EditsDirty = true;
-  this->Modified();
+  if (this->Internals->Edits.reset())
+    this->Modified();
 }

@@ -25,10 +25,9 @@
 #include "vtkStaticPointLocator.h"
 
 #include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/edit_history.h"
-#include "geoshaping/link_projection.h"
+#include "geoshaping/edit_session.h"
+#include "geoshaping/frame_passes.h"
 #include "geoshaping/partitioned_chainmail.h"
-#include "geoshaping/relaxation.h"
 #include "geoshaping/sparse_normals.h"
 
 #include <chrono>
@@ -55,30 +54,17 @@ struct vtkChainMailDeformationFilter::vtkInternals
   vtkDataArray* PinSource = nullptr;
   vtkMTimeType PinTime = 0;
 
-  // The refinement pass: per-vertex link data (rebuilt when the geometry, malleability,
-  // pins or curves change), the projector's scratch, and the vertices the last pass
-  // moved off the ChainMail result (restored to rest next update, with the moved ones).
-  geoshaping::LinkMesh Links;
-  std::unique_ptr<geoshaping::LinkProjector> Projector;
-  geoshaping::TransferFunction LinksTransfer;
-  std::vector<geoshaping::index_t> Refined;
-  bool Refining = false; // the last update wrote the projector's result
-  // The relaxation pass (after the refinement, on the same link data) and the vertices it
-  // moved (its region grows beyond the frame's, so they are written and restored as the
-  // refined ones are).
-  std::unique_ptr<geoshaping::Relaxer> Relaxer;
-  std::vector<geoshaping::index_t> Relaxed; // as Refined, for the relaxer's changes
-  bool Relaxing = false;                    // the last update wrote the relaxer's result
-
-  // The link data and both passes' scratch, rebuilt when Projector was reset or the
-  // transfer curves changed.
-  void EnsureLinks();
+  // The passes after the frame (refinement, relaxation; geoshaping/frame_passes.h), and
+  // the vertices they wrote beyond the frame's moved ones last update (restored to rest
+  // next update, with the moved ones).
+  geoshaping::FramePasses Passes;
+  std::vector<geoshaping::index_t> PassesWritten;
 
   // Cache invalidation, in one place. Links: the link data of the refinement and the
-  // relaxation (malleability, pins or the rest shape changed; rebuilt by EnsureLinks on
-  // next use). Geometry: everything derived from the input's points and cells, the
-  // links, the array sources, the locator, the passes' written vertices, the edit
-  // history (replayed from EditRecords) and the once-only warnings.
+  // relaxation (malleability, pins or the rest shape changed; rebuilt on the next pass).
+  // Geometry: everything derived from the input's points and cells, the links, the
+  // array sources, the locator, the passes' written vertices, the applied edits (the
+  // records are replayed) and the once-only warnings.
   enum class Stale
   {
     Links,
@@ -86,20 +72,15 @@ struct vtkChainMailDeformationFilter::vtkInternals
   };
   void Invalidate(Stale level);
 
-  // Editing: the applied edits' records (the EditHistory property), the history that
-  // applies them (with the undone tail kept for redo), and the last frame's recipe.
-  std::vector<std::string> EditRecords;
-  bool EditsDirty = false;
-  geoshaping::EditHistory History;
+  // Editing (geoshaping/edit_session.h): the EditHistory list, its commands and the
+  // history that applies it; the last frame's recipe.
+  geoshaping::EditSession Edits;
   geoshaping::EditRecipe FrameRecipe;
-  std::string LastEdit;
 
-  // Displacement of v from its rest position in the last frame (refined or not).
+  // Displacement of v from its rest position in the last frame (after the passes).
   const Eigen::Vector3d& FinalDisplacement(geoshaping::index_t v) const
   {
-    return this->Relaxing   ? this->Relaxer->displacement(v)
-           : this->Refining ? this->Projector->displacement(v)
-                            : this->Deformer.displacement(v);
+    return this->Passes.displacement(this->Deformer, v);
   }
 
   // Whether input point v moved by u lands where the output's point type holds it:
@@ -150,19 +131,6 @@ inline void SetCurvePoints(geoshaping::Curve& curve, vtkPiecewiseFunction* f)
 
 using IdList = std::vector<geoshaping::index_t>;
 using IdLists = std::initializer_list<const IdList*>;
-
-inline bool SameCurve(const geoshaping::Curve& a, const geoshaping::Curve& b)
-{
-  return a.at_rigid == b.at_rigid && a.at_soft == b.at_soft && a.shape == b.shape &&
-         a.threshold == b.threshold && a.points == b.points;
-}
-
-inline bool SameTransfer(
-  const geoshaping::TransferFunction& a, const geoshaping::TransferFunction& b)
-{
-  return SameCurve(a.stretch, b.stretch) && SameCurve(a.compression, b.compression) &&
-         SameCurve(a.shear, b.shear) && a.exact_rigid_at_zero == b.exact_rigid_at_zero;
-}
 
 inline geoshaping::EditRecipe Recipe(vtkChainMailDeformationFilter* self, vtkIdType grasp)
 {
@@ -215,7 +183,7 @@ inline geoshaping::TransferFunction Transfer(vtkChainMailDeformationFilter* self
 
 inline void vtkChainMailDeformationFilter::vtkInternals::Invalidate(Stale level)
 {
-  this->Projector.reset();
+  this->Passes.invalidate();
   if (level == Stale::Links)
     return;
   this->GeometryValid = false;
@@ -223,27 +191,10 @@ inline void vtkChainMailDeformationFilter::vtkInternals::Invalidate(Stale level)
   this->PinSource = nullptr;
   this->MalleabilityDefault = -1.0;
   this->Locator = nullptr;
-  this->Refined.clear();
-  this->Relaxed.clear();
-  this->Refining = false;
-  this->Relaxing = false;
-  this->History.clear();
-  this->EditsDirty = true;
+  this->Passes.begin_frame();
+  this->PassesWritten.clear();
+  this->Edits.forget_applied();
   this->Warned.clear();
-}
-
-inline void vtkChainMailDeformationFilter::vtkInternals::EnsureLinks()
-{
-  const geoshaping::TransferFunction& tf = this->Deformer.transfer_function();
-  if (!this->Projector ||
-      !vtkChainMailDeformationFilterDetail::SameTransfer(tf, this->LinksTransfer))
-  {
-    this->Links = geoshaping::link_mesh(this->Deformer);
-    this->LinksTransfer = tf;
-    this->Projector = std::make_unique<geoshaping::LinkProjector>(this->Links);
-    this->Relaxer = std::make_unique<geoshaping::Relaxer>(this->Links);
-  }
-  this->Links.frame = this->Deformer.valid_region_frame(); // the relaxation keeps these regions
 }
 
 #endif

@@ -163,7 +163,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     refused = "RefinementIterations > 0 (refinement)";
   else if (this->RelaxationIterations > 0)
     refused = "RelaxationIterations > 0 (relaxation)";
-  else if (!in.EditRecords.empty())
+  else if (!in.Edits.records().empty())
     refused = "edits (EditHistory, CommitEdit)";
   else if (this->GraspMode == GRASP_NEAREST_TO_POSITION)
     refused = "GraspMode nearest to a position (use a GraspPointId: a global point id)";

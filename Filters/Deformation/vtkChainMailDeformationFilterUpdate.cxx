@@ -259,20 +259,19 @@ std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& st
 {
   vtkInternals& in = *this->Internals;
   // 3. Committed edits: replayed when the list or the geometry changed.
-  if (in.EditsDirty)
+  if (in.Edits.pending())
   {
     stale = in.Deformer.moved();
     std::string error;
     Eigen::Vector3d x;
     const auto fits = [&in, &x](geoshaping::index_t v)
     { return in.Fits(v, in.Deformer.committed_offset(v), x); };
-    if (!in.History.synchronize(in.Deformer, in.EditRecords, error, fits))
+    if (!in.Edits.synchronize(in.Deformer, error, fits))
     {
       vtkErrorMacro("EditHistory: " << error << "; the edits before it are applied.");
     }
-    in.EditsDirty = false;
   }
-  IdList touched = in.History.take_touched();
+  IdList touched = in.Edits.take_touched();
   if (!touched.empty())
   {
     in.Invalidate(vtkInternals::Stale::Links); // built from the old rest shape
@@ -370,8 +369,7 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
         const IdList& shown = in.Deformer.previously_moved();
         stale.insert(stale.end(), shown.begin(), shown.end());
         in.Deformer.reset();
-        in.Refining = false;
-        in.Relaxing = false;
+        in.Passes.begin_frame();
         this->Statistics.NumberOfDisplacedPoints = 0;
         this->Statistics.LastGraspPointId = -1;
         this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
@@ -383,10 +381,7 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
 bool vtkChainMailDeformationFilter::OutputFits()
 {
   vtkInternals& in = *this->Internals;
-  const IdList none;
-  for (const IdList* list :
-    IdLists{ &in.Deformer.moved(), in.Refining ? &in.Projector->changed() : &none,
-      in.Relaxing ? &in.Relaxer->changed() : &none })
+  for (const IdList* list : IdLists{ &in.Deformer.moved(), &in.Passes.beyond() })
     for (geoshaping::index_t v : *list)
     {
       Eigen::Vector3d x;
@@ -415,35 +410,23 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
   vtkGrowingBoundsPoints* outPoints = in.OutputPoints;
   // A vertex moved last time and again now is written once, by the second pass.
   const auto& deformer = in.Deformer;
-  const IdList previouslyRefined = std::move(in.Refined);
-  const IdList previouslyRelaxed = std::move(in.Relaxed);
+  const IdList previouslyWritten = std::move(in.PassesWritten);
   RewritePoints(
     inPoints->GetData(), outPoints->GetData(),
-    IdLists{
-      &deformer.previously_moved(), &previouslyRefined, &previouslyRelaxed, &stale, &touched },
+    IdLists{ &deformer.previously_moved(), &previouslyWritten, &stale, &touched },
     [&deformer](geoshaping::index_t v) { return deformer.moved_this_frame(v); },
     [&deformer](geoshaping::index_t v) { return deformer.committed_offset(v); });
-  in.Refined.clear();
-  if (in.Refining)
-  {
-    in.Refined = in.Projector->changed();
-  }
-  in.Relaxed.clear();
-  if (in.Relaxing)
-  {
-    in.Relaxed = in.Relaxer->changed(); // may reach beyond the frame's region
-  }
+  in.PassesWritten = in.Passes.beyond(); // the passes' region may reach beyond the frame's
   RewritePoints(
-    inPoints->GetData(), outPoints->GetData(),
-    IdLists{ &deformer.moved(), &in.Refined, &in.Relaxed },
+    inPoints->GetData(), outPoints->GetData(), IdLists{ &deformer.moved(), &in.PassesWritten },
     [](geoshaping::index_t) { return false; },
     [&in](geoshaping::index_t v) -> Eigen::Vector3d
     { return in.Deformer.committed_offset(v) + in.FinalDisplacement(v); });
   // What changed since the last update: everything either pass wrote.
   vtkIdTypeArray* changed = in.Changed;
   changed->SetNumberOfTuples(0);
-  for (const IdList* written : IdLists{ &deformer.previously_moved(), &previouslyRefined,
-         &previouslyRelaxed, &stale, &touched, &deformer.moved(), &in.Refined, &in.Relaxed })
+  for (const IdList* written : IdLists{ &deformer.previously_moved(), &previouslyWritten, &stale,
+         &touched, &deformer.moved(), &in.PassesWritten })
     for (geoshaping::index_t v : *written)
       changed->InsertNextValue(v);
   if (in.OutputNormals)
@@ -469,7 +452,7 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
     {
       sponsor->SetValue(v, in.Deformer.sponsor(v));
     }
-    for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.Refined, &in.Relaxed })
+    for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.PassesWritten })
       for (geoshaping::index_t v : *write)
       {
         displacement->SetTuple(v, in.FinalDisplacement(v).data());

@@ -592,7 +592,39 @@ std::vector<double> Drag(
   f->Update();
   return Coordinates(f->GetOutput());
 }
+
+// What a client does after CommitEdit (ParaView's proxy does it, docs/editing.md).
+void Release(vtkChainMailDeformationFilter* f)
+{
+  f->SetGraspPointId(-1);
+  f->SetDisplacement(0.0, 0.0, 0.0);
+}
 } // namespace
+
+TEST(ChainMailDeformationFilter, CommitLeavesGraspAndDisplacementToTheClient)
+{
+  // The output is a function of the properties: after a commit an unchanged grasp is
+  // applied again, to the new rest shape, exactly as a fresh filter given the record.
+  auto grid = TriangleGrid(21, 21, 1.0, [](int i, int) { return i < 6 ? 0.0 : 0.8; });
+  vtkNew<vtkChainMailDeformationFilter> f;
+  Deform(f, grid);
+  const auto once = Drag(f, 10 * 21 + 10, 0.0, 0.0, 2.0);
+  f->CommitEdit();
+  EXPECT_EQ(f->GetGraspPointId(), 10 * 21 + 10) << "the server leaves the client's properties";
+  EXPECT_EQ(f->GetDisplacement()[2], 2.0);
+  ASSERT_EQ(f->GetNumberOfEdits(), 1);
+  f->Update();
+  vtkNew<vtkChainMailDeformationFilter> fresh;
+  fresh->AddEdit(f->GetEdit(0));
+  fresh->SetGraspPointId(10 * 21 + 10);
+  fresh->SetDisplacement(0.0, 0.0, 2.0);
+  const auto twice = Coordinates(f->GetOutput());
+  EXPECT_EQ(twice, Coordinates(Deform(fresh, grid)));
+  EXPECT_NE(twice, once) << "the grasp moved the committed shape again";
+  Release(f);
+  f->Update();
+  EXPECT_EQ(Coordinates(f->GetOutput()), once) << "released: the committed shape";
+}
 
 TEST(ChainMailDeformationFilter, CommitUndoRedoAndResetAreBitExact)
 {
@@ -602,7 +634,7 @@ TEST(ChainMailDeformationFilter, CommitUndoRedoAndResetAreBitExact)
   const auto original = Coordinates(Deform(f, grid));
   const auto one = Drag(f, 12 * 25 + 12, 0.0, 0.0, 3.0);
   f->CommitEdit();
-  EXPECT_EQ(f->GetGraspPointId(), -1) << "commit releases the grasp";
+  Release(f);
   f->Update();
   EXPECT_EQ(Coordinates(f->GetOutput()), one) << "the committed shape is shown";
   EXPECT_EQ(f->GetNumberOfEdits(), 1);
@@ -610,6 +642,7 @@ TEST(ChainMailDeformationFilter, CommitUndoRedoAndResetAreBitExact)
   EXPECT_EQ(record, f->GetEdit(0));
   const auto two = Drag(f, 12 * 25 + 14, 1.0, 0.0, -2.0);
   f->CommitEdit();
+  Release(f);
   f->Update();
   EXPECT_EQ(Coordinates(f->GetOutput()), two);
 
@@ -644,6 +677,7 @@ TEST(ChainMailDeformationFilter, CommitKeepsTheRefinedShape)
   const auto refined = Drag(f, 10 * 21 + 10, 0.0, 2.0, 4.0);
   ASSERT_GT(f->GetNumberOfRefinedPoints(), 0);
   f->CommitEdit();
+  Release(f);
   f->Update();
   EXPECT_EQ(Coordinates(f->GetOutput()), refined);
   f->UndoEdit();

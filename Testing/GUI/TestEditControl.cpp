@@ -1,10 +1,12 @@
 // The client side of the edit history (ParaViewPlugin/ServerManager/edit_commands.h)
-// against a model of vtkChainMailDeformationFilter's commands (docs/editing.md), and the
+// against the filter's own command semantics (geoshaping::EditSession, docs/editing.md), and the
 // point dabs (ParaViewPlugin/Qt/EditControl.h).
 #include "EditControl.h"
 #include "edit_commands.h"
 
 #include "geoshaping/brush.h"
+#include "geoshaping/edit_session.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -15,17 +17,19 @@ namespace interactor = geoshaping::interactor;
 
 namespace
 {
-// The filter's command semantics (EditRecords, History with its redo tail, LastEdit)
-// and the client proxy's properties.
-class FakeFilter : public interactor::EditProxy
+// The server side is the filter's own command semantics, geoshaping::EditSession (what
+// vtkChainMailDeformationFilter delegates to), over a small grid; the client proxy's
+// properties are modelled.
+class SessionFilter : public interactor::EditProxy
 {
 public:
   // Server side.
-  std::vector<std::string> records; // EditRecords
-  std::vector<std::string> all;     // History (applied + redo tail)
-  std::string last;
-  bool deformed = false; // the last update had a grasp
-  int next = 0;
+  geoshaping::testing::Mesh mesh = geoshaping::testing::triangle_grid(8, 8, 1.0);
+  geoshaping::ChainMailDeformer deformer;
+  geoshaping::EditSession session;
+  std::vector<std::string> committed; // every record a commit made, in order
+  bool deformed = false;              // the last update had a grasp
+  int grasps = 0;
   // Client proxy.
   std::vector<std::string> client;
   long long grasp_point_id = 7;
@@ -35,7 +39,21 @@ public:
   int info_edits = -1, info_redoable = -1;
   std::string info_last;
 
-  void grasp() { deformed = true; }
+  SessionFilter()
+  {
+    deformer.set_mesh(mesh.xyz.data(), mesh.size(), mesh.adjacency);
+    deformer.set_uniform_malleability(0.7);
+  }
+  // An update with a grasp: each one a different pull.
+  void grasp()
+  {
+    ++grasps;
+    EXPECT_TRUE(deformer
+                  .deform(geoshaping::testing::grid_id(8, grasps % 8, 3),
+                    Eigen::Vector3d(0.0, 0.0, 0.5 * grasps))
+                  .ok);
+    deformed = true;
+  }
 
   // The server runs a command (what vtkSMProxy::InvokeCommand sends).
   void invoke(const char* command)
@@ -45,27 +63,26 @@ public:
     {
       if (!deformed)
         return; // "nothing to commit"
-      all.resize(records.size());
-      last = "GSE1 edit" + std::to_string(next++);
-      all.push_back(last);
-      records.push_back(last);
+      std::vector<Eigen::Vector3d> u;
+      for (geoshaping::index_t v : deformer.moved())
+        u.push_back(deformer.displacement(v));
+      const std::vector<geoshaping::index_t> moved = deformer.moved();
+      ASSERT_TRUE(session.commit(deformer, geoshaping::EditRecipe(), moved, u));
+      committed.push_back(session.last_edit());
       deformed = false;
     }
-    else if (c == "UndoEdit" && !records.empty())
-      records.pop_back();
-    else if (c == "RedoEdit" && all.size() > records.size())
-    {
-      last = all[records.size()];
-      records.push_back(last);
-    }
+    else if (c == "UndoEdit")
+      session.undo();
+    else if (c == "RedoEdit")
+      session.redo();
     else if (c == "ResetEdits")
-      records.clear();
+      session.reset();
   }
   void update_information() override
   {
-    info_edits = int(records.size());
-    info_redoable = int(all.size() - records.size());
-    info_last = last;
+    info_edits = int(session.records().size());
+    info_redoable = session.redoable();
+    info_last = session.last_edit();
   }
   std::string last_edit() override { return info_last; }
   int number_of_edits() override { return info_edits; }
@@ -79,19 +96,19 @@ public:
   }
   void push() override
   {
+    // RemoveAllEdits + AddEdit..., then the update that follows synchronizes.
     ++pushes;
-    // RemoveAllEdits + AddEdit...; synchronize keeps a redo tail the list is a prefix of.
-    records = client;
-    const bool prefix =
-      client.size() <= all.size() && std::equal(client.begin(), client.end(), all.begin());
-    if (!prefix)
-      all = client;
+    session.clear();
+    for (const std::string& r : client)
+      session.add(r);
+    std::string error;
+    EXPECT_TRUE(session.synchronize(deformer, error)) << error;
   }
 };
 
 // What vtkSMChainMailDeformationProxy does for any InvokeCommand: the server runs the
 // command, then the client follows.
-interactor::EditResult run(interactor::EditCommand command, FakeFilter& f)
+interactor::EditResult run(interactor::EditCommand command, SessionFilter& f)
 {
   f.invoke(interactor::command_property(command));
   return interactor::follow_edit(command, f);
@@ -118,7 +135,7 @@ TEST(EditControl, CommandProperties)
 
 TEST(EditControl, CommitAppendsLastEditAndReleases)
 {
-  FakeFilter f;
+  SessionFilter f;
   f.grasp();
   const interactor::EditResult r = run(interactor::EditCommand::commit, f);
   EXPECT_TRUE(r.changed);
@@ -126,8 +143,8 @@ TEST(EditControl, CommitAppendsLastEditAndReleases)
   EXPECT_EQ(r.redoable, 0);
   EXPECT_TRUE(r.message.empty()) << r.message;
   ASSERT_EQ(f.client.size(), 1u);
-  EXPECT_EQ(f.client[0], "GSE1 edit0");
-  EXPECT_EQ(f.records, f.client);
+  EXPECT_EQ(f.client[0], f.committed[0]);
+  EXPECT_EQ(f.session.records(), f.client);
   EXPECT_EQ(f.grasp_point_id, -1);
   EXPECT_EQ(f.displacement, 0.0);
   EXPECT_EQ(f.pushes, 1);
@@ -135,7 +152,7 @@ TEST(EditControl, CommitAppendsLastEditAndReleases)
 
 TEST(EditControl, CommitWithNothingToCommitDoesNotDuplicateTheLastRecord)
 {
-  FakeFilter f;
+  SessionFilter f;
   f.grasp();
   run(interactor::EditCommand::commit, f);
   // Press and release without a deformation: LastEdit is still the first edit.
@@ -148,7 +165,7 @@ TEST(EditControl, CommitWithNothingToCommitDoesNotDuplicateTheLastRecord)
 
 TEST(EditControl, UndoRedoResetKeepTheClientListInStep)
 {
-  FakeFilter f;
+  SessionFilter f;
   for (int i = 0; i < 3; ++i)
   {
     f.grasp();
@@ -186,17 +203,17 @@ TEST(EditControl, UndoRedoResetKeepTheClientListInStep)
 
 TEST(EditControl, UndoOnAnEmptyListSaysSo)
 {
-  FakeFilter f;
+  SessionFilter f;
   const interactor::EditResult r = run(interactor::EditCommand::undo, f);
   EXPECT_FALSE(r.changed);
   EXPECT_EQ(r.message, "nothing to undo");
   EXPECT_TRUE(f.client.empty());
-  EXPECT_TRUE(f.records.empty());
+  EXPECT_TRUE(f.session.records().empty());
 }
 
 TEST(EditControl, CommitAfterUndoDropsTheRedoTail)
 {
-  FakeFilter f;
+  SessionFilter f;
   f.grasp();
   run(interactor::EditCommand::commit, f);
   f.grasp();
@@ -206,14 +223,15 @@ TEST(EditControl, CommitAfterUndoDropsTheRedoTail)
   const interactor::EditResult r = run(interactor::EditCommand::commit, f);
   EXPECT_EQ(r.edits, 2u);
   EXPECT_EQ(r.redoable, 0);
-  EXPECT_EQ(f.client.back(), "GSE1 edit2");
+  ASSERT_EQ(f.committed.size(), 3u);
+  EXPECT_EQ(f.client, std::vector<std::string>({ f.committed[0], f.committed[2] }));
 }
 
 TEST(EditControl, EveryCommandSenderKeepsTheListInStep)
 {
   // The panel's Undo button used to change the server only; now every InvokeCommand is
   // followed, so after any mix of senders the client's list is the server's.
-  FakeFilter f;
+  SessionFilter f;
   for (int i = 0; i < 3; ++i)
   {
     f.grasp();
@@ -224,8 +242,9 @@ TEST(EditControl, EveryCommandSenderKeepsTheListInStep)
   const interactor::EditResult r = run(interactor::EditCommand::commit, f);
   EXPECT_TRUE(r.message.empty()) << r.message;
   EXPECT_EQ(f.client.size(), 3u);
-  EXPECT_EQ(f.records, f.client);
-  EXPECT_EQ(f.client.back(), "GSE1 edit3");
+  EXPECT_EQ(f.session.records(), f.client);
+  ASSERT_EQ(f.committed.size(), 4u);
+  EXPECT_EQ(f.client.back(), f.committed[3]);
 }
 
 TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)

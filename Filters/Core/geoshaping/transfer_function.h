@@ -46,6 +46,13 @@ struct Curve
   double operator()(double m) const;
 };
 
+// Equal definitions (so equal values at every m): what a cache built from a curve checks.
+inline bool operator==(const Curve& a, const Curve& b)
+{
+  return a.at_rigid == b.at_rigid && a.at_soft == b.at_soft && a.shape == b.shape &&
+         a.threshold == b.threshold && a.points == b.points;
+}
+
 // Defaults (DESIGN.md section 4): stretch 1 -> 2, compression 1 -> 0.5, shear 0 -> 0.5.
 // Malleability 0 yields exactly (1, 1, 0) unless `exact_rigid_at_zero` is false:
 // whatever the curves, m == 0 means rigid, the paper's black "frozen" paint.
@@ -67,5 +74,11 @@ public:
   // A short reason when a curve is unusable (non-finite values, unsorted points), else "".
   const char* validate() const;
 };
+
+inline bool operator==(const TransferFunction& a, const TransferFunction& b)
+{
+  return a.stretch == b.stretch && a.compression == b.compression && a.shear == b.shear &&
+         a.exact_rigid_at_zero == b.exact_rigid_at_zero;
+}
 
 } // namespace geoshaping
