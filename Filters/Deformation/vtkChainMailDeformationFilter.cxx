@@ -78,8 +78,8 @@ int vtkChainMailDeformationFilter::RequestData(
   }
   output->ShallowCopy(input);
   this->Statistics = FrameStatistics();
-  vtkInternals& in = *this->Internals;
-  in.Passes.begin_frame();
+  vtkInternals& state = *this->Internals;
+  state.Passes.begin_frame();
 
   if (this->RequestDataParallel(input, output, inputVector))
   {

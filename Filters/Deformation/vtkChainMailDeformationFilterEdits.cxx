@@ -31,7 +31,7 @@ void vtkChainMailDeformationFilter::KeepAbortedPass(const char* pass, int done, 
 
 void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
 {
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   const auto start = std::chrono::steady_clock::now();
   int sweeps = 0;
   bool aborted = false;
@@ -43,7 +43,7 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
   options.solver = geoshaping::ProjectionSolver::dykstra;
   options.stop = this->SweepMonitor(this->RefinementIterations, sweeps, aborted);
   const geoshaping::ProjectionReport report =
-    in.Passes.refine(in.Deformer, geoshaping::index_t(grasp), options);
+    state.Passes.refine(state.Deformer, geoshaping::index_t(grasp), options);
   if (aborted)
   {
     this->KeepAbortedPass("Refinement", report.iterations, this->RefinementIterations);
@@ -51,12 +51,12 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
   this->Statistics.LastRefinementMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->Statistics.NumberOfRefinementSweeps = report.iterations;
-  this->Statistics.NumberOfRefinedPoints = vtkIdType(in.Passes.refined_count());
+  this->Statistics.NumberOfRefinedPoints = vtkIdType(state.Passes.refined_count());
 }
 
 void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
 {
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   const auto start = std::chrono::steady_clock::now();
   int sweeps = 0;
   bool aborted = false;
@@ -64,7 +64,7 @@ void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
   options.iterations = this->RelaxationIterations;
   options.stop = this->SweepMonitor(this->RelaxationIterations, sweeps, aborted);
   const geoshaping::RelaxationReport report =
-    in.Passes.relax(in.Deformer, geoshaping::index_t(grasp), options);
+    state.Passes.relax(state.Deformer, geoshaping::index_t(grasp), options);
   if (aborted)
   {
     this->KeepAbortedPass("Relaxation", report.iterations, this->RelaxationIterations);
@@ -72,7 +72,7 @@ void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
   this->Statistics.LastRelaxationMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->Statistics.NumberOfRelaxationSweeps = report.iterations;
-  this->Statistics.NumberOfRelaxedPoints = vtkIdType(in.Passes.relaxed_count());
+  this->Statistics.NumberOfRelaxedPoints = vtkIdType(state.Passes.relaxed_count());
 }
 
 void vtkChainMailDeformationFilter::AddEdit(const char* record)
@@ -110,18 +110,18 @@ int vtkChainMailDeformationFilter::GetNumberOfRedoableEdits()
 
 void vtkChainMailDeformationFilter::CommitEdit()
 {
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   std::vector<geoshaping::index_t> vertices;
   geoshaping::Displacements displacements;
-  in.Passes.final_shape(in.Deformer, vertices, displacements);
-  if (!in.GeometryValid || this->Statistics.LastGraspPointId < 0 ||
-      !in.Edits.commit(in.Deformer, in.FrameRecipe, vertices, displacements))
+  state.Passes.final_shape(state.Deformer, vertices, displacements);
+  if (!state.GeometryValid || this->Statistics.LastGraspPointId < 0 ||
+      !state.Edits.commit(state.Deformer, state.FrameRecipe, vertices, displacements))
   {
     vtkWarningMacro("CommitEdit: nothing to commit (no deformation in the last update).");
     return;
   }
-  in.Passes.begin_frame();
-  in.Invalidate(vtkInternals::Stale::Links);
+  state.Passes.begin_frame();
+  state.Invalidate(vtkInternals::Stale::Links);
   // The frame is now the rest shape. GraspPointId and Displacement are the client's: it
   // releases them (ParaView's proxy does, docs/editing.md), else the next update applies
   // the grasp again, to the new rest shape.

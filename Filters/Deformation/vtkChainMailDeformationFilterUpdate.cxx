@@ -20,7 +20,7 @@ struct RewriteWorker
   void operator()(InArray* inArray, OutArray* outArray, IdLists lists, const Skip& skip,
     const Offset& offset) const
   {
-    const auto in = vtk::DataArrayTupleRange<3>(inArray);
+    const auto source = vtk::DataArrayTupleRange<3>(inArray);
     auto out = vtk::DataArrayTupleRange<3>(outArray);
     using Value = typename decltype(out)::ComponentType;
     for (const IdList* list : lists)
@@ -29,7 +29,7 @@ struct RewriteWorker
         if (skip(v))
           continue;
         const Eigen::Vector3d u = offset(v);
-        const auto from = in[v];
+        const auto from = source[v];
         auto to = out[v];
         for (int k = 0; k < 3; ++k)
           to[k] = static_cast<Value>(double(from[k]) + u[k]);
@@ -53,19 +53,19 @@ void RewritePoints(vtkDataArray* inArray, vtkDataArray* outArray, IdLists lists,
 
 bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
 {
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   vtkPoints* inPoints = input->GetPoints();
   const vtkIdType n = input->GetNumberOfPoints();
   // 1. Geometry and topology: rebuilt only when they change.
   const vtkMTimeType geometryTime = vtkGeoShapingAdapter::GeometryTime(input);
-  if (!in.GeometryValid || in.GeometryPoints != inPoints || in.GeometrySize != n ||
-      in.GeometryTime != geometryTime || in.GeometryPrecision != this->OutputPointsPrecision)
+  if (!state.GeometryValid || state.GeometryPoints != inPoints || state.GeometrySize != n ||
+      state.GeometryTime != geometryTime || state.GeometryPrecision != this->OutputPointsPrecision)
   {
-    in.Invalidate(vtkInternals::Stale::Geometry);
-    in.GeometryPoints = inPoints;
-    in.GeometrySize = n;
-    in.GeometryTime = geometryTime;
-    in.GeometryPrecision = this->OutputPointsPrecision;
+    state.Invalidate(vtkInternals::Stale::Geometry);
+    state.GeometryPoints = inPoints;
+    state.GeometrySize = n;
+    state.GeometryTime = geometryTime;
+    state.GeometryPrecision = this->OutputPointsPrecision;
 
     std::vector<double> xyz;
     vtkIdType firstBad;
@@ -90,10 +90,10 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
                                                   << " cells, none with an edge): only the "
                                                      "grasped vertex moves.");
     }
-    in.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
+    state.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
     // Point GlobalIds decide the propagation order and name the grasp (docs/mpi.md), so
     // one process gives the same result as several.
-    in.LocalOfGlobal.clear();
+    state.LocalOfGlobal.clear();
     vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
     if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
     {
@@ -101,47 +101,48 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
       for (vtkIdType i = 0; i < n; ++i)
       {
         gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
-        in.LocalOfGlobal.emplace(gid[std::size_t(i)], geoshaping::index_t(i));
+        state.LocalOfGlobal.emplace(gid[std::size_t(i)], geoshaping::index_t(i));
       }
-      in.Deformer.set_global_ids(gid.data());
+      state.Deformer.set_global_ids(gid.data());
     }
 
-    in.OutputPoints = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
+    state.OutputPoints = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
     const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT
                           : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION
                             ? VTK_DOUBLE
                             : inPoints->GetDataType();
-    in.OutputPoints->SetDataType(precision);
-    in.OutputPoints->DeepCopy(inPoints);
-    if (in.OutputPoints->GetDataType() != precision)
+    state.OutputPoints->SetDataType(precision);
+    state.OutputPoints->DeepCopy(inPoints);
+    if (state.OutputPoints->GetDataType() != precision)
     {
       auto converted = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
       converted->SetDataType(precision);
       converted->SetNumberOfPoints(n);
       for (vtkIdType i = 0; i < n; ++i)
         converted->SetPoint(i, xyz.data() + 3 * i);
-      in.OutputPoints = converted;
+      state.OutputPoints = converted;
     }
     std::vector<std::int64_t> faceOffsets;
     std::vector<geoshaping::index_t> faceVertices;
     vtkDataArray* normals = input->GetPointData()->GetNormals();
-    in.OutputNormals = nullptr;
-    in.Normals = geoshaping::SparseNormals();
+    state.OutputNormals = nullptr;
+    state.Normals = geoshaping::SparseNormals();
     if (normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n &&
         vtkGeoShapingAdapter::BuildFaces(input, faceOffsets, faceVertices))
     {
-      in.Normals.set_mesh(std::move(faceOffsets), std::move(faceVertices), geoshaping::index_t(n));
+      state.Normals.set_mesh(
+        std::move(faceOffsets), std::move(faceVertices), geoshaping::index_t(n));
       const double* rest = xyz.data();
-      in.Normals.set_positions(
+      state.Normals.set_positions(
         [rest](geoshaping::index_t v) { return Eigen::Vector3d(rest + 3 * v); });
-      in.OutputNormals = vtk::TakeSmartPointer(normals->NewInstance());
-      in.OutputNormals->DeepCopy(normals);
+      state.OutputNormals = vtk::TakeSmartPointer(normals->NewInstance());
+      state.OutputNormals->DeepCopy(normals);
     }
-    in.GeometryValid = true;
+    state.GeometryValid = true;
     ++this->NumberOfRebuilds;
   }
 
-  return in.GeometryValid;
+  return state.GeometryValid;
 }
 
 void vtkChainMailDeformationFilter::WarnOnce(const std::string& message)
@@ -155,7 +156,7 @@ void vtkChainMailDeformationFilter::WarnOnce(const std::string& message)
 bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
   vtkInformationVector** inputVector, vtkIdType n)
 {
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   // 2. Malleability and pins: copied only when their array changes. An array is read
   // only as numeric point data with one value per point.
   int association = -1;
@@ -209,72 +210,72 @@ bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
                    " components; component 0 is the pin mask.");
   }
 
-  if (malleability != in.MalleabilitySource ||
-      (malleability && malleability->GetMTime() != in.MalleabilityTime) ||
-      (!malleability && in.MalleabilityDefault != this->DefaultMalleability))
+  if (malleability != state.MalleabilitySource ||
+      (malleability && malleability->GetMTime() != state.MalleabilityTime) ||
+      (!malleability && state.MalleabilityDefault != this->DefaultMalleability))
   {
     if (malleability)
     {
       std::vector<double> m(static_cast<std::size_t>(n));
       for (vtkIdType i = 0; i < n; ++i)
         m[i] = malleability->GetComponent(i, 0);
-      const std::size_t bad = in.Deformer.set_malleability(m.data());
+      const std::size_t bad = state.Deformer.set_malleability(m.data());
       if (bad > 0)
       {
         vtkWarningMacro(<< bad
                         << " malleability values are outside [0, 1] or NaN; they were "
                            "clamped (NaN counts as 0, rigid).");
       }
-      in.MalleabilityTime = malleability->GetMTime();
+      state.MalleabilityTime = malleability->GetMTime();
     }
     else
     {
-      in.Deformer.set_uniform_malleability(this->DefaultMalleability);
+      state.Deformer.set_uniform_malleability(this->DefaultMalleability);
     }
-    in.MalleabilitySource = malleability;
-    in.MalleabilityDefault = this->DefaultMalleability;
-    in.Invalidate(vtkInternals::Stale::Links);
+    state.MalleabilitySource = malleability;
+    state.MalleabilityDefault = this->DefaultMalleability;
+    state.Invalidate(vtkInternals::Stale::Links);
   }
-  if (pins != in.PinSource || (pins && pins->GetMTime() != in.PinTime))
+  if (pins != state.PinSource || (pins && pins->GetMTime() != state.PinTime))
   {
     if (pins)
     {
       std::vector<std::uint8_t> mask(static_cast<std::size_t>(n));
       for (vtkIdType i = 0; i < n; ++i)
         mask[i] = pins->GetComponent(i, 0) != 0.0;
-      in.Deformer.set_pinned(mask.data());
-      in.PinTime = pins->GetMTime();
+      state.Deformer.set_pinned(mask.data());
+      state.PinTime = pins->GetMTime();
     }
     else
     {
-      in.Deformer.set_pinned(nullptr);
+      state.Deformer.set_pinned(nullptr);
     }
-    in.PinSource = pins;
-    in.Invalidate(vtkInternals::Stale::Links);
+    state.PinSource = pins;
+    state.Invalidate(vtkInternals::Stale::Links);
   }
   return true;
 }
 
 std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& stale)
 {
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   // 3. Committed edits: replayed when the list or the geometry changed.
-  if (in.Edits.pending())
+  if (state.Edits.pending())
   {
-    stale = in.Deformer.moved();
+    stale = state.Deformer.moved();
     std::string error;
     Eigen::Vector3d x;
-    const auto fits = [&in, &x](geoshaping::index_t v)
-    { return in.Fits(v, in.Deformer.committed_offset(v), x); };
-    if (!in.Edits.synchronize(in.Deformer, error, fits))
+    const auto fits = [&state, &x](geoshaping::index_t v)
+    { return state.Fits(v, state.Deformer.committed_offset(v), x); };
+    if (!state.Edits.synchronize(state.Deformer, error, fits))
     {
       vtkErrorMacro("EditHistory: " << error << "; the edits before it are applied.");
     }
   }
-  IdList touched = in.Edits.take_touched();
+  IdList touched = state.Edits.take_touched();
   if (!touched.empty())
   {
-    in.Invalidate(vtkInternals::Stale::Links); // built from the old rest shape
+    state.Invalidate(vtkInternals::Stale::Links); // built from the old rest shape
   }
 
   return touched;
@@ -282,21 +283,21 @@ std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& st
 
 void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>& stale)
 {
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   const vtkIdType n = input->GetNumberOfPoints();
   // 4. Transfer function, queue and frame, cheap to set every time.
   const geoshaping::TransferFunction tf =
-    Transfer(this, in.StretchCurve, in.CompressionCurve, in.ShearCurve);
+    Transfer(this, state.StretchCurve, state.CompressionCurve, state.ShearCurve);
   if (*tf.validate())
   {
     vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");
-    in.Deformer.reset();
+    state.Deformer.reset();
   }
   else
   {
-    in.Deformer.set_transfer_function(tf);
-    in.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
-    in.Deformer.set_valid_region_frame(
+    state.Deformer.set_transfer_function(tf);
+    state.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
+    state.Deformer.set_valid_region_frame(
       static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame));
 
     // 5. Grasp and deform.
@@ -311,37 +312,37 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
                                                         << this->GraspPosition[2]
                                                         << ") is not finite; output is the "
                                                            "undeformed input.");
-        in.Deformer.reset();
+        state.Deformer.reset();
         return;
       }
-      if (!in.Locator)
+      if (!state.Locator)
       {
-        in.Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
-        in.Locator->SetDataSet(input);
-        in.Locator->BuildLocator();
+        state.Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+        state.Locator->SetDataSet(input);
+        state.Locator->BuildLocator();
       }
-      grasp = in.Locator->FindClosestPoint(this->GraspPosition);
+      grasp = state.Locator->FindClosestPoint(this->GraspPosition);
     }
-    if (grasp >= 0 && this->GraspMode == GRASP_POINT_ID && !in.LocalOfGlobal.empty())
+    if (grasp >= 0 && this->GraspMode == GRASP_POINT_ID && !state.LocalOfGlobal.empty())
     {
-      const auto it = in.LocalOfGlobal.find(grasp); // GraspPointId is a global id
-      grasp = it == in.LocalOfGlobal.end() ? n : vtkIdType(it->second);
+      const auto it = state.LocalOfGlobal.find(grasp); // GraspPointId is a global id
+      grasp = it == state.LocalOfGlobal.end() ? n : vtkIdType(it->second);
     }
     if (grasp < 0 && this->GraspMode == GRASP_POINT_ID)
     {
-      in.Deformer.reset(); // no grasp: the rest shape
+      state.Deformer.reset(); // no grasp: the rest shape
     }
     else if (grasp >= n)
     {
       // Checked here: the core's 32-bit ids would wrap a 64-bit id into range.
       vtkErrorMacro("No deformation: grasp vertex " << grasp << " is outside [0, " << n
                                                     << "); output is the undeformed input.");
-      in.Deformer.reset();
+      state.Deformer.reset();
     }
     else
     {
       const auto start = std::chrono::steady_clock::now();
-      const geoshaping::FrameResult r = in.Deformer.deform(geoshaping::index_t(grasp),
+      const geoshaping::FrameResult r = state.Deformer.deform(geoshaping::index_t(grasp),
         Eigen::Vector3d(this->Displacement[0], this->Displacement[1], this->Displacement[2]));
       this->Statistics.LastDeformationMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -352,9 +353,9 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       this->Statistics.NumberOfDisplacedPoints = vtkIdType(r.moved);
       this->Statistics.NumberOfExaminedCandidates = vtkIdType(r.examined);
       this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
-      this->Statistics.LastGraspMalleability =
-        r.ok ? double(in.Deformer.malleability(grasp)) : std::numeric_limits<double>::quiet_NaN();
-      in.FrameRecipe = Recipe(this, grasp);
+      this->Statistics.LastGraspMalleability = r.ok ? double(state.Deformer.malleability(grasp))
+                                                    : std::numeric_limits<double>::quiet_NaN();
+      state.FrameRecipe = Recipe(this, grasp);
       if (r.ok && this->RefinementIterations > 0)
       {
         this->Refine(grasp);
@@ -366,10 +367,10 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       if (r.ok && !this->OutputFits())
       {
         // The last frame's vertices are still shown: restore them with the stale ones.
-        const IdList& shown = in.Deformer.previously_moved();
+        const IdList& shown = state.Deformer.previously_moved();
         stale.insert(stale.end(), shown.begin(), shown.end());
-        in.Deformer.reset();
-        in.Passes.begin_frame();
+        state.Deformer.reset();
+        state.Passes.begin_frame();
         this->Statistics.NumberOfDisplacedPoints = 0;
         this->Statistics.LastGraspPointId = -1;
         this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
@@ -380,18 +381,18 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
 
 bool vtkChainMailDeformationFilter::OutputFits()
 {
-  vtkInternals& in = *this->Internals;
-  for (const IdList* list : IdLists{ &in.Deformer.moved(), &in.Passes.beyond() })
+  vtkInternals& state = *this->Internals;
+  for (const IdList* list : IdLists{ &state.Deformer.moved(), &state.Passes.beyond() })
     for (geoshaping::index_t v : *list)
     {
       Eigen::Vector3d x;
-      if (!in.Fits(v, in.Deformer.committed_offset(v) + in.FinalDisplacement(v), x))
+      if (!state.Fits(v, state.Deformer.committed_offset(v) + state.FinalDisplacement(v), x))
       {
         vtkErrorMacro("No deformation: Displacement ("
                       << this->Displacement[0] << ", " << this->Displacement[1] << ", "
                       << this->Displacement[2] << ") moves point " << v << " to (" << x[0] << ", "
                       << x[1] << ", " << x[2] << "), beyond what the output's "
-                      << in.OutputPoints->GetData()->GetDataTypeAsString()
+                      << state.OutputPoints->GetData()->GetDataTypeAsString()
                       << " points hold; output is the undeformed input.");
         return false;
       }
@@ -402,37 +403,37 @@ bool vtkChainMailDeformationFilter::OutputFits()
 void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet* output,
   const std::vector<int>& stale, const std::vector<int>& touched)
 {
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   vtkPoints* inPoints = input->GetPoints();
   const vtkIdType n = input->GetNumberOfPoints();
   // 6. Rewrite only the vertices that moved now or last time (the moved and the refined)
   // and those an edit changed, as input + offset so unedited vertices stay the input's.
-  vtkGrowingBoundsPoints* outPoints = in.OutputPoints;
+  vtkGrowingBoundsPoints* outPoints = state.OutputPoints;
   // A vertex moved last time and again now is written once, by the second pass.
-  const auto& deformer = in.Deformer;
-  const IdList previouslyWritten = std::move(in.PassesWritten);
+  const auto& deformer = state.Deformer;
+  const IdList previouslyWritten = std::move(state.PassesWritten);
   RewritePoints(
     inPoints->GetData(), outPoints->GetData(),
     IdLists{ &deformer.previously_moved(), &previouslyWritten, &stale, &touched },
     [&deformer](geoshaping::index_t v) { return deformer.moved_this_frame(v); },
     [&deformer](geoshaping::index_t v) { return deformer.committed_offset(v); });
-  in.PassesWritten = in.Passes.beyond(); // the passes' region may reach beyond the frame's
+  state.PassesWritten = state.Passes.beyond(); // the passes' region may reach beyond the frame's
   RewritePoints(
-    inPoints->GetData(), outPoints->GetData(), IdLists{ &deformer.moved(), &in.PassesWritten },
+    inPoints->GetData(), outPoints->GetData(), IdLists{ &deformer.moved(), &state.PassesWritten },
     [](geoshaping::index_t) { return false; },
-    [&in](geoshaping::index_t v) -> Eigen::Vector3d
-    { return in.Deformer.committed_offset(v) + in.FinalDisplacement(v); });
+    [&state](geoshaping::index_t v) -> Eigen::Vector3d
+    { return state.Deformer.committed_offset(v) + state.FinalDisplacement(v); });
   // What changed since the last update: everything either pass wrote.
-  vtkIdTypeArray* changed = in.Changed;
+  vtkIdTypeArray* changed = state.Changed;
   changed->SetNumberOfTuples(0);
   for (const IdList* written : IdLists{ &deformer.previously_moved(), &previouslyWritten, &stale,
-         &touched, &deformer.moved(), &in.PassesWritten })
+         &touched, &deformer.moved(), &state.PassesWritten })
     for (geoshaping::index_t v : *written)
       changed->InsertNextValue(v);
-  if (in.OutputNormals)
+  if (state.OutputNormals)
   {
     this->UpdateNormals(changed);
-    output->GetPointData()->SetNormals(in.OutputNormals);
+    output->GetPointData()->SetNormals(state.OutputNormals);
   }
   outPoints->PointsChanged(changed->GetPointer(0), changed->GetNumberOfTuples());
   output->SetPoints(outPoints);
@@ -448,14 +449,14 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
     sponsor->SetName("ChainMailSponsor");
     sponsor->SetNumberOfTuples(n);
     sponsor->Fill(-1);
-    for (geoshaping::index_t v : in.Deformer.moved())
+    for (geoshaping::index_t v : state.Deformer.moved())
     {
-      sponsor->SetValue(v, in.Deformer.sponsor(v));
+      sponsor->SetValue(v, state.Deformer.sponsor(v));
     }
-    for (const IdList* write : IdLists{ &in.Deformer.moved(), &in.PassesWritten })
+    for (const IdList* write : IdLists{ &state.Deformer.moved(), &state.PassesWritten })
       for (geoshaping::index_t v : *write)
       {
-        displacement->SetTuple(v, in.FinalDisplacement(v).data());
+        displacement->SetTuple(v, state.FinalDisplacement(v).data());
       }
     output->GetPointData()->AddArray(displacement);
     output->GetPointData()->AddArray(sponsor);
@@ -465,20 +466,20 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
 void vtkChainMailDeformationFilter::UpdateNormals(vtkIdTypeArray* changed)
 {
   // Recompute the normals the changed points affect; they join the changed list.
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   const std::vector<geoshaping::index_t> moved(
     changed->GetPointer(0), changed->GetPointer(0) + changed->GetNumberOfTuples());
-  in.Affected.clear();
-  const auto update = [&in, &moved](const auto& position)
+  state.Affected.clear();
+  const auto update = [&state, &moved](const auto& position)
   {
-    in.Normals.moved(moved.data(), moved.size(), position, in.Affected);
-    for (geoshaping::index_t v : in.Affected)
+    state.Normals.moved(moved.data(), moved.size(), position, state.Affected);
+    for (geoshaping::index_t v : state.Affected)
     {
-      const Eigen::Vector3d normal = in.Normals.normal(v);
-      in.OutputNormals->SetTuple(v, normal.data());
+      const Eigen::Vector3d normal = state.Normals.normal(v);
+      state.OutputNormals->SetTuple(v, normal.data());
     }
   };
-  vtkDataArray* points = in.OutputPoints->GetData();
+  vtkDataArray* points = state.OutputPoints->GetData();
   if (auto* floats = vtkFloatArray::FastDownCast(points))
   {
     const float* x = floats->GetPointer(0);
@@ -500,8 +501,8 @@ void vtkChainMailDeformationFilter::UpdateNormals(vtkIdTypeArray* changed)
         return x;
       });
   }
-  changed->SetNumberOfTuples(vtkIdType(in.Affected.size()));
-  std::copy(in.Affected.begin(), in.Affected.end(), changed->GetPointer(0));
+  changed->SetNumberOfTuples(vtkIdType(state.Affected.size()));
+  std::copy(state.Affected.begin(), state.Affected.end(), changed->GetPointer(0));
   vtkSparseArrayChanges::ValuesChanged(
-    in.OutputNormals, changed->GetPointer(0), changed->GetNumberOfTuples());
+    state.OutputNormals, changed->GetPointer(0), changed->GetNumberOfTuples());
 }
