@@ -105,7 +105,7 @@ struct vtkChainMailDeformationFilter::vtkInternals
   // with the changed points.
   geoshaping::SparseNormals Normals;
   vtkSmartPointer<vtkDataArray> OutputNormals;
-  std::vector<geoshaping::index_t> Affected;
+  std::vector<geoshaping::index_t> Affected, NormalsMoved; // scratch of UpdateNormals
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   // The distributed path (more than one process): drives Deformer over this piece.
   std::unique_ptr<geoshaping::PartitionedChainMail> Partition;

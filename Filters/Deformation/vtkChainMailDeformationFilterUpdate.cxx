@@ -382,7 +382,28 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
 bool vtkChainMailDeformationFilter::OutputFits()
 {
   vtkInternals& state = *this->Internals;
-  for (const IdList* list : IdLists{ &state.Deformer.moved(), &state.Passes.beyond() })
+  const IdLists written{ &state.Deformer.moved(), &state.Passes.beyond() };
+  // Enough, and O(moved) without a virtual point read: every input coordinate is within
+  // the input's bounds, so |x0 + u| <= max |bound| + max |u| <= what the type holds.
+  double reach = 0.0;
+  bool finite = true;
+  for (const IdList* list : written)
+    for (geoshaping::index_t v : *list)
+    {
+      const double u =
+        (state.Deformer.committed_offset(v) + state.FinalDisplacement(v)).cwiseAbs().maxCoeff();
+      finite = finite && std::isfinite(u);
+      reach = std::max(reach, u);
+    }
+  const double* bounds = state.GeometryPoints->GetBounds(); // cached while the points stay
+  double extent = 0.0;
+  for (int i = 0; i < 6; ++i)
+    extent = std::max(extent, std::abs(bounds[i]));
+  if (finite && extent + reach <= state.OutputPoints->GetData()->GetDataTypeMax())
+  {
+    return true;
+  }
+  for (const IdList* list : written)
     for (geoshaping::index_t v : *list)
     {
       Eigen::Vector3d x;
@@ -467,12 +488,24 @@ void vtkChainMailDeformationFilter::UpdateNormals(vtkIdTypeArray* changed)
 {
   // Recompute the normals the changed points affect; they join the changed list.
   vtkInternals& state = *this->Internals;
-  const std::vector<geoshaping::index_t> moved(
-    changed->GetPointer(0), changed->GetPointer(0) + changed->GetNumberOfTuples());
+  std::vector<geoshaping::index_t>& moved = state.NormalsMoved;
+  moved.assign(changed->GetPointer(0), changed->GetPointer(0) + changed->GetNumberOfTuples());
   state.Affected.clear();
-  const auto update = [&state, &moved](const auto& position)
+  vtkFloatArray* floatNormals = vtkFloatArray::FastDownCast(state.OutputNormals);
+  const auto update = [&state, &moved, floatNormals](const auto& position)
   {
     state.Normals.moved(moved.data(), moved.size(), position, state.Affected);
+    if (floatNormals) // the usual type: written in place, no virtual call per vertex
+    {
+      float* out = floatNormals->GetPointer(0);
+      for (geoshaping::index_t v : state.Affected)
+      {
+        const Eigen::Vector3d normal = state.Normals.normal(v);
+        for (int k = 0; k < 3; ++k)
+          out[3 * std::size_t(v) + k] = static_cast<float>(normal[k]);
+      }
+      return;
+    }
     for (geoshaping::index_t v : state.Affected)
     {
       const Eigen::Vector3d normal = state.Normals.normal(v);
