@@ -35,6 +35,21 @@ double PullForThousand()
   return pull;
 }
 
+// The timed updates: the first builds the adjacency and rest state, untimed; then two
+// pulls alternate so every update really recomputes and rewrites.
+void Drag(vtkChainMailDeformationFilter* filter, double pull, benchmark::State& state)
+{
+  filter->SetDisplacement(0, 0, pull);
+  filter->Update();
+  int k = 0;
+  for (auto _ : state)
+  {
+    filter->SetDisplacement(0, 0, (++k & 1) ? pull : 0.999 * pull);
+    filter->Update();
+    benchmark::DoNotOptimize(filter->GetOutput()->GetPoints());
+  }
+}
+
 void BM_FilterUpdate(benchmark::State& state)
 {
   const vtkIdType n = state.range(0);
@@ -43,16 +58,7 @@ void BM_FilterUpdate(benchmark::State& state)
   filter->SetInputData(grid);
   filter->SetGraspPointId((n / 2) * n + n / 2);
   const double pull = PullForThousand();
-  filter->SetDisplacement(0, 0, pull);
-  filter->Update(); // builds adjacency once
-  int k = 0;
-  for (auto _ : state)
-  {
-    // Alternate two pulls so every update really recomputes and rewrites.
-    filter->SetDisplacement(0, 0, (++k & 1) ? pull : 0.999 * pull);
-    filter->Update();
-    benchmark::DoNotOptimize(filter->GetOutput()->GetPoints());
-  }
+  Drag(filter, pull, state);
   state.counters["mesh_vertices"] = double(n * n);
   state.counters["displaced"] = double(filter->GetNumberOfDisplacedPoints());
   state.counters["rebuilds"] = double(filter->GetNumberOfRebuilds());
@@ -71,20 +77,11 @@ void BM_FilterUpdateWithPasses(benchmark::State& state)
   filter->SetRefinementIterations(int(state.range(0)));
   filter->SetRelaxationIterations(int(state.range(1)));
   const double pull = PullForThousand();
-  filter->SetDisplacement(0, 0, pull);
-  filter->Update();
-  int k = 0;
-  for (auto _ : state)
-  {
-    filter->SetDisplacement(0, 0, (++k & 1) ? pull : 0.999 * pull);
-    filter->Update();
-    benchmark::DoNotOptimize(filter->GetOutput()->GetPoints());
-  }
+  Drag(filter, pull, state);
   state.counters["displaced"] = double(filter->GetNumberOfDisplacedPoints());
   state.counters["refined"] = double(filter->GetNumberOfRefinedPoints());
   state.counters["relaxed"] = double(filter->GetNumberOfRelaxedPoints());
 }
-} // namespace
 
 // A large grasp with lighting: ~88,000 of 1,000,000 vertices displaced on a surface with
 // point normals (docs/rendering.md's 1M row), so the update also recomputes the normals of
@@ -111,18 +108,11 @@ void BM_FilterUpdateLargeGraspWithNormals(benchmark::State& state)
   vtkNew<vtkChainMailDeformationFilter> filter;
   filter->SetInputData(grid);
   filter->SetGraspPointId(grasp);
-  filter->SetDisplacement(0, 0, pull);
-  filter->Update();
-  int k = 0;
-  for (auto _ : state)
-  {
-    filter->SetDisplacement(0, 0, (++k & 1) ? pull : 0.999 * pull);
-    filter->Update();
-    benchmark::DoNotOptimize(filter->GetOutput()->GetPoints());
-  }
+  Drag(filter, pull, state);
   state.counters["displaced"] = double(filter->GetNumberOfDisplacedPoints());
   state.counters["core_ms"] = filter->GetLastDeformationMilliseconds();
 }
+} // namespace
 
 BENCHMARK(BM_FilterUpdate)->Arg(200)->Arg(2000)->Unit(benchmark::kMicrosecond)->MinTime(0.5);
 BENCHMARK(BM_FilterUpdateWithPasses)
