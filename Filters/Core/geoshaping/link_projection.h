@@ -65,11 +65,39 @@ namespace geoshaping
 // - dykstra: the Gauss-Seidel Dykstra/Hildreth sweeps above. One sweep is cheaper than
 //   one ADMM iteration and needs no factorisation, so a handful of sweeps is the
 //   cheapest way to take the worst links down (the filter's refinement).
+// - envelope: not the nearest point but a feasible one, exactly and in one pass (below);
+//   the Axes frame only (in the Link frame it runs Dykstra).
 enum class ProjectionSolver
 {
   admm = 0,
-  dykstra = 1
+  dykstra = 1,
+  envelope = 2
 };
+
+// Envelope (Axes frame). Per axis i every link is a difference constraint
+//   lo_ab <= u_a - u_b <= hi_ab   (lo <= 0 <= hi, both directions intersected, above),
+// i.e. u_a <= u_b + hi_ab and u_b <= u_a - lo_ab: an edge-weighted directed graph with
+// weights >= 0 (no negative cycle, so F restricted to an axis is never empty without
+// fixed vertices). Such a set is a lattice: the componentwise min and max of two
+// feasible configurations are feasible. With fixed vertices f (grasp, pins) at values
+// v_f, the greatest feasible configuration below a start z is
+//
+//   z'   = max(z, max_f (v_f - d(a, f)))      (the lower cones of the fixed vertices)
+//   D(a) = min_b (z'_b + d(b, a))             (min-plus: b over every vertex)
+//
+// with d(b, a) the shortest path from b to a under the weights w(b -> a) = hi_ab. D
+// satisfies every constraint (the triangle inequality of d), D <= z', and D(f) = v_f
+// when the fixed values are consistent (v_f - v_g <= d(g, f) for every pair; always
+// with the grasp alone). The least feasible configuration above z, U, is the same on -z.
+// The result is (D + U) / 2 per axis: feasible (F is convex), symmetric in the
+// direction of the pull, equal to z wherever z already satisfies its links around,
+// exact on fixed vertices (v + v) / 2 = v, and rigid sets (w = 0 both ways) get one
+// value bit for bit. Both are label-correcting Dijkstra runs seeded only by the vertices
+// with a violated link (or by the fixed vertices for the cones): a vertex's value
+// changes only when a neighbour forces it, so the cost is O(r log r) for the r vertices
+// that change and their neighbours, never O(mesh). It is not the projection (E_ref
+// measures how far it lies from it, docs/report.md); with inconsistent fixed values
+// (F empty) the conflicting links stay violated and `converged` is false.
 
 // ADMM. With x the free variables (weights m: 1, or the size of a rigid set), z their
 // start, and for link k the difference w_k = D_k x + c_k (c_k: the fixed end's value),
@@ -199,6 +227,12 @@ private:
     const ProjectionOptions& options);
   void run_dykstra(const ProjectionOptions& options, ProjectionReport& report);
   void run_admm(const ProjectionOptions& options, ProjectionReport& report);
+  void run_envelope(
+    const std::vector<index_t>& start, const ProjectionOptions& options, ProjectionReport& report);
+  void envelope_min_pass(int axis, double sign, std::vector<index_t>& seeds);
+  void envelope_cone(int axis, double sign, const std::vector<index_t>& fixed);
+  double envelope_value(index_t v, int axis, double sign) const;
+  void envelope_touch(index_t v, double value);
   bool factorise(double rho);
 
   const LinkMesh& mesh_;
@@ -212,6 +246,17 @@ private:
   std::vector<Link> links_;
   double best_violation_ = 0.0;
   double best_update_ = 0.0;
+
+  // Envelope scratch (dense, allocated on first use): values of the current pass, the pass
+  // that set them, the lower envelope D per touched vertex, and the vertices touched.
+  std::vector<double> env_value_, env_down_;
+  std::vector<std::uint32_t> env_stamp_;
+  std::uint32_t env_pass_ = 0;
+  std::vector<index_t> env_touched_;
+  std::vector<double> env_cone_; // the fixed vertices' cones, with their own pass stamps
+  std::vector<std::uint32_t> env_cone_stamp_;
+  std::uint32_t env_cone_pass_ = 0;
+  std::vector<index_t> env_cone_touched_;
 
   // ADMM: free variables' columns, the factorisation and what it was built for.
   struct Factor;
