@@ -849,7 +849,35 @@ Displacements reference_configuration(const LinkMesh& mesh, index_t grasp,
       values.push_back(start[v]);
     }
   LinkProjector projector(mesh);
-  const ProjectionReport r = projector.project(grasp, vertices, values, options);
+  ProjectionReport r = projector.project(grasp, vertices, values, options);
+  if (!r.converged && options.finish && options.max_iterations > 0)
+  {
+    // The finish: the capped result x is within the solver's residual of the projection
+    // and violates its links by little; project x itself (the envelope in the Axes frame,
+    // exact in one pass; Dykstra in the Link frame, from a start that is nearly feasible).
+    vertices.clear();
+    values.clear();
+    const Displacements x = projector.displacements();
+    for (index_t v : projector.region())
+      if (!x[std::size_t(v)].isZero(0.0))
+      {
+        vertices.push_back(v);
+        values.push_back(x[std::size_t(v)]);
+      }
+    ProjectionOptions finish = options;
+    finish.solver = ProjectionSolver::envelope; // Dykstra in the Link frame
+    // Dykstra's tail is linear too (fault step, Link: 1.7e-5 -> 2.1e-6 L in 5,000 sweeps).
+    finish.max_iterations =
+      options.max_iterations > (1 << 28) ? options.max_iterations : 4 * options.max_iterations;
+    const ProjectionReport f = projector.project(grasp, vertices, values, finish);
+    r.iterations += f.iterations;
+    r.finish_iterations = f.iterations;
+    r.violation = f.violation;
+    r.update = f.update;
+    r.converged = f.converged;
+    r.region = std::max(r.region, f.region);
+    r.links = std::max(r.links, f.links);
+  }
   if (report)
     *report = r;
   return projector.displacements();
