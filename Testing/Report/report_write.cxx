@@ -289,8 +289,10 @@ void write_results(const Options& o, const Results& r)
                 ? (ref.finish_iterations > 0
                       ? "converged after the finish (" + std::to_string(ref.finish_iterations) +
                           (f == ValidRegionFrame::axes ? " envelope pass" : " Dykstra sweeps") +
-                          " from ADMM's capped result; E_ref below ADMM's residual is "
-                          "not resolved)"
+                          " from ADMM's capped result: E_link reaches the tolerance, but the "
+                          "distance to "
+                          "the exact projection stays ADMM's, which E_link does not bound, "
+                          "docs/error-metrics.md)"
                       : std::string("converged"))
                 : std::string("**not converged: capped** (E_ref below that residual "
                               "is not resolved)"))
