@@ -189,7 +189,7 @@ void write_results(const Options& o, const Results& r)
 {
   std::ofstream csv(o.out + "/report.csv");
   csv << "scene,queue,frame,refinement,iterations,relaxation,iterations_run,displaced,median_ms,"
-         "E_rigid,E_link,E_temporal,E_ref_max,E_ref_rms,front\n";
+         "E_rigid,E_link,E_temporal,E_ref_max,E_ref_rms,front,roughness\n";
   for (const SceneResult& s : r.scenes)
   {
     const std::vector<bool> front = s.front();
