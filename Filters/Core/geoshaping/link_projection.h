@@ -100,8 +100,8 @@ enum class ProjectionSolver
 // (F empty) the conflicting links stay violated and `converged` is false.
 // Measured (docs/error-metrics.md): at the paper's scale (29,236 displaced, ChainMail's
 // E_link 16.4 L) E_link 0 in 8.9-13.5x the ChainMail frame (thread CPU time; 10.1x in
-// the report's wall clock), where Dykstra and ADMM stall at ~0.9 L because their grown region is smaller
-// than the feasible configurations' support (47,439 vertices).
+// the report's wall clock), where Dykstra and ADMM stall at ~0.9 L because their grown region is
+// smaller than the feasible configurations' support (47,439 vertices).
 
 // ADMM. With x the free variables (weights m: 1, or the size of a rigid set), z their
 // start, and for link k the difference w_k = D_k x + c_k (c_k: the fixed end's value),
