@@ -22,7 +22,8 @@ QUEUES = ["FIFO", "Priority", "FIFO Priority", "Max Violation"]
 COLOURS = {"FIFO": "tab:blue", "Priority": "tab:red", "FIFO Priority": "tab:green",
            "Max Violation": "tab:purple"}
 METRICS = [("E_rigid", "E_rigid (rigid-region distortion)"), ("E_link", "E_link (worst link violation)"),
-           ("E_temporal", "E_temporal (jump per unit drag)"), ("E_ref_max", "E_ref (distance to reference, max)")]
+           ("E_temporal", "E_temporal (jump per unit drag)"), ("E_ref_max", "E_ref (distance to reference, max)"),
+           ("roughness", "roughness (largest umbrella Laplacian of u)")]
 FLOOR = 1e-6
 
 
@@ -40,11 +41,14 @@ def read(name):
 
 
 def kind(r):
-    """'none', 'Dykstra' or 'ADMM' from a row's refinement column."""
+    """'none', 'Dykstra', 'ADMM' or 'Envelope' from a row's refinement column; 'relaxed'
+    when the variant relaxes after it (any refinement)."""
+    if int(r.get("relaxation", "0")) > 0:
+        return "relaxed"
     return r["refinement"].split()[0]
 
 
-MARKERS = {"none": "o", "Dykstra": "s", "ADMM": "^"}
+MARKERS = {"none": "o", "Dykstra": "s", "ADMM": "^", "Envelope": "D", "relaxed": "*"}
 
 
 def draw_variants(ax, rows, key, front=False):
@@ -60,6 +64,8 @@ def draw_variants(ax, rows, key, front=False):
         ax.step([p[0] for p in pts], [p[1] for p in pts], where="post", color="k", lw=0.8)
         for t, e, r in pts:
             label = "%s, %s, %s" % (r["queue"], r["frame"], r["refinement"])
+            if int(r.get("relaxation", "0")) > 0:
+                label += ", relax %s" % r["relaxation"]
             ax.annotate(label, (t, e), fontsize=6, xytext=(4, 2), textcoords="offset points")
     ax.set_xscale("log")
     ax.set_yscale("log")
@@ -71,7 +77,7 @@ def draw_variants(ax, rows, key, front=False):
 def legend(ax):
     from matplotlib.lines import Line2D
     handles = [Line2D([], [], color=COLOURS[q], marker="o", ls="", label=q) for q in QUEUES]
-    handles += [Line2D([], [], color="k", marker=MARKERS[k], ls="", mfc="none", label="refinement: " + k)
+    handles += [Line2D([], [], color="k", marker=MARKERS[k], ls="", mfc="none", label=("refinement: " + k) if k != "relaxed" else "+ relaxation")
                 for k in MARKERS]
     handles += [Line2D([], [], color="k", marker="o", ls="", label="Axes frame (filled)"),
                 Line2D([], [], color="k", marker="o", ls="", mfc="none", label="Link frame (hollow)"),
@@ -80,7 +86,8 @@ def legend(ax):
 
 
 def scene_plot(scene, rows, path):
-    fig, axes = plt.subplots(2, 2, figsize=(11, 8.5))
+    fig, axes = plt.subplots(2, 3, figsize=(16, 8.5))
+    axes.flat[-1].axis("off")
     for ax, (key, label) in zip(axes.flat, METRICS):
         draw_variants(ax, rows, key, front=(key == "E_link"))
         ax.set_ylabel(label + " / mean edge")
@@ -101,7 +108,7 @@ def front_plot(rows, path):
     for ax in list(axes.flat)[len(scenes):]:
         ax.axis("off")
     legend(axes.flat[0])
-    finish(fig, "Pareto front of E_link against run time: queue x frame x refinement "
+    finish(fig, "Pareto front of E_link against run time: queue x frame x refinement x relaxation "
                 "(each marker one variant)", path, fontsize=11)
 
 

@@ -22,6 +22,8 @@ std::string refinement_name(const Variant& v)
       return "Dykstra " + std::to_string(v.iterations);
     case Refinement::admm:
       return "ADMM " + std::to_string(v.iterations);
+    case Refinement::envelope:
+      return "Envelope";
     default:
       return "none";
   }
@@ -43,6 +45,23 @@ bool same_variant(const Variant& a, const Variant& b)
          a.relaxation == b.relaxation;
 }
 
+double roughness(const LinkMesh& lm, const Displacements& u)
+{
+  const Adjacency& adj = *lm.adjacency;
+  double worst = 0.0;
+  for (index_t v = 0; v < lm.size(); ++v)
+  {
+    if (u[std::size_t(v)].isZero(0.0) || lm.rigid[std::size_t(v)] || adj.degree(v) == 0)
+      continue;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const index_t* n = adj.begin(v); n != adj.end(v); ++n)
+      mean += u[std::size_t(*n)];
+    mean /= double(adj.degree(v));
+    worst = std::max(worst, (u[std::size_t(v)] - mean).norm());
+  }
+  return worst / lm.scale();
+}
+
 namespace
 {
 double seconds_since(std::chrono::steady_clock::time_point t)
@@ -61,6 +80,7 @@ SceneBench::SceneBench(Scene scene, double reference_tolerance, int reference_it
     deformer_.set_valid_region_frame(f);
     links_[int(f)] = geoshaping::link_mesh(deformer_);
     projector_[int(f)] = std::make_unique<LinkProjector>(links_[int(f)]);
+    relaxer_[int(f)] = std::make_unique<Relaxer>(links_[int(f)]);
     // Started from the FIFO Priority result (one reference per frame shared by every
     // variant of that frame).
     deformer_.set_queue(QueueKind::fifo_priority);
@@ -82,21 +102,58 @@ const std::vector<index_t>& SceneBench::run(const Variant& v, const Eigen::Vecto
   deformer_.set_valid_region_frame(v.frame);
   deformer_.deform(scene_.grasp, pull);
   last_ = ProjectionReport();
-  // The relaxation pass (RelaxationIterations, geoshaping/relaxation.h) belongs after the
-  // refinement, as in the filter; not measured yet: v.relaxation is always 0.
-  if (v.refinement == Refinement::none)
-    return deformer_.moved();
-  ProjectionOptions o;
-  o.solver = v.refinement == Refinement::admm ? ProjectionSolver::admm : ProjectionSolver::dykstra;
-  o.max_iterations = v.iterations;
-  o.tolerance = 1e-6; // the filter's default RefinementTolerance
-  LinkProjector& p = *projector_[int(v.frame)];
-  last_ = refine_links(p, deformer_, scene_.grasp, o);
-  return p.region();
+  const std::vector<index_t>* frame = &deformer_.moved();
+  if (v.refinement != Refinement::none)
+  {
+    ProjectionOptions o;
+    o.solver = v.refinement == Refinement::admm
+                 ? ProjectionSolver::admm
+                 : (v.refinement == Refinement::envelope ? ProjectionSolver::envelope
+                                                         : ProjectionSolver::dykstra);
+    o.max_iterations = v.iterations;
+    o.tolerance = 1e-6; // the filter's default RefinementTolerance
+    LinkProjector& p = *projector_[int(v.frame)];
+    last_ = refine_links(p, deformer_, scene_.grasp, o);
+    frame = &p.region();
+  }
+  if (v.relaxation <= 0)
+    return *frame;
+  // The relaxation after the refinement, as in the filter (vtkChainMailDeformationFilter::
+  // Relax): the start is the frame's moved vertices plus those the refinement changed, at
+  // their final values.
+  start_ = deformer_.moved();
+  if (v.refinement != Refinement::none)
+    for (index_t w : projector_[int(v.frame)]->changed())
+      if (!deformer_.moved_this_frame(w))
+        start_.push_back(w);
+  values_.clear();
+  for (index_t w : start_)
+    values_.push_back(v.refinement == Refinement::none ? deformer_.displacement(w)
+                                                       : projector_[int(v.frame)]->displacement(w));
+  RelaxationOptions ro;
+  ro.iterations = v.relaxation;
+  Relaxer& r = *relaxer_[int(v.frame)];
+  r.relax(scene_.grasp, start_, values_, ro);
+  // Every vertex the frame may have moved: the start and the relaxation's changes, once.
+  mark_.resize(std::size_t(deformer_.size()), 0);
+  touched_.clear();
+  const std::vector<index_t>* lists[] = { &start_, &r.changed() };
+  for (const std::vector<index_t>* list : lists)
+    for (index_t w : *list)
+      if (!mark_[std::size_t(w)])
+      {
+        mark_[std::size_t(w)] = 1;
+        touched_.push_back(w);
+      }
+  for (index_t w : touched_)
+    mark_[std::size_t(w)] = 0;
+  return touched_;
 }
 
 const Eigen::Vector3d& SceneBench::value(const Variant& v, index_t vertex) const
 {
+  if (v.relaxation > 0)
+    return relaxer_[int(v.frame)]->displacement(vertex);
   return v.refinement == Refinement::none ? deformer_.displacement(vertex)
                                           : projector_[int(v.frame)]->displacement(vertex);
 }
@@ -134,6 +191,7 @@ Measurement SceneBench::measure(const Variant& v, int repetitions, int drag_step
   m.e_rigid = rigid_error(lm, u);
   m.e_link = link_error(lm, u);
   m.e_ref = reference_error(lm, u, reference_[int(v.frame)]);
+  m.roughness = roughness(lm, u);
 
   // A slow drag over the last quarter of the pull, in small steps.
   TemporalError temporal(deformer_.size());

@@ -5,6 +5,7 @@
 
 #include "geoshaping/chainmail_deformer.h"
 #include "geoshaping/link_projection.h"
+#include "geoshaping/relaxation.h"
 
 #include <memory>
 #include <string>
@@ -16,7 +17,8 @@ enum class Refinement
 {
   none,
   dykstra, // `iterations` Dykstra sweeps
-  admm     // at most `iterations` ADMM iterations (RefinementIterations), tolerance 1e-6 L
+  admm,    // at most `iterations` ADMM iterations (RefinementIterations), tolerance 1e-6 L
+  envelope // the envelope (link_projection.h): exactly feasible in one pass, Axes frame
 };
 
 struct Variant
@@ -25,7 +27,7 @@ struct Variant
   ValidRegionFrame frame = ValidRegionFrame::axes;
   Refinement refinement = Refinement::none;
   int iterations = 0; // refinement iterations (sweeps for Dykstra)
-  int relaxation = 0; // RelaxationIterations: not measured yet, always 0
+  int relaxation = 0; // RelaxationIterations: relaxation sweeps after the refinement
 };
 // "none", "Dykstra 4", "ADMM 16", ...
 std::string refinement_name(const Variant& v);
@@ -38,6 +40,10 @@ struct Measurement
   std::size_t displaced = 0; // vertices off rest after the frame (ChainMail + refinement)
   double median_ms = 0.0;    // one frame: deform + refine
   double e_rigid = 0.0, e_link = 0.0, e_temporal = 0.0;
+  // Roughness: the largest umbrella Laplacian of the displacement, |u_v - mean of u over
+  // v's neighbours| / L, over the displaced soft vertices (0 on any affine field: a
+  // translation, a uniform slope; ChainMail's facet ridges and teeth are its maxima).
+  double roughness = 0.0;
   ReferenceError e_ref;
   int iterations_run = 0; // refinement iterations the frame ran
 };
@@ -79,6 +85,10 @@ private:
   ChainMailDeformer deformer_;
   LinkMesh links_[2];
   std::unique_ptr<LinkProjector> projector_[2];
+  std::unique_ptr<Relaxer> relaxer_[2];
+  std::vector<index_t> start_, touched_; // the relaxation's start list, the frame's vertices
+  std::vector<std::uint8_t> mark_;
+  Displacements values_;
   Displacements reference_[2];
   ProjectionReport reference_report_[2];
   double reference_seconds_[2] = { 0.0, 0.0 };
@@ -86,5 +96,7 @@ private:
 };
 
 double median(std::vector<double> v);
+// Measurement::roughness of a dense configuration (O(n): for the report, not per frame).
+double roughness(const LinkMesh& lm, const Displacements& u);
 
 } // namespace geoshaping::report

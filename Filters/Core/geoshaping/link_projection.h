@@ -65,11 +65,43 @@ namespace geoshaping
 // - dykstra: the Gauss-Seidel Dykstra/Hildreth sweeps above. One sweep is cheaper than
 //   one ADMM iteration and needs no factorisation, so a handful of sweeps is the
 //   cheapest way to take the worst links down (the filter's refinement).
+// - envelope: not the nearest point but a feasible one, exactly and in one pass (below);
+//   the Axes frame only (in the Link frame it runs Dykstra).
 enum class ProjectionSolver
 {
   admm = 0,
-  dykstra = 1
+  dykstra = 1,
+  envelope = 2
 };
+
+// Envelope (Axes frame). Per axis i every link is a difference constraint
+//   lo_ab <= u_a - u_b <= hi_ab   (lo <= 0 <= hi, both directions intersected, above),
+// i.e. u_a <= u_b + hi_ab and u_b <= u_a - lo_ab: an edge-weighted directed graph with
+// weights >= 0 (no negative cycle, so F restricted to an axis is never empty without
+// fixed vertices). Such a set is a lattice: the componentwise min and max of two
+// feasible configurations are feasible. With fixed vertices f (grasp, pins) at values
+// v_f, the greatest feasible configuration below a start z is
+//
+//   z'   = max(z, max_f (v_f - d(a, f)))      (the lower cones of the fixed vertices)
+//   D(a) = min_b (z'_b + d(b, a))             (min-plus: b over every vertex)
+//
+// with d(b, a) the shortest path from b to a under the weights w(b -> a) = hi_ab. D
+// satisfies every constraint (the triangle inequality of d), D <= z', and D(f) = v_f
+// when the fixed values are consistent (v_f - v_g <= d(g, f) for every pair; always
+// with the grasp alone). The least feasible configuration above z, U, is the same on -z.
+// The result is (D + U) / 2 per axis: feasible (F is convex), symmetric in the
+// direction of the pull, equal to z wherever z already satisfies its links around,
+// exact on fixed vertices (v + v) / 2 = v, and rigid sets (w = 0 both ways) get one
+// value bit for bit. Both are label-correcting Dijkstra runs seeded only by the vertices
+// with a violated link (or by the fixed vertices for the cones): a vertex's value
+// changes only when a neighbour forces it, so the cost is O(r log r) for the r vertices
+// that change and their neighbours, never O(mesh). It is not the projection (E_ref
+// measures how far it lies from it, docs/report.md); with inconsistent fixed values
+// (F empty) the conflicting links stay violated and `converged` is false.
+// Measured (docs/error-metrics.md): at the paper's scale (29,236 displaced, ChainMail's
+// E_link 16.4 L) E_link 0 in 8.9-13.5x the ChainMail frame (thread CPU time; 10.1x in
+// the report's wall clock), where Dykstra and ADMM stall at ~0.9 L because their grown region is
+// smaller than the feasible configurations' support (47,439 vertices).
 
 // ADMM. With x the free variables (weights m: 1, or the size of a rigid set), z their
 // start, and for link k the difference w_k = D_k x + c_k (c_k: the fixed end's value),
@@ -112,6 +144,9 @@ struct ProjectionOptions
   double tolerance = 1e-9; // relative to the mean edge length
   ProjectionSolver solver = ProjectionSolver::admm;
   double rho = 0.0; // ADMM penalty; 0: 10 sqrt(the largest weight, a rigid set's size)
+  // reference_configuration only: when the solver stops unconverged, project its result
+  // (see there).
+  bool finish = true;
   // Asked after every sweep; true ends the run as the cap does (e.g. a user's abort).
   std::function<bool()> stop;
 };
@@ -122,9 +157,10 @@ struct ProjectionReport
   double violation = 0.0; // E_link of the result (0 when no sweep ran)
   double update = 0.0;    // largest coordinate change in the sweep that gave the result, / L
   bool converged = false;
-  std::size_t region = 0; // vertices with a variable (the displaced region + one ring)
-  std::size_t links = 0;  // links swept
-  int factorisations = 0; // ADMM: sparse factorisations done (0 when one was reused)
+  std::size_t region = 0;    // vertices with a variable (the displaced region + one ring)
+  std::size_t links = 0;     // links swept
+  int factorisations = 0;    // ADMM: sparse factorisations done (0 when one was reused)
+  int finish_iterations = 0; // reference_configuration: iterations of the finish (0: none)
 };
 
 // Holds O(n) scratch allocated once; each call costs time and memory proportional to
@@ -199,6 +235,12 @@ private:
     const ProjectionOptions& options);
   void run_dykstra(const ProjectionOptions& options, ProjectionReport& report);
   void run_admm(const ProjectionOptions& options, ProjectionReport& report);
+  void run_envelope(
+    const std::vector<index_t>& start, const ProjectionOptions& options, ProjectionReport& report);
+  void envelope_min_pass(int axis, double sign, std::vector<index_t>& seeds);
+  void envelope_cone(int axis, double sign, const std::vector<index_t>& fixed);
+  double envelope_value(index_t v, int axis, double sign) const;
+  void envelope_touch(index_t v, double value);
   bool factorise(double rho);
 
   const LinkMesh& mesh_;
@@ -212,6 +254,17 @@ private:
   std::vector<Link> links_;
   double best_violation_ = 0.0;
   double best_update_ = 0.0;
+
+  // Envelope scratch (dense, allocated on first use): values of the current pass, the pass
+  // that set them, the lower envelope D per touched vertex, and the vertices touched.
+  std::vector<double> env_value_, env_down_;
+  std::vector<std::uint32_t> env_stamp_;
+  std::uint32_t env_pass_ = 0;
+  std::vector<index_t> env_touched_;
+  std::vector<double> env_cone_; // the fixed vertices' cones, with their own pass stamps
+  std::vector<std::uint32_t> env_cone_stamp_;
+  std::uint32_t env_cone_pass_ = 0;
+  std::vector<index_t> env_cone_touched_;
 
   // ADMM: free variables' columns, the factorisation and what it was built for.
   struct Factor;
@@ -231,6 +284,17 @@ ProjectionReport refine_links(LinkProjector& projector, const ChainMailDeformer&
 
 // The reference configuration of E_ref: the point of F nearest `start` (dense, e.g. the
 // ChainMail result, or rest with the grasp at its displacement), run to convergence.
+// ADMM's tail is linear and slow (the fault step stops at 2e-6 L Axes, 2e-5 L Link after
+// 5,000 iterations; residual balancing of rho, Boyd et al. 3.4.1, was measured worse:
+// 0.013 L in 5,000 on the same scene, so rho stays fixed). When the cap ends the run
+// unconverged and options.finish is set, the result x (within the solver's residual of
+// the projection P(z), links violated by about that much) is itself projected: the
+// envelope in the Axes frame (exactly feasible, one pass), Dykstra from x in the Link
+// frame (up to 4 max_iterations sweeps: a Dykstra sweep costs a fraction of an ADMM
+// iteration). The returned point is then feasible to the
+// tolerance and |result - P(z)| <= |result - x| + |x - P(z)|: the finish's own move
+// (about the residual it removed) plus ADMM's distance to P(z); report->converged
+// says whether E_link reached the tolerance, report->finish_iterations what it took.
 Displacements reference_configuration(const LinkMesh& mesh, index_t grasp,
   const Displacements& start, ProjectionReport* report = nullptr,
   const ProjectionOptions& options = {});
