@@ -79,8 +79,6 @@ SceneBench::SceneBench(Scene scene, double reference_tolerance, int reference_it
   {
     deformer_.set_valid_region_frame(f);
     links_[int(f)] = geoshaping::link_mesh(deformer_);
-    projector_[int(f)] = std::make_unique<LinkProjector>(links_[int(f)]);
-    relaxer_[int(f)] = std::make_unique<Relaxer>(links_[int(f)]);
     // Started from the FIFO Priority result (one reference per frame shared by every
     // variant of that frame).
     deformer_.set_queue(QueueKind::fifo_priority);
@@ -102,7 +100,8 @@ const std::vector<index_t>& SceneBench::run(const Variant& v, const Eigen::Vecto
   deformer_.set_valid_region_frame(v.frame);
   deformer_.deform(scene_.grasp, pull);
   last_ = ProjectionReport();
-  const std::vector<index_t>* frame = &deformer_.moved();
+  FramePasses& passes = passes_[int(v.frame)];
+  passes.begin_frame();
   if (v.refinement != Refinement::none)
   {
     ProjectionOptions o;
@@ -112,50 +111,24 @@ const std::vector<index_t>& SceneBench::run(const Variant& v, const Eigen::Vecto
                                                          : ProjectionSolver::dykstra);
     o.max_iterations = v.iterations;
     o.tolerance = 1e-6; // the filter's default RefinementTolerance
-    LinkProjector& p = *projector_[int(v.frame)];
-    last_ = refine_links(p, deformer_, scene_.grasp, o);
-    frame = &p.region();
+    last_ = passes.refine(deformer_, scene_.grasp, o);
   }
-  if (v.relaxation <= 0)
-    return *frame;
-  // The relaxation after the refinement, as in the filter (vtkChainMailDeformationFilter::
-  // Relax): the start is the frame's moved vertices plus those the refinement changed, at
-  // their final values.
-  start_ = deformer_.moved();
-  if (v.refinement != Refinement::none)
-    for (index_t w : projector_[int(v.frame)]->changed())
-      if (!deformer_.moved_this_frame(w))
-        start_.push_back(w);
-  values_.clear();
-  for (index_t w : start_)
-    values_.push_back(v.refinement == Refinement::none ? deformer_.displacement(w)
-                                                       : projector_[int(v.frame)]->displacement(w));
-  RelaxationOptions ro;
-  ro.iterations = v.relaxation;
-  Relaxer& r = *relaxer_[int(v.frame)];
-  r.relax(scene_.grasp, start_, values_, ro);
-  // Every vertex the frame may have moved: the start and the relaxation's changes, once.
-  mark_.resize(std::size_t(deformer_.size()), 0);
-  touched_.clear();
-  const std::vector<index_t>* lists[] = { &start_, &r.changed() };
-  for (const std::vector<index_t>* list : lists)
-    for (index_t w : *list)
-      if (!mark_[std::size_t(w)])
-      {
-        mark_[std::size_t(w)] = 1;
-        touched_.push_back(w);
-      }
-  for (index_t w : touched_)
-    mark_[std::size_t(w)] = 0;
+  if (v.relaxation > 0)
+  {
+    RelaxationOptions ro;
+    ro.iterations = v.relaxation;
+    passes.relax(deformer_, scene_.grasp, ro);
+  }
+  if (!passes.refined() && !passes.relaxed())
+    return deformer_.moved();
+  touched_ = deformer_.moved();
+  touched_.insert(touched_.end(), passes.beyond().begin(), passes.beyond().end());
   return touched_;
 }
 
 const Eigen::Vector3d& SceneBench::value(const Variant& v, index_t vertex) const
 {
-  if (v.relaxation > 0)
-    return relaxer_[int(v.frame)]->displacement(vertex);
-  return v.refinement == Refinement::none ? deformer_.displacement(vertex)
-                                          : projector_[int(v.frame)]->displacement(vertex);
+  return passes_[int(v.frame)].displacement(deformer_, vertex);
 }
 
 Displacements SceneBench::frame(const Variant& v, const Eigen::Vector3d& pull)

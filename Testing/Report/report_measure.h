@@ -4,6 +4,7 @@
 #include "report_scenes.h"
 
 #include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/frame_passes.h"
 #include "geoshaping/link_projection.h"
 #include "geoshaping/relaxation.h"
 
@@ -83,12 +84,11 @@ private:
 
   Scene scene_;
   ChainMailDeformer deformer_;
-  LinkMesh links_[2];
-  std::unique_ptr<LinkProjector> projector_[2];
-  std::unique_ptr<Relaxer> relaxer_[2];
-  std::vector<index_t> start_, touched_; // the relaxation's start list, the frame's vertices
-  std::vector<std::uint8_t> mark_;
-  Displacements values_;
+  LinkMesh links_[2]; // what the errors are measured on, one per frame
+  // The passes after the frame, as the filter runs them (one per frame, so each keeps its
+  // own ADMM factorisation).
+  FramePasses passes_[2];
+  std::vector<index_t> touched_; // the frame's vertices: moved, then the passes' beyond()
   Displacements reference_[2];
   ProjectionReport reference_report_[2];
   double reference_seconds_[2] = { 0.0, 0.0 };
