@@ -818,6 +818,20 @@ bool LinkProjector::finish_iteration(ProjectionReport& report, double violation,
   return report.converged || (options.stop && options.stop());
 }
 
+const char* solver_name(ProjectionSolver solver)
+{
+  switch (solver)
+  {
+    case ProjectionSolver::admm:
+      return "ADMM";
+    case ProjectionSolver::dykstra:
+      return "Dykstra";
+    case ProjectionSolver::envelope:
+      return "Envelope";
+  }
+  return "";
+}
+
 ProjectionReport refine_links(LinkProjector& projector, const ChainMailDeformer& deformer,
   index_t grasp, const ProjectionOptions& options)
 {

@@ -139,6 +139,7 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GenerateDiagnostics: " << this->GenerateDiagnostics << "\n";
   os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";
   os << indent << "RefinementTolerance: " << this->RefinementTolerance << "\n";
+  os << indent << "RefinementSolver: " << this->RefinementSolver << "\n";
   os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
   os << indent << "NumberOfEdits: " << this->Internals->Edits.records().size() << "\n";
   os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";

@@ -106,6 +106,12 @@ public:
     SMOOTH = 1,
     STEP = 2
   };
+  enum RefinementSolvers
+  {
+    REFINEMENT_ADMM = 0,
+    REFINEMENT_DYKSTRA = 1,
+    REFINEMENT_ENVELOPE = 2
+  };
   enum GraspModes
   {
     GRASP_POINT_ID = 0,
@@ -211,6 +217,18 @@ public:
   /// mean edge lengths. Default 1e-6; clamped to [1e-12, 1].
   vtkSetClampMacro(RefinementTolerance, double, 1e-12, 1.0);
   vtkGetMacro(RefinementTolerance, double);
+  ///@}
+
+  ///@{
+  /// The refinement's solver (the core's ProjectionSolver, link_projection.h).
+  /// REFINEMENT_DYKSTRA (the default): RefinementIterations sweeps of Dykstra's
+  /// projection. REFINEMENT_ENVELOPE: in the Axes frame one exact pass (every link
+  /// satisfied, grasp and pins fixed, rigid sets moved as one; not the nearest such shape),
+  /// in the Link frame Dykstra. REFINEMENT_ADMM: ADMM on the region's link graph (a sparse
+  /// factorisation per region), the report's reference solver. The pass runs only when
+  /// RefinementIterations > 0.
+  vtkSetClampMacro(RefinementSolver, int, REFINEMENT_ADMM, REFINEMENT_ENVELOPE);
+  vtkGetMacro(RefinementSolver, int);
   /// Sweeps of the relaxation pass after ChainMail and the refinement (0, the default:
   /// none), at most MAX_RELAXATION_ITERATIONS (200, the plugin's range; larger values
   /// are clamped). Each sweep moves every displaced soft vertex toward the mean of its
@@ -332,6 +350,7 @@ protected:
   bool GenerateDiagnostics = false;
   int RefinementIterations = 0;
   double RefinementTolerance = 1e-6;
+  int RefinementSolver = REFINEMENT_DYKSTRA;
   int RelaxationIterations = 0;
 
   // What the last update did (the information properties above), in one place: every

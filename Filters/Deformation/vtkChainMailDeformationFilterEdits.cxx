@@ -38,9 +38,7 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
   geoshaping::ProjectionOptions options;
   options.max_iterations = this->RefinementIterations;
   options.tolerance = this->RefinementTolerance;
-  // Dykstra sweeps: cheaper per iteration than ADMM and on the report's front for the
-  // interactive iteration counts (docs/report.md); ADMM computes the references.
-  options.solver = geoshaping::ProjectionSolver::dykstra;
+  options.solver = static_cast<geoshaping::ProjectionSolver>(this->RefinementSolver);
   options.stop = this->SweepMonitor(this->RefinementIterations, sweeps, aborted);
   const geoshaping::ProjectionReport report =
     state.Passes.refine(state.Deformer, geoshaping::index_t(grasp), options);

@@ -422,6 +422,40 @@ TEST(ChainMailDeformationFilter, RefinementZeroIsThePlainChainMailResult)
   EXPECT_EQ(refined->GetNumberOfRefinedPoints(), 0);
 }
 
+TEST(ChainMailDeformationFilter, EnvelopeRefinementSatisfiesEveryLinkInAxesAndIsDykstraInLink)
+{
+  auto grid = IslandGrid();
+  vtkNew<vtkChainMailDeformationFilter> f, dykstra;
+  const vtkIdType grasp = 8 * 30 + 8;
+  for (auto* g : { f.Get(), dykstra.Get() })
+  {
+    g->SetCandidateQueue(vtkChainMailDeformationFilter::FIFO);
+    g->SetGraspPointId(grasp);
+    g->SetDisplacement(3, -2, 12);
+  }
+  EXPECT_EQ(f->GetRefinementSolver(), vtkChainMailDeformationFilter::REFINEMENT_DYKSTRA);
+  const double chainmail = OutputLinkError(grid, Deform(f, grid));
+  ASSERT_GT(chainmail, 0.1);
+  f->SetRefinementIterations(1);
+  f->SetRefinementSolver(vtkChainMailDeformationFilter::REFINEMENT_ENVELOPE);
+  f->Update();
+  EXPECT_GT(f->GetNumberOfRefinedPoints(), 0);
+  EXPECT_LE(OutputLinkError(grid, f->GetOutput()), 1e-9) << "one pass satisfies every link";
+  double p[3], q[3];
+  grid->GetPoint(grasp, p);
+  f->GetOutput()->GetPoint(grasp, q);
+  EXPECT_EQ(q[2], p[2] + 12.0);
+  // The Link frame has no envelope: the pass is Dykstra's.
+  for (auto* g : { f.Get(), dykstra.Get() })
+  {
+    g->SetValidRegionFrame(vtkChainMailDeformationFilter::LINK);
+    g->SetRefinementIterations(4);
+  }
+  EXPECT_EQ(MaxPointDifference(Deform(f, grid), Deform(dykstra, grid)), 0.0);
+  f->SetRefinementSolver(99);
+  EXPECT_EQ(f->GetRefinementSolver(), vtkChainMailDeformationFilter::REFINEMENT_ENVELOPE);
+}
+
 TEST(ChainMailDeformationFilter, RefinementLowersLinkErrorAndKeepsGraspAndPins)
 {
   auto grid = IslandGrid();

@@ -9,6 +9,7 @@
 
 #include "geoshaping/brush.h"
 #include "geoshaping/candidate_queue.h"
+#include "geoshaping/link_projection.h"
 #include "geoshaping/transfer_function.h"
 
 #include <vtkNew.h>
@@ -28,6 +29,9 @@ static_assert(Chain::FIFO == int(gs::QueueKind::fifo));
 static_assert(Chain::PRIORITY == int(gs::QueueKind::priority));
 static_assert(Chain::FIFO_PRIORITY == int(gs::QueueKind::fifo_priority));
 static_assert(Chain::MAX_VIOLATION == int(gs::QueueKind::max_violation));
+static_assert(Chain::REFINEMENT_ADMM == int(gs::ProjectionSolver::admm));
+static_assert(Chain::REFINEMENT_DYKSTRA == int(gs::ProjectionSolver::dykstra));
+static_assert(Chain::REFINEMENT_ENVELOPE == int(gs::ProjectionSolver::envelope));
 static_assert(Chain::LINEAR == int(gs::CurveShape::linear));
 static_assert(Chain::SMOOTH == int(gs::CurveShape::smooth));
 static_assert(Chain::STEP == int(gs::CurveShape::step));
@@ -76,6 +80,11 @@ TEST(Enumerations, XmlEntriesMatchTheCore)
   ASSERT_EQ(queues.size(), 4u);
   for (const auto& [value, text] : queues)
     EXPECT_EQ(text, gs::queue_name(gs::QueueKind(value))) << value;
+  const std::map<int, std::string> solvers =
+    entries("ChainMailDeformation.xml", "RefinementSolver");
+  ASSERT_EQ(solvers.size(), 3u);
+  for (const auto& [value, text] : solvers)
+    EXPECT_EQ(text, gs::solver_name(gs::ProjectionSolver(value))) << value;
 
   const std::map<int, std::string> falloffs = entries("MalleabilityPaint.xml", "Falloff");
   ASSERT_EQ(falloffs.size(), 4u);

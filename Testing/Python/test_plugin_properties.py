@@ -59,8 +59,8 @@ check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displac
       groups["Editing"] == ["CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"],
       "the grasp and edit groups hold their properties")
 check(groups["Refinement"] == ["RefinementIterations", "RefinementTolerance",
-                               "RelaxationIterations"],
-      "the refinement group holds the iteration cap, the tolerance and the relaxation")
+                               "RefinementSolver", "RelaxationIterations"],
+      "the refinement group holds the iteration cap, the tolerance, the solver and the relaxation")
 check(groups["Queue and transfer"][:2] == ["CandidateQueue", "ValidRegionFrame"],
       "ValidRegionFrame is in the queue and transfer group, after CandidateQueue")
 grouped = [name for names in groups.values() for name in names]

@@ -73,6 +73,8 @@ enum class ProjectionSolver
   dykstra = 1,
   envelope = 2
 };
+// "ADMM", "Dykstra", "Envelope" (the plugin's RefinementSolver entries).
+const char* solver_name(ProjectionSolver solver);
 
 // Envelope (Axes frame). Per axis i every link is a difference constraint
 //   lo_ab <= u_a - u_b <= hi_ab   (lo <= 0 <= hi, both directions intersected, above),
