@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <tuple>
+#include <utility>
 
 namespace geoshaping
 {
@@ -37,41 +39,151 @@ bool parse_queue_name(const char* name, QueueKind& kind)
   return false;
 }
 
+namespace
+{
+// The full key of an entry, ties (duplicate ids on a piece) by vertex and sponsor.
+inline bool before(const SuperstepEntry& a, const SuperstepEntry& b)
+{
+  return std::tie(a.band, a.root.generation, a.root.gid, a.candidate_gid, a.sponsor_gid, a.vertex,
+           a.sponsor) < std::tie(b.band, b.root.generation, b.root.gid, b.candidate_gid,
+                          b.sponsor_gid, b.vertex, b.sponsor);
+}
+
+int bit_width(std::uint64_t x)
+{
+  int n = 0;
+  for (; x; x >>= 1)
+    ++n;
+  return n;
+}
+} // namespace
+
+bool SuperstepQueue::sort_cheaply()
+{
+  const std::size_t k = pending_.size();
+  if (k > std::numeric_limits<std::uint32_t>::max())
+    return false;
+  std::uint32_t min_order = pending_[0].order, max_order = min_order;
+  std::int64_t min_id = pending_[0].candidate_gid, max_id = min_id;
+  for (const SuperstepEntry& e : pending_)
+  {
+    min_order = std::min(min_order, e.order);
+    max_order = std::max(max_order, e.order);
+    min_id = std::min(min_id, e.candidate_gid);
+    max_id = std::max(max_id, e.candidate_gid);
+  }
+  const int id_bits = bit_width(std::uint64_t(max_id) - std::uint64_t(min_id));
+  const int bits = id_bits + bit_width(max_order - min_order);
+  if (bits > 64)
+    return false;
+  words_.resize(k);
+  for (std::size_t i = 0; i < k; ++i)
+  {
+    const SuperstepEntry& e = pending_[i];
+    const std::uint64_t order = e.order - min_order;
+    words_[i] = { (id_bits < 64 ? order << id_bits : 0) |
+                    (std::uint64_t(e.candidate_gid) - std::uint64_t(min_id)),
+      std::uint32_t(i) };
+  }
+  if (k < 64) // insertion sort: stable, and cheaper than the histograms of a radix pass
+  {
+    for (std::size_t i = 1; i < k; ++i)
+      for (std::size_t j = i; j > 0 && words_[j].key < words_[j - 1].key; --j)
+        std::swap(words_[j], words_[j - 1]);
+  }
+  else
+  {
+    // LSD radix sort, one stable counting pass per byte that is not the same in all.
+    scratch_.resize(k);
+    for (int shift = 0; shift < bits; shift += 8)
+    {
+      std::array<std::uint32_t, 256> count{};
+      for (const Word& w : words_)
+        ++count[(w.key >> shift) & 0xff];
+      if (count[(words_[0].key >> shift) & 0xff] == k)
+        continue;
+      std::uint32_t sum = 0;
+      for (std::uint32_t& c : count)
+        sum += std::exchange(c, sum);
+      for (const Word& w : words_)
+        scratch_[count[(w.key >> shift) & 0xff]++] = w;
+      words_.swap(scratch_);
+    }
+  }
+  // Runs of one word (one candidate) by sponsor id, then the check on the full key.
+  for (std::size_t i = 1; i < k; ++i)
+    for (std::size_t j = i;
+         j > 0 && words_[j].key == words_[j - 1].key &&
+         pending_[words_[j].index].sponsor_gid < pending_[words_[j - 1].index].sponsor_gid;
+         --j)
+      std::swap(words_[j], words_[j - 1]);
+  for (std::size_t i = 1; i < k; ++i)
+    if (before(pending_[words_[i].index], pending_[words_[i - 1].index]))
+      return false;
+  return true;
+}
+
+void SuperstepQueue::sort_fully()
+{
+  words_.resize(pending_.size());
+  for (std::size_t i = 0; i < pending_.size(); ++i)
+    words_[i] = { 0, std::uint32_t(i) };
+  auto less = [&](const Word& a, const Word& b)
+  { return before(pending_[a.index], pending_[b.index]); };
+  if (words_.size() <= small)
+    for (std::size_t i = 1; i < words_.size(); ++i)
+      for (std::size_t j = i; j > 0 && less(words_[j], words_[j - 1]); --j)
+        std::swap(words_[j], words_[j - 1]);
+  else
+    std::sort(words_.begin(), words_.end(), less);
+}
+
 void SuperstepQueue::seal(std::uint32_t generation)
 {
-  auto rank = [](const SuperstepEntry& e) {
-    return std::make_tuple(e.band, e.root.generation, e.root.gid, e.candidate_gid, e.sponsor_gid);
-  };
-  std::sort(pool_.begin() + std::ptrdiff_t(sealed_), pool_.end(),
-    [&](const SuperstepEntry& a, const SuperstepEntry& b) { return rank(a) < rank(b); });
-  std::size_t begin = sealed_;
-  while (begin < pool_.size())
+  if (pending_.empty())
+    return;
+  if (pending_.size() <= small || !sort_cheaply())
+    sort_fully();
+  const std::size_t k = pending_.size();
+  std::size_t begin = pool_.size();
+  for (std::size_t i = 0; i < k;)
   {
-    const SuperstepEntry& first = pool_[begin];
-    std::size_t end = begin + 1;
-    while (end < pool_.size() && pool_[end].band == first.band && pool_[end].root == first.root)
-      ++end;
-    groups_.push({ key(first.band, first.root, generation), begin, end });
-    begin = end;
+    const SuperstepEntry& first = pending_[words_[i].index];
+    std::size_t j = i;
+    for (; j < k; ++j)
+    {
+      const SuperstepEntry& e = pending_[words_[j].index];
+      if (e.band != first.band || !(e.root == first.root))
+        break;
+      pool_.push_back({ e.vertex, e.sponsor });
+    }
+    groups_.push_back({ key(first.band, first.root, generation), begin, pool_.size() });
+    std::push_heap(groups_.begin(), groups_.end(), Later());
+    begin = pool_.size();
+    i = j;
   }
-  sealed_ = pool_.size();
+  pending_.clear();
 }
 
 bool SuperstepQueue::pop(const SuperstepKey& k, std::size_t& begin, std::size_t& end)
 {
-  if (groups_.empty() || groups_.top().key != k)
+  if (groups_.empty())
     return false;
-  begin = groups_.top().begin;
-  end = groups_.top().end;
-  groups_.pop();
+  const SuperstepKey& top = groups_.front().key;
+  if (top[0] != k[0] || top[1] != k[1] || top[2] != k[2])
+    return false;
+  begin = groups_.front().begin;
+  end = groups_.front().end;
+  std::pop_heap(groups_.begin(), groups_.end(), Later());
+  groups_.pop_back();
   return true;
 }
 
 void SuperstepQueue::clear()
 {
   pool_.clear();
-  sealed_ = 0;
-  groups_ = {};
+  pending_.clear();
+  groups_.clear();
 }
 
 } // namespace geoshaping

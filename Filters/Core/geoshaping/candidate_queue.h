@@ -100,10 +100,31 @@ public:
 // band is the bit pattern of a float in [0, 1] (+0 for -0), whose unsigned order is the
 // numeric order, so pieces with different sets of malleability values agree on it.
 //
-// Cost: seal sorts the k entries of a generation, O(k log k), and files one group per
-// (band, root) on a binary heap of groups; pop is O(log G) for G pending groups. A frame
-// costs O(P log P) for its P pushes, P <= the sum of the degrees of the moved vertices.
-// The entry pool is reused between frames.
+// Cost: a frame of P pushes (P <= the sum of the degrees of the moved vertices) is O(P)
+// time and 8 P bytes in the usual case, O(P log P) at worst; pop is O(log G) for G
+// pending groups. How, for the k entries of one generation (seal):
+//
+// 1. They wait in a scratch buffer reused between generations and frames (its size is
+//    the largest generation, not P).
+// 2. Cheap order: a stable LSD radix sort, 8 bits per pass, on the 64-bit word
+//      (order - min order) << b | (c id - min c id),   b = bit width of the c id range,
+//    `order` being any integer non-decreasing in band (the deformer passes the rank of
+//    the malleability among the piece's distinct values); then each run of entries
+//    with equal word (the same candidate) by sponsor id, by insertion (a run is at
+//    most c's degree long). O(k) for a range of ids below 2^(64 - 8 w), w passes; when
+//    the word does not fit in 64 bits, a comparison sort on the full key, O(k log k).
+// 3. Check: adjacent entries in full-key order. It holds when, within a band, the
+//    roots are all one root or all the candidates' own (generation, c id), which is
+//    every generation the deformer seals: one superstep's moved vertices share a band
+//    and a root, so an entry's root follows from its band alone (same band: theirs;
+//    lower: its own; higher: the base). Otherwise (a caller mixing sponsors of
+//    different bands or roots in one generation) a comparison sort on the full key
+//    (ties by vertex, sponsor), O(k log k): the order is the full key's either way.
+// 4. The sorted (vertex, sponsor) pairs, 8 bytes each, are appended to the pool, one
+//    group per (band, root) filed on a binary heap of groups (40 bytes per group).
+//
+// The pool holds the whole frame's entries (groups pop in key order, not in filing
+// order); pool, scratch and heap keep their capacity between frames.
 struct SuperstepRoot
 {
   std::uint32_t generation = 0; // 0: the base root
@@ -120,8 +141,9 @@ struct SuperstepEntry
   std::int64_t sponsor_gid;
   SuperstepRoot root;
   std::uint32_t band;
-  index_t vertex;  // the candidate (the deformer's internal id)
-  index_t sponsor; // the sponsor's slot
+  std::uint32_t order; // non-decreasing in band (a hint for the cheap sort; 0 if unknown)
+  index_t vertex;      // the candidate (the deformer's internal id)
+  index_t sponsor;     // the sponsor's slot
 };
 
 // (band, root, generation) as three words compared in lexicographic order, so pieces
@@ -141,19 +163,22 @@ public:
   {
     return { std::uint32_t(k[0]), std::int64_t(k[1] ^ (std::uint64_t(1) << 63)) };
   }
-  void push(const SuperstepEntry& e) { pool_.push_back(e); }
+  void push(const SuperstepEntry& e) { pending_.push_back(e); }
   // Files the entries pushed since the last seal as `generation`.
   void seal(std::uint32_t generation);
   // The lowest pending key, `none` when nothing is pending.
-  SuperstepKey top() const { return groups_.empty() ? none : groups_.top().key; }
+  SuperstepKey top() const { return groups_.empty() ? none : groups_.front().key; }
   // Removes the group `key` if it is the lowest: its entries are entries()[begin, end),
-  // sorted by (candidate id, sponsor id), valid until the next push.
+  // sorted by (candidate id, sponsor id), valid until the next seal.
   bool pop(const SuperstepKey& key, std::size_t& begin, std::size_t& end);
-  const SuperstepEntry* entries() const { return pool_.data(); }
+  const Candidate* entries() const { return pool_.data(); }
+  // Empties the queue, keeping the buffers.
   void clear();
   std::size_t memory_bytes() const
   {
-    return pool_.capacity() * sizeof(SuperstepEntry) + groups_.size() * sizeof(Group);
+    return pool_.capacity() * sizeof(Candidate) + pending_.capacity() * sizeof(SuperstepEntry) +
+           (words_.capacity() + scratch_.capacity()) * sizeof(Word) +
+           groups_.capacity() * sizeof(Group);
   }
 
 private:
@@ -161,11 +186,28 @@ private:
   {
     SuperstepKey key;
     std::size_t begin, end;
-    bool operator>(const Group& o) const { return key > o.key; }
   };
-  std::vector<SuperstepEntry> pool_;
-  std::size_t sealed_ = 0; // pool_[0, sealed_) is filed in groups
-  std::priority_queue<Group, std::vector<Group>, std::greater<Group>> groups_;
+  struct Later // for the std:: heap functions: the lowest key on top
+  {
+    bool operator()(const Group& a, const Group& b) const
+    {
+      return a.key[0] != b.key[0]   ? a.key[0] > b.key[0]
+             : a.key[1] != b.key[1] ? a.key[1] > b.key[1]
+                                    : a.key[2] > b.key[2];
+    }
+  };
+  struct Word // the cheap sort key of pending_[index]
+  {
+    std::uint64_t key;
+    std::uint32_t index;
+  };
+  static constexpr std::size_t small = 16; // generations sorted on the full key by insertion
+  bool sort_cheaply();
+  void sort_fully();
+  std::vector<Candidate> pool_;
+  std::vector<SuperstepEntry> pending_; // the generation being pushed
+  std::vector<Word> words_, scratch_;   // its sort order
+  std::vector<Group> groups_;           // a heap on Later
 };
 
 // Enhanced ChainMail order: the candidate whose rest position lies farthest outside its
