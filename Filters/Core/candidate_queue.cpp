@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 
@@ -85,7 +86,7 @@ bool SuperstepQueue::sort_cheaply()
                     (std::uint64_t(e.candidate_gid) - std::uint64_t(min_id)),
       std::uint32_t(i) };
   }
-  if (k < 64) // insertion sort: stable, and cheaper than the histograms of a radix pass
+  if (k < 64) // insertion sort: stable, and cheaper than the counters of a radix pass
   {
     for (std::size_t i = 1; i < k; ++i)
       for (std::size_t j = i; j > 0 && words_[j].key < words_[j - 1].key; --j)
@@ -93,20 +94,25 @@ bool SuperstepQueue::sort_cheaply()
   }
   else
   {
-    // LSD radix sort, one stable counting pass per byte that is not the same in all.
+    // LSD radix sort: ceil(bits / 11) stable counting passes of equal width (at most
+    // 2^11 counters), a pass skipped when its digit is the same in all words.
+    const int passes = (bits + 10) / 11;
+    const int width = passes ? (bits + passes - 1) / passes : 0;
+    const std::uint64_t mask = (std::uint64_t(1) << width) - 1;
     scratch_.resize(k);
-    for (int shift = 0; shift < bits; shift += 8)
+    count_.resize(std::size_t(1) << width);
+    for (int shift = 0; shift < bits; shift += width)
     {
-      std::array<std::uint32_t, 256> count{};
+      std::fill(count_.begin(), count_.end(), 0);
       for (const Word& w : words_)
-        ++count[(w.key >> shift) & 0xff];
-      if (count[(words_[0].key >> shift) & 0xff] == k)
+        ++count_[(w.key >> shift) & mask];
+      if (count_[(words_[0].key >> shift) & mask] == k)
         continue;
       std::uint32_t sum = 0;
-      for (std::uint32_t& c : count)
+      for (std::uint32_t& c : count_)
         sum += std::exchange(c, sum);
       for (const Word& w : words_)
-        scratch_[count[(w.key >> shift) & 0xff]++] = w;
+        scratch_[count_[(w.key >> shift) & mask]++] = w;
       words_.swap(scratch_);
     }
   }
@@ -145,6 +151,8 @@ void SuperstepQueue::seal(std::uint32_t generation)
   if (pending_.size() <= small || !sort_cheaply())
     sort_fully();
   const std::size_t k = pending_.size();
+  if (pool_.size() + k > std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("SuperstepQueue: more than 2^32 entries in a frame");
   std::size_t begin = pool_.size();
   for (std::size_t i = 0; i < k;)
   {
@@ -157,25 +165,42 @@ void SuperstepQueue::seal(std::uint32_t generation)
         break;
       pool_.push_back({ e.vertex, e.sponsor });
     }
-    groups_.push_back({ key(first.band, first.root, generation), begin, pool_.size() });
-    std::push_heap(groups_.begin(), groups_.end(), Later());
+    file({ key(first.band, first.root, generation), std::uint32_t(begin),
+      std::uint32_t(pool_.size()) });
     begin = pool_.size();
     i = j;
   }
   pending_.clear();
 }
 
+void SuperstepQueue::file(Group g)
+{
+  if (has_front_ && less(g.key, front_.key))
+    std::swap(g, front_); // the old front goes to the heap
+  else if (!has_front_ && (groups_.empty() || less(g.key, groups_.front().key)))
+  {
+    front_ = g;
+    has_front_ = true;
+    return;
+  }
+  groups_.push_back(g);
+  std::push_heap(groups_.begin(), groups_.end(), Later());
+}
+
 bool SuperstepQueue::pop(const SuperstepKey& k, std::size_t& begin, std::size_t& end)
 {
-  if (groups_.empty())
+  const Group* top = has_front_ ? &front_ : (groups_.empty() ? nullptr : &groups_.front());
+  if (!top || top->key[0] != k[0] || top->key[1] != k[1] || top->key[2] != k[2])
     return false;
-  const SuperstepKey& top = groups_.front().key;
-  if (top[0] != k[0] || top[1] != k[1] || top[2] != k[2])
-    return false;
-  begin = groups_.front().begin;
-  end = groups_.front().end;
-  std::pop_heap(groups_.begin(), groups_.end(), Later());
-  groups_.pop_back();
+  begin = top->begin;
+  end = top->end;
+  if (has_front_)
+    has_front_ = false;
+  else
+  {
+    std::pop_heap(groups_.begin(), groups_.end(), Later());
+    groups_.pop_back();
+  }
   return true;
 }
 
@@ -183,6 +208,7 @@ void SuperstepQueue::clear()
 {
   pool_.clear();
   pending_.clear();
+  has_front_ = false;
   groups_.clear();
 }
 

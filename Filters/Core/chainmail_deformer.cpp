@@ -26,6 +26,16 @@ std::uint64_t spread3(std::uint64_t x)
   x = (x | x << 2) & 0x1249249249249249ULL;
   return x;
 }
+
+// A hint to start loading a cache line that is needed soon.
+inline void prefetch(const void* p)
+{
+#if defined(__GNUC__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
 } // namespace
 
 bool ChainMailDeformer::bounds(
@@ -340,6 +350,7 @@ void ChainMailDeformer::move(
   index_t i, const Eigen::Vector3d& d, index_t sponsor_slot, const SuperstepRoot& root)
 {
   nodes_[std::size_t(i)].stamp = frame_;
+  prefetch(neighbors_.data() + offsets_[std::size_t(i)]); // end_superstep() reads the row
   slot_[std::size_t(i)] = index_t(moved_rec_.size());
   moved_rec_.push_back({ d, i, sponsor_slot });
   moved_root_.push_back(root);
@@ -366,6 +377,13 @@ void ChainMailDeformer::end_superstep()
   const bool banded = queue_kind_ == QueueKind::fifo_priority;
   auto gid = [&](index_t i)
   { return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)]; };
+  // The neighbours' records, loaded in parallel before the tests below wait for each.
+  for (std::size_t slot = superstep_begin_; slot < moved_rec_.size(); ++slot)
+  {
+    const index_t s = moved_rec_[slot].vertex;
+    for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
+      prefetch(&nodes_[std::size_t(neighbors_[e])]);
+  }
   for (std::size_t slot = superstep_begin_; slot < moved_rec_.size(); ++slot)
   {
     const index_t s = moved_rec_[slot].vertex;

@@ -100,28 +100,35 @@ public:
 // band is the bit pattern of a float in [0, 1] (+0 for -0), whose unsigned order is the
 // numeric order, so pieces with different sets of malleability values agree on it.
 //
-// Cost: a frame of P pushes (P <= the sum of the degrees of the moved vertices) is O(P)
-// time and 8 P bytes in the usual case, O(P log P) at worst; pop is O(log G) for G
-// pending groups. How, for the k entries of one generation (seal):
+// Cost: a frame of P pushes (P <= the sum of the degrees of the moved vertices) filed
+// in S supersteps costs O(P + S log G) time in the usual case, O(P log P + S log G) at
+// worst, for at most G pending groups; memory is 8 P bytes plus the largest generation
+// (72 bytes per entry) plus 32 bytes per pending group. How, for the k entries of one
+// generation (seal):
 //
 // 1. They wait in a scratch buffer reused between generations and frames (its size is
 //    the largest generation, not P).
-// 2. Cheap order: a stable LSD radix sort, 8 bits per pass, on the 64-bit word
+// 2. k <= 16 (most FIFO Priority supersteps move 1-3 vertices): insertion sort on the
+//    full key below. Otherwise a cheap order: a stable LSD radix sort (passes of at
+//    most 11 bits) of the 64-bit word
 //      (order - min order) << b | (c id - min c id),   b = bit width of the c id range,
 //    `order` being any integer non-decreasing in band (the deformer passes the rank of
-//    the malleability among the piece's distinct values); then each run of entries
-//    with equal word (the same candidate) by sponsor id, by insertion (a run is at
-//    most c's degree long). O(k) for a range of ids below 2^(64 - 8 w), w passes; when
+//    the malleability among the piece's distinct values); then each run of one word
+//    (one candidate) by sponsor id, by insertion (a run is at most c's degree long).
+//    O(k) for ids spanning less than 2^(64 - order bits) (two passes below 2^22); when
 //    the word does not fit in 64 bits, a comparison sort on the full key, O(k log k).
-// 3. Check: adjacent entries in full-key order. It holds when, within a band, the
-//    roots are all one root or all the candidates' own (generation, c id), which is
-//    every generation the deformer seals: one superstep's moved vertices share a band
-//    and a root, so an entry's root follows from its band alone (same band: theirs;
-//    lower: its own; higher: the base). Otherwise (a caller mixing sponsors of
-//    different bands or roots in one generation) a comparison sort on the full key
-//    (ties by vertex, sponsor), O(k log k): the order is the full key's either way.
+// 3. Check: adjacent entries in full-key order (band, root, c id, s id, then vertex and
+//    sponsor for duplicated ids). It holds when, within a band, the roots are all one
+//    root or all the candidates' own (generation, c id), which is every generation the
+//    deformer seals: one superstep's moved vertices share a band and a root, so an
+//    entry's root follows from its band alone (same band: theirs; lower: its own;
+//    higher: the base). Otherwise (a caller mixing sponsors of different bands or roots
+//    in one generation, or a wrong `order`) a comparison sort on the full key,
+//    O(k log k): the order is the full key's whatever the path.
 // 4. The sorted (vertex, sponsor) pairs, 8 bytes each, are appended to the pool, one
-//    group per (band, root) filed on a binary heap of groups (40 bytes per group).
+//    group per (band, root). A group lower than all pending ones waits apart (the
+//    next superstep is most often one just filed); the others are on a binary heap,
+//    O(log G) per group filed and popped.
 //
 // The pool holds the whole frame's entries (groups pop in key order, not in filing
 // order); pool, scratch and heap keep their capacity between frames.
@@ -167,7 +174,10 @@ public:
   // Files the entries pushed since the last seal as `generation`.
   void seal(std::uint32_t generation);
   // The lowest pending key, `none` when nothing is pending.
-  SuperstepKey top() const { return groups_.empty() ? none : groups_.front().key; }
+  SuperstepKey top() const
+  {
+    return has_front_ ? front_.key : (groups_.empty() ? none : groups_.front().key);
+  }
   // Removes the group `key` if it is the lowest: its entries are entries()[begin, end),
   // sorted by (candidate id, sponsor id), valid until the next seal.
   bool pop(const SuperstepKey& key, std::size_t& begin, std::size_t& end);
@@ -178,23 +188,22 @@ public:
   {
     return pool_.capacity() * sizeof(Candidate) + pending_.capacity() * sizeof(SuperstepEntry) +
            (words_.capacity() + scratch_.capacity()) * sizeof(Word) +
-           groups_.capacity() * sizeof(Group);
+           count_.capacity() * sizeof(std::uint32_t) + (groups_.capacity() + 1) * sizeof(Group);
   }
 
 private:
   struct Group
   {
     SuperstepKey key;
-    std::size_t begin, end;
+    std::uint32_t begin, end; // in pool_, which holds fewer than 2^32 entries (checked)
   };
+  static bool less(const SuperstepKey& a, const SuperstepKey& b)
+  {
+    return a[0] != b[0] ? a[0] < b[0] : (a[1] != b[1] ? a[1] < b[1] : a[2] < b[2]);
+  }
   struct Later // for the std:: heap functions: the lowest key on top
   {
-    bool operator()(const Group& a, const Group& b) const
-    {
-      return a.key[0] != b.key[0]   ? a.key[0] > b.key[0]
-             : a.key[1] != b.key[1] ? a.key[1] > b.key[1]
-                                    : a.key[2] > b.key[2];
-    }
+    bool operator()(const Group& a, const Group& b) const { return less(b.key, a.key); }
   };
   struct Word // the cheap sort key of pending_[index]
   {
@@ -204,10 +213,16 @@ private:
   static constexpr std::size_t small = 16; // generations sorted on the full key by insertion
   bool sort_cheaply();
   void sort_fully();
+  void file(Group g);
   std::vector<Candidate> pool_;
   std::vector<SuperstepEntry> pending_; // the generation being pushed
   std::vector<Word> words_, scratch_;   // its sort order
-  std::vector<Group> groups_;           // a heap on Later
+  std::vector<std::uint32_t> count_;    // radix counters
+  // The lowest group apart when it is lower than the heap's top (the next superstep is
+  // most often one just filed): filing and popping it skip the heap.
+  Group front_{};
+  bool has_front_ = false;
+  std::vector<Group> groups_; // the other groups: a heap on Later
 };
 
 // Enhanced ChainMail order: the candidate whose rest position lies farthest outside its
