@@ -148,6 +148,9 @@ void SuperstepQueue::seal(std::uint32_t generation)
 {
   if (pending_.empty())
     return;
+  if (generation <= sealed_generation_)
+    throw std::invalid_argument("SuperstepQueue: generations must be sealed in increasing order");
+  sealed_generation_ = generation;
   if (pending_.size() <= small || !sort_cheaply())
     sort_fully();
   const std::size_t k = pending_.size();
@@ -173,34 +176,72 @@ void SuperstepQueue::seal(std::uint32_t generation)
   pending_.clear();
 }
 
-void SuperstepQueue::file(Group g)
+void SuperstepQueue::file(const Group& g)
 {
-  if (has_front_ && less(g.key, front_.key))
-    std::swap(g, front_); // the old front goes to the heap
-  else if (!has_front_ && (groups_.empty() || less(g.key, groups_.front().key)))
+  const ChainKey ck{ g.key[0], g.key[1] };
+  std::uint32_t c = last_;
+  if (c == nil || !(chains_[c].key == ck))
   {
-    front_ = g;
-    has_front_ = true;
-    return;
+    const auto found = chain_of_.find(ck);
+    if (found != chain_of_.end())
+      c = found->second;
+    else
+    {
+      c = std::uint32_t(chains_.size());
+      chains_.push_back({ ck, nil, nil, false });
+      chain_of_.emplace(ck, c);
+    }
   }
-  groups_.push_back(g);
-  std::push_heap(groups_.begin(), groups_.end(), Later());
+  std::uint32_t slot;
+  if (free_.empty())
+  {
+    slot = std::uint32_t(groups_.size());
+    groups_.push_back(g);
+  }
+  else
+  {
+    slot = free_.back();
+    free_.pop_back();
+    groups_[slot] = g;
+  }
+  groups_[slot].next = nil;
+  Chain& chain = chains_[c];
+  (chain.head == nil ? chain.head : groups_[chain.tail].next) = slot;
+  chain.tail = slot;
+  if (!chain.in_heap)
+  {
+    chain.in_heap = true;
+    heap_.push_back(c);
+    std::push_heap(heap_.begin(), heap_.end(), Later{ &chains_ });
+  }
+  last_ = c;
+}
+
+void SuperstepQueue::drop_done_chains() const
+{
+  while (!heap_.empty() && chains_[heap_.front()].head == nil)
+  {
+    chains_[heap_.front()].in_heap = false;
+    std::pop_heap(heap_.begin(), heap_.end(), Later{ &chains_ });
+    heap_.pop_back();
+  }
 }
 
 bool SuperstepQueue::pop(const SuperstepKey& k, std::size_t& begin, std::size_t& end)
 {
-  const Group* top = has_front_ ? &front_ : (groups_.empty() ? nullptr : &groups_.front());
-  if (!top || top->key[0] != k[0] || top->key[1] != k[1] || top->key[2] != k[2])
+  drop_done_chains();
+  if (heap_.empty())
     return false;
-  begin = top->begin;
-  end = top->end;
-  if (has_front_)
-    has_front_ = false;
-  else
-  {
-    std::pop_heap(groups_.begin(), groups_.end(), Later());
-    groups_.pop_back();
-  }
+  const std::uint32_t c = heap_.front();
+  Chain& chain = chains_[c];
+  const Group& g = groups_[chain.head];
+  if (g.key[0] != k[0] || g.key[1] != k[1] || g.key[2] != k[2])
+    return false;
+  begin = g.begin;
+  end = g.end;
+  free_.push_back(chain.head);
+  chain.head = g.next;
+  last_ = c;
   return true;
 }
 
@@ -208,8 +249,13 @@ void SuperstepQueue::clear()
 {
   pool_.clear();
   pending_.clear();
-  has_front_ = false;
   groups_.clear();
+  free_.clear();
+  chains_.clear();
+  heap_.clear();
+  chain_of_.clear();
+  last_ = nil;
+  sealed_generation_ = 0;
 }
 
 } // namespace geoshaping

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <queue>
+#include <unordered_map>
 #include <vector>
 
 namespace geoshaping
@@ -171,12 +172,15 @@ public:
     return { std::uint32_t(k[0]), std::int64_t(k[1] ^ (std::uint64_t(1) << 63)) };
   }
   void push(const SuperstepEntry& e) { pending_.push_back(e); }
-  // Files the entries pushed since the last seal as `generation`.
+  // Files the entries pushed since the last seal as `generation`, which must exceed the
+  // previous seal's since clear() (std::invalid_argument otherwise).
   void seal(std::uint32_t generation);
-  // The lowest pending key, `none` when nothing is pending.
+  // The lowest pending key, `none` when nothing is pending (drops finished chains: not
+  // safe to call from two threads at once).
   SuperstepKey top() const
   {
-    return has_front_ ? front_.key : (groups_.empty() ? none : groups_.front().key);
+    drop_done_chains();
+    return heap_.empty() ? none : groups_[chains_[heap_.front()].head].key;
   }
   // Removes the group `key` if it is the lowest: its entries are entries()[begin, end),
   // sorted by (candidate id, sponsor id), valid until the next seal.
@@ -188,22 +192,55 @@ public:
   {
     return pool_.capacity() * sizeof(Candidate) + pending_.capacity() * sizeof(SuperstepEntry) +
            (words_.capacity() + scratch_.capacity()) * sizeof(Word) +
-           count_.capacity() * sizeof(std::uint32_t) + (groups_.capacity() + 1) * sizeof(Group);
+           count_.capacity() * sizeof(std::uint32_t) + groups_.capacity() * sizeof(Group) +
+           free_.capacity() * sizeof(std::uint32_t) + chains_.capacity() * sizeof(Chain) +
+           heap_.capacity() * sizeof(std::uint32_t) +
+           chain_of_.size() * (sizeof(ChainKey) + 2 * sizeof(void*) + sizeof(std::uint32_t)) +
+           chain_of_.bucket_count() * sizeof(void*);
   }
 
 private:
+  static constexpr std::uint32_t nil = ~std::uint32_t(0);
   struct Group
   {
     SuperstepKey key;
     std::uint32_t begin, end; // in pool_, which holds fewer than 2^32 entries (checked)
+    std::uint32_t next;       // the chain's next group, nil at its tail
   };
-  static bool less(const SuperstepKey& a, const SuperstepKey& b)
+  // The groups of one (band, root) in filing order, which is their key order: a seal's
+  // generation exceeds every earlier one. Chains differ in (band, root), so their order
+  // does not change as they pop: a binary heap of chains on (band, root).
+  struct ChainKey
   {
-    return a[0] != b[0] ? a[0] < b[0] : (a[1] != b[1] ? a[1] < b[1] : a[2] < b[2]);
-  }
-  struct Later // for the std:: heap functions: the lowest key on top
+    std::uint64_t band_generation, gid; // key()'s first two words
+    bool operator==(const ChainKey& o) const
+    {
+      return band_generation == o.band_generation && gid == o.gid;
+    }
+  };
+  struct ChainHash
   {
-    bool operator()(const Group& a, const Group& b) const { return less(b.key, a.key); }
+    std::size_t operator()(const ChainKey& k) const
+    {
+      return std::size_t((k.band_generation * 0x9e3779b97f4a7c15ULL) ^ k.gid);
+    }
+  };
+  struct Chain
+  {
+    ChainKey key;
+    std::uint32_t head, tail; // in groups_; head nil: no pending group
+    bool in_heap;
+  };
+  struct Later // for the std:: heap functions on chain ids: the lowest (band, root) on top
+  {
+    const std::vector<Chain>* chains;
+    bool operator()(std::uint32_t a, std::uint32_t b) const
+    {
+      const ChainKey& x = (*chains)[a].key;
+      const ChainKey& y = (*chains)[b].key;
+      return x.band_generation != y.band_generation ? x.band_generation > y.band_generation
+                                                    : x.gid > y.gid;
+    }
   };
   struct Word // the cheap sort key of pending_[index]
   {
@@ -213,16 +250,21 @@ private:
   static constexpr std::size_t small = 16; // generations sorted on the full key by insertion
   bool sort_cheaply();
   void sort_fully();
-  void file(Group g);
+  void file(const Group& g);
+  // A chain whose last group popped stays on the heap until it is found on top with
+  // none filed meanwhile: the next superstep most often refills it (same band and root).
+  void drop_done_chains() const;
   std::vector<Candidate> pool_;
-  std::vector<SuperstepEntry> pending_; // the generation being pushed
-  std::vector<Word> words_, scratch_;   // its sort order
-  std::vector<std::uint32_t> count_;    // radix counters
-  // The lowest group apart when it is lower than the heap's top (the next superstep is
-  // most often one just filed): filing and popping it skip the heap.
-  Group front_{};
-  bool has_front_ = false;
-  std::vector<Group> groups_; // the other groups: a heap on Later
+  std::vector<SuperstepEntry> pending_;     // the generation being pushed
+  std::vector<Word> words_, scratch_;       // its sort order
+  std::vector<std::uint32_t> count_;        // radix counters
+  std::vector<Group> groups_;               // pending groups and free slots
+  std::vector<std::uint32_t> free_;         // free slots of groups_
+  mutable std::vector<Chain> chains_;       // by chain id, the frame's (band, root)s
+  mutable std::vector<std::uint32_t> heap_; // chains with pending groups, a heap on Later
+  std::unordered_map<ChainKey, std::uint32_t, ChainHash> chain_of_; // chains_ by key
+  std::uint32_t last_ = nil; // the chain popped or filed to last (most often the next)
+  std::uint32_t sealed_generation_ = 0;
 };
 
 // Enhanced ChainMail order: the candidate whose rest position lies farthest outside its
