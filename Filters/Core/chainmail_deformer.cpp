@@ -350,7 +350,10 @@ void ChainMailDeformer::move(
   index_t i, const Eigen::Vector3d& d, index_t sponsor_slot, const SuperstepRoot& root)
 {
   nodes_[std::size_t(i)].stamp = frame_;
-  prefetch(neighbors_.data() + offsets_[std::size_t(i)]); // end_superstep() reads the row
+  // end_superstep() tests the neighbours: start loading their records (the row was
+  // prefetched when i was queued).
+  for (std::uint32_t e = offsets_[std::size_t(i)]; e < offsets_[std::size_t(i) + 1]; ++e)
+    prefetch(&nodes_[std::size_t(neighbors_[e])]);
   slot_[std::size_t(i)] = index_t(moved_rec_.size());
   moved_rec_.push_back({ d, i, sponsor_slot });
   moved_root_.push_back(root);
@@ -377,13 +380,6 @@ void ChainMailDeformer::end_superstep()
   const bool banded = queue_kind_ == QueueKind::fifo_priority;
   auto gid = [&](index_t i)
   { return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)]; };
-  // The neighbours' records, loaded in parallel before the tests below wait for each.
-  for (std::size_t slot = superstep_begin_; slot < moved_rec_.size(); ++slot)
-  {
-    const index_t s = moved_rec_[slot].vertex;
-    for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
-      prefetch(&nodes_[std::size_t(neighbors_[e])]);
-  }
   for (std::size_t slot = superstep_begin_; slot < moved_rec_.size(); ++slot)
   {
     const index_t s = moved_rec_[slot].vertex;
@@ -404,7 +400,8 @@ void ChainMailDeformer::end_superstep()
       const SuperstepRoot root = c_band < s_band    ? SuperstepRoot{ superstep_ + 1, c_gid }
                                  : c_band == s_band ? moved_root_[slot]
                                                     : SuperstepRoot{};
-      supersteps_.push({ c_gid, s_gid, root, c_band, std::uint32_t(c_rank), c, index_t(slot) });
+      supersteps_.push(c_gid, s_gid, root, c_band, std::uint32_t(c_rank), c, index_t(slot));
+      prefetch(neighbors_.data() + offsets_[std::size_t(c)]); // read by move() if c moves
     }
   }
   supersteps_.seal(superstep_ + 1);

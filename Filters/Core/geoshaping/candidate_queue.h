@@ -172,6 +172,19 @@ public:
     return { std::uint32_t(k[0]), std::int64_t(k[1] ^ (std::uint64_t(1) << 63)) };
   }
   void push(const SuperstepEntry& e) { pending_.push_back(e); }
+  // The same, written in place (no entry copied through the stack).
+  void push(std::int64_t candidate_gid, std::int64_t sponsor_gid, const SuperstepRoot& root,
+    std::uint32_t band, std::uint32_t order, index_t vertex, index_t sponsor)
+  {
+    SuperstepEntry& e = pending_.emplace_back();
+    e.candidate_gid = candidate_gid;
+    e.sponsor_gid = sponsor_gid;
+    e.root = root;
+    e.band = band;
+    e.order = order;
+    e.vertex = vertex;
+    e.sponsor = sponsor;
+  }
   // Files the entries pushed since the last seal as `generation`, which must exceed the
   // previous seal's since clear() (std::invalid_argument otherwise).
   void seal(std::uint32_t generation);
