@@ -50,6 +50,14 @@ inline bool before(const SuperstepEntry& a, const SuperstepEntry& b)
                           b.sponsor_gid, b.vertex, b.sponsor);
 }
 
+// Sizes a scratch buffer to at least n (its tail beyond n is left as it is).
+template<class T>
+void grow(std::vector<T>& v, std::size_t n)
+{
+  if (v.size() < n)
+    v.resize(n);
+}
+
 int bit_width(std::uint64_t x)
 {
   int n = 0;
@@ -77,7 +85,7 @@ bool SuperstepQueue::sort_cheaply()
   const int bits = id_bits + bit_width(max_order - min_order);
   if (bits > 64)
     return false;
-  words_.resize(k);
+  grow(words_, k);
   for (std::size_t i = 0; i < k; ++i)
   {
     const SuperstepEntry& e = pending_[i];
@@ -99,20 +107,20 @@ bool SuperstepQueue::sort_cheaply()
     const int passes = (bits + 10) / 11;
     const int width = passes ? (bits + passes - 1) / passes : 0;
     const std::uint64_t mask = (std::uint64_t(1) << width) - 1;
-    scratch_.resize(k);
+    grow(scratch_, k);
     count_.resize(std::size_t(1) << width);
     for (int shift = 0; shift < bits; shift += width)
     {
       std::fill(count_.begin(), count_.end(), 0);
-      for (const Word& w : words_)
-        ++count_[(w.key >> shift) & mask];
+      for (std::size_t i = 0; i < k; ++i)
+        ++count_[(words_[i].key >> shift) & mask];
       if (count_[(words_[0].key >> shift) & mask] == k)
         continue;
       std::uint32_t sum = 0;
       for (std::uint32_t& c : count_)
         sum += std::exchange(c, sum);
-      for (const Word& w : words_)
-        scratch_[count_[(w.key >> shift) & mask]++] = w;
+      for (std::size_t i = 0; i < k; ++i)
+        scratch_[count_[(words_[i].key >> shift) & mask]++] = words_[i];
       words_.swap(scratch_);
     }
   }
@@ -131,17 +139,18 @@ bool SuperstepQueue::sort_cheaply()
 
 void SuperstepQueue::sort_fully()
 {
-  words_.resize(pending_.size());
-  for (std::size_t i = 0; i < pending_.size(); ++i)
+  const std::size_t k = pending_.size();
+  grow(words_, k);
+  for (std::size_t i = 0; i < k; ++i)
     words_[i] = { 0, std::uint32_t(i) };
   auto less = [&](const Word& a, const Word& b)
   { return before(pending_[a.index], pending_[b.index]); };
-  if (words_.size() <= small)
-    for (std::size_t i = 1; i < words_.size(); ++i)
+  if (k <= small)
+    for (std::size_t i = 1; i < k; ++i)
       for (std::size_t j = i; j > 0 && less(words_[j], words_[j - 1]); --j)
         std::swap(words_[j], words_[j - 1]);
   else
-    std::sort(words_.begin(), words_.end(), less);
+    std::sort(words_.begin(), words_.begin() + std::ptrdiff_t(k), less);
 }
 
 void SuperstepQueue::seal(std::uint32_t generation)
