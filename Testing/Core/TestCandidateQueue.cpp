@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <stdexcept>
 #include <tuple>
 
 using namespace geoshaping;
@@ -60,6 +61,11 @@ TEST(CandidateQueue, SuperstepsComeByBandRootAndGenerationEachSortedByIds)
   EXPECT_EQ(SuperstepQueue::root_of(SuperstepQueue::key(3, negative, 4)).gid, -12);
   q.clear();
   EXPECT_EQ(q.top(), SuperstepQueue::none);
+  // Chains rely on generations growing: a seal that does not is refused.
+  q.push({ 1, 2, base, 0, 0, 1, 2 });
+  q.seal(5);
+  q.push({ 3, 2, base, 0, 0, 3, 2 });
+  EXPECT_THROW(q.seal(5), std::invalid_argument);
 }
 
 // The queue sorts a generation by a cheap 64-bit word (order hint, candidate id), radix

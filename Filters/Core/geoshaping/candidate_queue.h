@@ -102,10 +102,10 @@ public:
 // numeric order, so pieces with different sets of malleability values agree on it.
 //
 // Cost: a frame of P pushes (P <= the sum of the degrees of the moved vertices) filed
-// in S supersteps costs O(P + S log G) time in the usual case, O(P log P + S log G) at
-// worst, for at most G pending groups; memory is 8 P bytes plus the largest generation
-// (72 bytes per entry) plus 32 bytes per pending group. How, for the k entries of one
-// generation (seal):
+// in S supersteps with R distinct (band, root)s costs O(P + S + R log R) time in the
+// usual case, O(P log P + S + R log R) at worst; memory is 8 P bytes, plus 80 bytes per
+// entry of the largest generation (scratch), plus 40 bytes per pending group and ~60
+// per (band, root). How, for the k entries of one generation (seal):
 //
 // 1. They wait in a scratch buffer reused between generations and frames (its size is
 //    the largest generation, not P).
@@ -127,9 +127,11 @@ public:
 //    in one generation, or a wrong `order`) a comparison sort on the full key,
 //    O(k log k): the order is the full key's whatever the path.
 // 4. The sorted (vertex, sponsor) pairs, 8 bytes each, are appended to the pool, one
-//    group per (band, root). A group lower than all pending ones waits apart (the
-//    next superstep is most often one just filed); the others are on a binary heap,
-//    O(log G) per group filed and popped.
+//    group per (band, root). Groups are chained per (band, root) in filing order, which
+//    is their key order since generations only grow; a binary heap holds the chains,
+//    whose order is their (band, root) and never changes. A superstep continuing its
+//    own chain (the common case) pops and files without heap work; a new (band, root)
+//    costs a hash-map insert and O(log C) for C chains with pending groups.
 //
 // The pool holds the whole frame's entries (groups pop in key order, not in filing
 // order); pool, scratch and heap keep their capacity between frames.
