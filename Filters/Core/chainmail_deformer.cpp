@@ -26,6 +26,16 @@ std::uint64_t spread3(std::uint64_t x)
   x = (x | x << 2) & 0x1249249249249249ULL;
   return x;
 }
+
+// A hint to start loading a cache line that is needed soon.
+inline void prefetch(const void* p)
+{
+#if defined(__GNUC__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
 } // namespace
 
 bool ChainMailDeformer::bounds(
@@ -207,9 +217,7 @@ void ChainMailDeformer::rebuild_rank_params()
     // The value's bits: for floats >= +0 their unsigned order is the numeric order.
     const float value = distinct_[r] == 0.0f ? 0.0f : distinct_[r];
     std::memcpy(&rank_band_[r], &value, sizeof value);
-    // The same arithmetic as displacement_bounds() on transfer_(m).
-    const ChainMailParams p = transfer_(distinct_[r]);
-    rank_params_[r] = { p.stretch - 1.0, p.compression - 1.0, p.shear };
+    rank_params_[r] = region_params(transfer_(distinct_[r]));
   }
 }
 
@@ -342,6 +350,10 @@ void ChainMailDeformer::move(
   index_t i, const Eigen::Vector3d& d, index_t sponsor_slot, const SuperstepRoot& root)
 {
   nodes_[std::size_t(i)].stamp = frame_;
+  // end_superstep() tests the neighbours: start loading their records (the row was
+  // prefetched when i was queued).
+  for (std::uint32_t e = offsets_[std::size_t(i)]; e < offsets_[std::size_t(i) + 1]; ++e)
+    prefetch(&nodes_[std::size_t(neighbors_[e])]);
   slot_[std::size_t(i)] = index_t(moved_rec_.size());
   moved_rec_.push_back({ d, i, sponsor_slot });
   moved_root_.push_back(root);
@@ -366,28 +378,30 @@ std::size_t ChainMailDeformer::superstep(const SuperstepKey& key)
 void ChainMailDeformer::end_superstep()
 {
   const bool banded = queue_kind_ == QueueKind::fifo_priority;
-  auto band = [&](index_t i)
-  { return banded ? rank_band_[std::size_t(nodes_[std::size_t(i)].rank)] : 0u; };
   auto gid = [&](index_t i)
   { return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)]; };
   for (std::size_t slot = superstep_begin_; slot < moved_rec_.size(); ++slot)
   {
     const index_t s = moved_rec_[slot].vertex;
-    const std::uint32_t s_band = band(s);
+    const index_t s_rank = banded ? nodes_[std::size_t(s)].rank : 0;
+    const std::uint32_t s_band = banded ? rank_band_[std::size_t(s_rank)] : 0u;
+    const std::int64_t s_gid = gid(s);
     for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
     {
       const index_t c = neighbors_[e];
-      if (nodes_[std::size_t(c)].stamp == frame_ ||
-          (!pinned_inner_.empty() && pinned_inner_[std::size_t(c)]) ||
+      const Node& node = nodes_[std::size_t(c)];
+      if (node.stamp == frame_ || (!pinned_inner_.empty() && pinned_inner_[std::size_t(c)]) ||
           (!ghost_.empty() && ghost_[std::size_t(c)]))
         continue;
-      const std::uint32_t c_band = band(c);
+      const index_t c_rank = banded ? node.rank : 0;
+      const std::uint32_t c_band = banded ? rank_band_[std::size_t(c_rank)] : 0u;
       const std::int64_t c_gid = gid(c);
       // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base.
       const SuperstepRoot root = c_band < s_band    ? SuperstepRoot{ superstep_ + 1, c_gid }
                                  : c_band == s_band ? moved_root_[slot]
                                                     : SuperstepRoot{};
-      supersteps_.push({ c_gid, gid(s), root, c_band, c, index_t(slot) });
+      supersteps_.push(c_gid, s_gid, root, c_band, std::uint32_t(c_rank), c, index_t(slot));
+      prefetch(neighbors_.data() + offsets_[std::size_t(c)]); // read by move() if c moves
     }
   }
   supersteps_.seal(superstep_ + 1);
@@ -395,62 +409,26 @@ void ChainMailDeformer::end_superstep()
   ++superstep_;
 }
 
-namespace
-{
-// displacement_bounds() (valid_region.h) with the transfer function's values evaluated
-// once per malleability rank: the same operations in the same order, so bit-identical.
-template<class Params>
-inline void box_bounds(
-  const Eigen::Vector3d& o, const Params& p, Eigen::Vector3d& lo_out, Eigen::Vector3d& hi_out)
-{
-  const Eigen::Vector3d a = o.cwiseAbs();
-  const Eigen::Vector3d s(a.y() + a.z(), a.x() + a.z(), a.x() + a.y());
-  for (int i = 0; i < 3; ++i)
-  {
-    const double near = p.compression1 * o[i];
-    const double far = p.stretch1 * o[i];
-    const double lo = o[i] >= 0.0 ? near : far;
-    const double hi = o[i] >= 0.0 ? far : near;
-    lo_out[i] = lo - p.shear * s[i];
-    hi_out[i] = hi + p.shear * s[i];
-  }
-}
-} // namespace
-
 template<ValidRegionFrame Frame>
 Eigen::Vector3d ChainMailDeformer::required_displacement(
-  const Node& c, const Node& s, const Eigen::Vector3d& su) const
+  const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const
 {
-  // The nearest point of the region to c's rest position. Axes: in displacements
-  // u[s] + [lo - o, hi - o] (valid_region.h). Link: u[s] + the projection of -u[s] onto
-  // the cylinder, exactly u[s] when c is rigid (required_displacement() in
-  // valid_region.h, with the per-rank parameters).
+  // The nearest point of c's valid region w.r.t. s to c's rest position
+  // (required_displacement() in valid_region.h, on the per-rank parameters).
   const Eigen::Vector3d o = c.rest - s.rest;
   if (!o.allFinite())
     return Eigen::Vector3d::Zero();
-  const RankParams& p = rank_params_[std::size_t(c.rank)];
-  if constexpr (Frame == ValidRegionFrame::link)
-  {
-    if (p.stretch1 == 0.0 && p.compression1 == 0.0 && p.shear == 0.0)
-      return su;
-    return su + link_displacement_projection(o, p.stretch1, p.compression1, p.shear, -su);
-  }
-  else
-  {
-    Eigen::Vector3d lo, hi;
-    box_bounds(o, p, lo, hi);
-    return Eigen::Vector3d::Zero().cwiseMax(su + lo).cwiseMin(su + hi);
-  }
+  return geoshaping::required_displacement<Frame>(o, rank_params_[std::size_t(c.rank)], sponsor_u);
 }
 
 template<ValidRegionFrame Frame>
 std::size_t ChainMailDeformer::examine(
   std::size_t begin, std::size_t end, const SuperstepRoot& root)
 {
-  const SuperstepEntry* const entries = supersteps_.entries();
+  const Candidate* const entries = supersteps_.entries();
   for (std::size_t k = begin; k < end; ++k)
   {
-    const SuperstepEntry& e = entries[k];
+    const Candidate& e = entries[k];
     const Node& c = nodes_[std::size_t(e.vertex)];
     if (c.stamp == frame_) // moved by an earlier entry (a sponsor of lower id) or superstep
       continue;
@@ -562,7 +540,7 @@ std::size_t ChainMailDeformer::caller_adjacency_bytes() const
 std::size_t ChainMailDeformer::memory_bytes() const
 {
   return nodes_.capacity() * sizeof(Node) + slot_.capacity() * sizeof(index_t) +
-         distinct_.capacity() * sizeof(float) + rank_params_.capacity() * sizeof(RankParams) +
+         distinct_.capacity() * sizeof(float) + rank_params_.capacity() * sizeof(RegionParams) +
          pinned_.capacity() + pinned_inner_.capacity() +
          committed_.capacity() * sizeof(Eigen::Vector3d) +
          (moved_.capacity() + previously_moved_.capacity()) * sizeof(index_t) +

@@ -232,18 +232,13 @@ private:
     index_t vertex;       // internal id
     index_t sponsor_slot; // slot of the sponsor, -1 for the grasp
   };
-  // Per malleability rank, the transfer function's (t - 1, k - 1, h), evaluated once.
-  struct RankParams
-  {
-    double stretch1, compression1, shear;
-  };
 
   template<ValidRegionFrame Frame>
   std::size_t examine(std::size_t begin, std::size_t end, const SuperstepRoot& root);
-  // Where candidate c must move given sponsor s moved by su (see propagate()).
+  // Where candidate c must move given sponsor s moved by sponsor_u (see propagate()).
   template<ValidRegionFrame Frame>
   Eigen::Vector3d required_displacement(
-    const Node& c, const Node& s, const Eigen::Vector3d& su) const;
+    const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const;
   void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,
     const SuperstepRoot& root = {});
 
@@ -253,13 +248,13 @@ private:
   std::vector<index_t> inner_of_;      // caller id -> internal id
   std::vector<index_t> outer_of_;      // internal id -> caller id
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
-  std::vector<Node> nodes_;     // by internal id
-  std::vector<index_t> slot_;   // by internal id: slot when moved this frame
-  std::vector<float> distinct_; // the sorted distinct malleability values (rank -> value)
-  std::vector<RankParams> rank_params_;
-  std::vector<std::uint32_t> rank_band_; // per rank: the band (SuperstepQueue) of its value
-  std::vector<std::int64_t> gid_;        // by internal id; empty: the caller's ids
-  std::vector<std::uint8_t> ghost_;      // by internal id; empty: all owned
+  std::vector<Node> nodes_;               // by internal id
+  std::vector<index_t> slot_;             // by internal id: slot when moved this frame
+  std::vector<float> distinct_;           // the sorted distinct malleability values (rank -> value)
+  std::vector<RegionParams> rank_params_; // per rank: (t - 1, k - 1, h), evaluated once
+  std::vector<std::uint32_t> rank_band_;  // per rank: the band (SuperstepQueue) of its value
+  std::vector<std::int64_t> gid_;         // by internal id; empty: the caller's ids
+  std::vector<std::uint8_t> ghost_;       // by internal id; empty: all owned
   index_t num_ranks_ = 1;
   std::vector<std::uint8_t> pinned_;       // by caller id; empty when none
   std::vector<std::uint8_t> pinned_inner_; // by internal id; empty when none

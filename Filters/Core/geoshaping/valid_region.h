@@ -48,24 +48,47 @@ struct Box
   Eigen::Vector3d clamp(const Eigen::Vector3d& p) const { return p.cwiseMax(lo).cwiseMin(hi); }
 };
 
+// What the region formulas below use of a candidate's (t, k, h): t - 1, k - 1 and h.
+// The deformer evaluates them once per malleability value (region_params) and passes
+// them to the same functions, so its boxes and projections are these, bit for bit.
+struct RegionParams
+{
+  double stretch_minus_1;     // t - 1
+  double compression_minus_1; // k - 1
+  double shear;               // h
+  // t = k = 1, h = 0: the region is the single point w = 0.
+  bool rigid() const
+  {
+    return stretch_minus_1 == 0.0 && compression_minus_1 == 0.0 && shear == 0.0;
+  }
+};
+
+inline RegionParams region_params(const ChainMailParams& p)
+{
+  return { p.stretch - 1.0, p.compression - 1.0, p.shear };
+}
+
 // Box for the displacement of the candidate relative to the sponsor's displacement.
-inline Box displacement_bounds(const Eigen::Vector3d& o, const ChainMailParams& p)
+inline Box displacement_bounds(const Eigen::Vector3d& o, const RegionParams& p)
 {
   const Eigen::Vector3d a = o.cwiseAbs();
   const Eigen::Vector3d s(a.y() + a.z(), a.x() + a.z(), a.x() + a.y());
-  const double t1 = p.stretch - 1.0;
-  const double k1 = p.compression - 1.0;
   Box b;
   for (int i = 0; i < 3; ++i)
   {
-    const double near = k1 * o[i]; // toward the sponsor (compression)
-    const double far = t1 * o[i];  // away from the sponsor (stretch)
+    const double near = p.compression_minus_1 * o[i]; // toward the sponsor (compression)
+    const double far = p.stretch_minus_1 * o[i];      // away from the sponsor (stretch)
     const double lo = o[i] >= 0.0 ? near : far;
     const double hi = o[i] >= 0.0 ? far : near;
     b.lo[i] = lo - p.shear * s[i];
     b.hi[i] = hi + p.shear * s[i];
   }
   return b;
+}
+
+inline Box displacement_bounds(const Eigen::Vector3d& o, const ChainMailParams& p)
+{
+  return displacement_bounds(o, region_params(p));
 }
 
 // The box of DESIGN.md section 4 in positions: x[s] + [lo, hi].
@@ -119,18 +142,18 @@ inline Box valid_region(
 // w' = 0 is returned exactly (computing l e would not give back o in floating point), so
 // u[c] == u[s] bit for bit: rigid regions translate exactly, as with the box.
 //
-// `t1`, `k1` are t - 1 and k - 1; `o` must be finite.
+// `o` must be finite.
 inline Eigen::Vector3d link_displacement_projection(
-  const Eigen::Vector3d& o, double t1, double k1, double h, const Eigen::Vector3d& w)
+  const Eigen::Vector3d& o, double t_minus_1, double k_minus_1, double h, const Eigen::Vector3d& w)
 {
   const double l = o.norm();
-  if ((t1 == 0.0 && k1 == 0.0 && h == 0.0) || l == 0.0)
+  if ((t_minus_1 == 0.0 && k_minus_1 == 0.0 && h == 0.0) || l == 0.0)
     return Eigen::Vector3d::Zero();
   const Eigen::Vector3d e = o / l;
   const double a = w.dot(e);
   const Eigen::Vector3d p = w - a * e;
   const double r2 = p.squaredNorm();
-  const double lo = k1 * l, hi = t1 * l, radius = h * l;
+  const double lo = k_minus_1 * l, hi = t_minus_1 * l, radius = h * l;
   const double tau = 16.0 * std::numeric_limits<double>::epsilon() * (w.cwiseAbs().sum() + l);
   if (a >= lo - tau && a <= hi + tau && r2 <= (radius + tau) * (radius + tau))
     return w;
@@ -142,26 +165,46 @@ inline Eigen::Vector3d link_displacement_projection(
 inline Eigen::Vector3d link_displacement_projection(
   const Eigen::Vector3d& o, const ChainMailParams& p, const Eigen::Vector3d& w)
 {
-  return link_displacement_projection(o, p.stretch - 1.0, p.compression - 1.0, p.shear, w);
+  const RegionParams r = region_params(p);
+  return link_displacement_projection(o, r.stretch_minus_1, r.compression_minus_1, r.shear, w);
 }
 
 // Where the candidate c must move given its sponsor s, in displacements, for either
 // frame: the point of the valid region nearest to c's rest position (u[c] = 0), i.e.
 // u[s] + the projection of -u[s]. Axes: clamp(0, u[s] + lo - o, u[s] + hi - o)
 // per axis (the box above); Link: u[s] + link_displacement_projection(o, -u[s]), and
-// exactly u[s] for a rigid vertex. The deformer computes the same with its per-rank
-// parameters.
-inline Eigen::Vector3d required_displacement(ValidRegionFrame frame, const Eigen::Vector3d& o,
-  const ChainMailParams& p, const Eigen::Vector3d& sponsor_u)
+// exactly u[s] for a rigid vertex. The frame as a template argument is the deformer's
+// hot path (with its per-rank parameters); the other overloads are the same code.
+template<ValidRegionFrame Frame>
+inline Eigen::Vector3d required_displacement(
+  const Eigen::Vector3d& o, const RegionParams& p, const Eigen::Vector3d& sponsor_u)
 {
-  if (frame == ValidRegionFrame::axes)
+  if constexpr (Frame == ValidRegionFrame::axes)
   {
     const Box b = displacement_bounds(o, p);
     return Eigen::Vector3d::Zero().cwiseMax(sponsor_u + b.lo).cwiseMin(sponsor_u + b.hi);
   }
-  if (p.stretch == 1.0 && p.compression == 1.0 && p.shear == 0.0)
-    return sponsor_u;
-  return sponsor_u + link_displacement_projection(o, p, -sponsor_u);
+  else
+  {
+    if (p.rigid())
+      return sponsor_u;
+    return sponsor_u + link_displacement_projection(
+                         o, p.stretch_minus_1, p.compression_minus_1, p.shear, -sponsor_u);
+  }
+}
+
+inline Eigen::Vector3d required_displacement(ValidRegionFrame frame, const Eigen::Vector3d& o,
+  const RegionParams& p, const Eigen::Vector3d& sponsor_u)
+{
+  return frame == ValidRegionFrame::axes
+           ? required_displacement<ValidRegionFrame::axes>(o, p, sponsor_u)
+           : required_displacement<ValidRegionFrame::link>(o, p, sponsor_u);
+}
+
+inline Eigen::Vector3d required_displacement(ValidRegionFrame frame, const Eigen::Vector3d& o,
+  const ChainMailParams& p, const Eigen::Vector3d& sponsor_u)
+{
+  return required_displacement(frame, o, region_params(p), sponsor_u);
 }
 
 // Distance from a displacement difference w = u[c] - u[s] to c's valid region w.r.t. s
