@@ -16,9 +16,9 @@
 namespace
 {
 // geoshaping::Exchange over a vtkMultiProcessController: collectives by AllGather, the
-// moved frontier by Send/Receive to neighbour processes only, in an order every pair of
-// processes agrees on (pairs in increasing (lower, higher) order, the lower sends
-// first), so blocking sends cannot deadlock.
+// moved frontier by Send/Receive to neighbour processes only (all_to_all, at setup, to
+// every process), in an order every pair of processes agrees on (pairs in increasing
+// (lower, higher) order, the lower sends first), so blocking sends cannot deadlock.
 class ControllerExchange : public geoshaping::Exchange
 {
 public:
@@ -63,7 +63,6 @@ public:
     const std::vector<std::vector<geoshaping::MovedVertex>>& out,
     const std::vector<int>& from) override
   {
-    const int me = this->piece();
     std::vector<std::vector<geoshaping::MovedVertex>> in(from.size());
     std::vector<int> peers(to);
     peers.insert(peers.end(), from.begin(), from.end());
@@ -73,40 +72,11 @@ public:
     {
       const auto t = std::find(to.begin(), to.end(), q);
       const auto f = std::find(from.begin(), from.end(), q);
-      auto send = [&]
-      {
-        if (t == to.end())
-          return;
-        const auto& box = out[std::size_t(t - to.begin())];
-        const vtkIdType count = vtkIdType(box.size());
-        this->Controller->Send(&count, 1, q, Tag);
-        if (count > 0)
-          this->Controller->Send(reinterpret_cast<const char*>(box.data()),
-            count * vtkIdType(sizeof(geoshaping::MovedVertex)), q, Tag + 1);
-        this->bytes_sent_ += box.size() * sizeof(geoshaping::MovedVertex);
-      };
-      auto receive = [&]
-      {
-        if (f == from.end())
-          return;
-        auto& box = in[std::size_t(f - from.begin())];
-        vtkIdType count = 0;
-        this->Controller->Receive(&count, 1, q, Tag);
-        box.resize(std::size_t(count));
-        if (count > 0)
-          this->Controller->Receive(reinterpret_cast<char*>(box.data()),
-            count * vtkIdType(sizeof(geoshaping::MovedVertex)), q, Tag + 1);
-      };
-      if (me < q)
-      {
-        send();
-        receive();
-      }
-      else
-      {
-        receive();
-        send();
-      }
+      this->Pair(q, t == to.end() ? nullptr : &out[std::size_t(t - to.begin())],
+        f == from.end() ? nullptr : &in[std::size_t(f - from.begin())], Tag);
+      if (t != to.end())
+        this->bytes_sent_ +=
+          out[std::size_t(t - to.begin())].size() * sizeof(geoshaping::MovedVertex);
     }
     return in;
   }
@@ -118,43 +88,50 @@ public:
     std::vector<std::vector<std::int64_t>> in(out.size());
     in[std::size_t(me)] = out[std::size_t(me)];
     for (int q = 0; q < this->pieces(); ++q)
-    {
-      if (q == me)
-        continue;
-      auto send = [&]
-      {
-        const auto& box = out[std::size_t(q)];
-        const vtkIdType count = vtkIdType(box.size());
-        this->Controller->Send(&count, 1, q, Tag + 2);
-        if (count > 0)
-          this->Controller->Send(reinterpret_cast<const char*>(box.data()),
-            count * vtkIdType(sizeof(std::int64_t)), q, Tag + 3);
-      };
-      auto receive = [&]
-      {
-        auto& box = in[std::size_t(q)];
-        vtkIdType count = 0;
-        this->Controller->Receive(&count, 1, q, Tag + 2);
-        box.resize(std::size_t(count));
-        if (count > 0)
-          this->Controller->Receive(reinterpret_cast<char*>(box.data()),
-            count * vtkIdType(sizeof(std::int64_t)), q, Tag + 3);
-      };
-      if (me < q)
-      {
-        send();
-        receive();
-      }
-      else
-      {
-        receive();
-        send();
-      }
-    }
+      if (q != me)
+        this->Pair(q, &out[std::size_t(q)], &in[std::size_t(q)], Tag + 2);
     return in;
   }
 
 private:
+  // Sends `send` to and receives `receive` from process q (either may be null), the lower
+  // process sending first: a count (tag) then the values as bytes (tag + 1).
+  template<class T>
+  void Pair(int q, const std::vector<T>* send, std::vector<T>* receive, int tag)
+  {
+    auto put = [&]
+    {
+      if (!send)
+        return;
+      const vtkIdType count = vtkIdType(send->size());
+      this->Controller->Send(&count, 1, q, tag);
+      if (count > 0)
+        this->Controller->Send(
+          reinterpret_cast<const char*>(send->data()), count * vtkIdType(sizeof(T)), q, tag + 1);
+    };
+    auto get = [&]
+    {
+      if (!receive)
+        return;
+      vtkIdType count = 0;
+      this->Controller->Receive(&count, 1, q, tag);
+      receive->resize(std::size_t(count));
+      if (count > 0)
+        this->Controller->Receive(
+          reinterpret_cast<char*>(receive->data()), count * vtkIdType(sizeof(T)), q, tag + 1);
+    };
+    if (this->piece() < q)
+    {
+      put();
+      get();
+    }
+    else
+    {
+      get();
+      put();
+    }
+  }
+
   static constexpr int Tag = 914300;
   vtkMultiProcessController* Controller;
 };
