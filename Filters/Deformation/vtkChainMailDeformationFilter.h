@@ -278,6 +278,14 @@ public:
   ///@}
 
   ///@{
+  /// Figures of the last update on data split across processes (docs/mpi.md; 0 in one
+  /// process): bytes of moved frontier sent between processes (all processes' sum) and
+  /// supersteps run.
+  vtkIdType GetNumberOfBytesExchanged() { return this->Statistics.NumberOfBytesExchanged; }
+  vtkIdType GetNumberOfSupersteps() { return this->Statistics.NumberOfSupersteps; }
+  ///@}
+
+  ///@{
   /// Figures of the last refinement pass: sweeps run, vertices it moved off the
   /// ChainMail result, and its time in milliseconds (all 0 without refinement).
   int GetNumberOfRefinementSweeps() { return this->Statistics.NumberOfRefinementSweeps; }
@@ -368,6 +376,8 @@ protected:
     int NumberOfRelaxationSweeps = 0;
     vtkIdType NumberOfRelaxedPoints = 0;
     double LastRelaxationMilliseconds = 0.0;
+    vtkIdType NumberOfBytesExchanged = 0;
+    vtkIdType NumberOfSupersteps = 0;
   };
   FrameStatistics Statistics;
   int NumberOfRebuilds = 0;

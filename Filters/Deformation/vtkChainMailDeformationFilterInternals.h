@@ -109,6 +109,9 @@ struct vtkChainMailDeformationFilter::vtkInternals
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   // The distributed path (more than one process): drives Deformer over this piece.
   std::unique_ptr<geoshaping::PartitionedChainMail> Partition;
+  // Its point GlobalIds when the input has none (geoshaping::coordinate_ids), shown in
+  // the output; null when the input has its own.
+  vtkSmartPointer<vtkIdTypeArray> GeneratedIds;
   // Point GlobalIds of the input, when it has them: global id -> point id.
   std::unordered_map<std::int64_t, geoshaping::index_t> LocalOfGlobal;
   std::set<std::string> Warned; // WarnOnce's messages, cleared when the geometry changes

@@ -8,6 +8,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "geoshaping/coordinate_ids.h"
 #include "geoshaping/partitioned_chainmail.h"
 
 #include <algorithm>
@@ -15,9 +16,9 @@
 namespace
 {
 // geoshaping::Exchange over a vtkMultiProcessController: collectives by AllGather, the
-// moved frontier by Send/Receive to neighbour processes only, in an order every pair of
-// processes agrees on (pairs in increasing (lower, higher) order, the lower sends
-// first), so blocking sends cannot deadlock.
+// moved frontier by Send/Receive to neighbour processes only (all_to_all, at setup, to
+// every process), in an order every pair of processes agrees on (pairs in increasing
+// (lower, higher) order, the lower sends first), so blocking sends cannot deadlock.
 class ControllerExchange : public geoshaping::Exchange
 {
 public:
@@ -62,7 +63,6 @@ public:
     const std::vector<std::vector<geoshaping::MovedVertex>>& out,
     const std::vector<int>& from) override
   {
-    const int me = this->piece();
     std::vector<std::vector<geoshaping::MovedVertex>> in(from.size());
     std::vector<int> peers(to);
     peers.insert(peers.end(), from.begin(), from.end());
@@ -72,45 +72,66 @@ public:
     {
       const auto t = std::find(to.begin(), to.end(), q);
       const auto f = std::find(from.begin(), from.end(), q);
-      auto send = [&]
-      {
-        if (t == to.end())
-          return;
-        const auto& box = out[std::size_t(t - to.begin())];
-        const vtkIdType count = vtkIdType(box.size());
-        this->Controller->Send(&count, 1, q, Tag);
-        if (count > 0)
-          this->Controller->Send(reinterpret_cast<const char*>(box.data()),
-            count * vtkIdType(sizeof(geoshaping::MovedVertex)), q, Tag + 1);
-        this->bytes_sent_ += box.size() * sizeof(geoshaping::MovedVertex);
-      };
-      auto receive = [&]
-      {
-        if (f == from.end())
-          return;
-        auto& box = in[std::size_t(f - from.begin())];
-        vtkIdType count = 0;
-        this->Controller->Receive(&count, 1, q, Tag);
-        box.resize(std::size_t(count));
-        if (count > 0)
-          this->Controller->Receive(reinterpret_cast<char*>(box.data()),
-            count * vtkIdType(sizeof(geoshaping::MovedVertex)), q, Tag + 1);
-      };
-      if (me < q)
-      {
-        send();
-        receive();
-      }
-      else
-      {
-        receive();
-        send();
-      }
+      this->Pair(q, t == to.end() ? nullptr : &out[std::size_t(t - to.begin())],
+        f == from.end() ? nullptr : &in[std::size_t(f - from.begin())], Tag);
+      if (t != to.end())
+        this->bytes_sent_ +=
+          out[std::size_t(t - to.begin())].size() * sizeof(geoshaping::MovedVertex);
     }
     return in;
   }
 
+  std::vector<std::vector<std::int64_t>> all_to_all(
+    const std::vector<std::vector<std::int64_t>>& out) override
+  {
+    const int me = this->piece();
+    std::vector<std::vector<std::int64_t>> in(out.size());
+    in[std::size_t(me)] = out[std::size_t(me)];
+    for (int q = 0; q < this->pieces(); ++q)
+      if (q != me)
+        this->Pair(q, &out[std::size_t(q)], &in[std::size_t(q)], Tag + 2);
+    return in;
+  }
+
 private:
+  // Sends `send` to and receives `receive` from process q (either may be null), the lower
+  // process sending first: a count (tag) then the values as bytes (tag + 1).
+  template<class T>
+  void Pair(int q, const std::vector<T>* send, std::vector<T>* receive, int tag)
+  {
+    auto put = [&]
+    {
+      if (!send)
+        return;
+      const vtkIdType count = vtkIdType(send->size());
+      this->Controller->Send(&count, 1, q, tag);
+      if (count > 0)
+        this->Controller->Send(
+          reinterpret_cast<const char*>(send->data()), count * vtkIdType(sizeof(T)), q, tag + 1);
+    };
+    auto get = [&]
+    {
+      if (!receive)
+        return;
+      vtkIdType count = 0;
+      this->Controller->Receive(&count, 1, q, tag);
+      receive->resize(std::size_t(count));
+      if (count > 0)
+        this->Controller->Receive(
+          reinterpret_cast<char*>(receive->data()), count * vtkIdType(sizeof(T)), q, tag + 1);
+    };
+    if (this->piece() < q)
+    {
+      put();
+      get();
+    }
+    else
+    {
+      get();
+      put();
+    }
+  }
+
   static constexpr int Tag = 914300;
   vtkMultiProcessController* Controller;
 };
@@ -180,42 +201,64 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
   }
 
   // Local checks, agreed on by every process (a process that stopped alone would leave
-  // the others waiting in a collective).
+  // the others waiting in a collective), in one gather with whether the geometry changed
+  // and whether the piece has point GlobalIds.
   const vtkIdType n = input->GetNumberOfPoints();
   vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
   vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
   std::string problem;
   if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
     problem = "more than 2^31 - 1 points";
-  else if (n > 0 && (!gids || gids->GetNumberOfTuples() != n))
-    problem = "no point GlobalIds (add them before distributing, e.g. GenerateGlobalIds)";
+  else if (n > 0 && gids && (gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
+    problem = "a point GlobalIds array that is not one value per point";
   else if (n > 0 && (!ghosts || ghosts->GetNumberOfTuples() != n))
     problem = "no vtkGhostType point array (ownership of the points)";
-  std::vector<double> xyz;
-  vtkIdType firstBad = -1;
-  if (problem.empty() && n > 0 &&
-      vtkGeoShapingAdapter::PointsAsDouble(input->GetPoints(), xyz, firstBad) > 0)
-    problem = "non-finite point coordinates";
   if (!problem.empty())
     vtkErrorMacro(
       "Process " << ex.piece() << ": " << problem << "; output is the undeformed input.");
-  if (!AllAgree(ex, problem.empty()))
+  const bool stale = !in.Partition || !in.GeometryValid ||
+                     in.GeometryPoints != input->GetPoints() || in.GeometrySize != n ||
+                     in.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
+                     in.GeometryPrecision != this->OutputPointsPrecision;
+  bool ok = true, anyStale = false, withIds = false, withoutIds = false;
+  for (const auto& v : ex.all_gather({ problem.empty(), stale, n == 0 ? 0 : gids ? 1 : 2 }))
   {
-    if (problem.empty())
-      vtkErrorMacro("Another process refused its piece; output is the undeformed input.");
+    ok = ok && v[0];
+    anyStale = anyStale || v[1];
+    withIds = withIds || v[2] == 1;
+    withoutIds = withoutIds || v[2] == 2;
+  }
+  if (ok && withIds && withoutIds)
+  {
+    vtkErrorMacro("Point GlobalIds on some processes and not on others; output is the "
+                  "undeformed input.");
+    ok = false;
+  }
+  else if (!ok && problem.empty())
+    vtkErrorMacro("Another process refused its piece; output is the undeformed input.");
+  if (!ok)
+  {
     in.GeometryValid = false;
     in.Partition.reset();
     return true;
   }
 
-  // Geometry: rebuilt on every process when it changed on any.
-  const bool stale = !in.Partition || !in.GeometryValid ||
-                     in.GeometryPoints != input->GetPoints() || in.GeometrySize != n ||
-                     in.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
-                     in.GeometryPrecision != this->OutputPointsPrecision;
-  if (!AllAgree(ex, !stale))
+  // Geometry: rebuilt on every process when it changed on any (points read only then).
+  if (anyStale)
   {
     in.GeometryValid = false;
+    std::vector<double> xyz;
+    vtkIdType firstBad = -1;
+    const bool finite =
+      n == 0 || vtkGeoShapingAdapter::PointsAsDouble(input->GetPoints(), xyz, firstBad) == 0;
+    if (!finite)
+      vtkErrorMacro("Process " << ex.piece() << ": non-finite point coordinates (first at point "
+                               << firstBad << "); output is the undeformed input.");
+    if (!AllAgree(ex, finite))
+    {
+      in.Partition.reset();
+      return true;
+    }
     if (n > 0)
       this->UpdateGeometry(input); // the output points, normals and locator caches
     vtkIdType skipped = 0;
@@ -223,9 +266,24 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
     std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
     for (vtkIdType i = 0; i < n; ++i)
-    {
-      gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
       owned[std::size_t(i)] = (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
+    in.GeneratedIds = nullptr;
+    if (withIds)
+    {
+      for (vtkIdType i = 0; i < n; ++i)
+        gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
+    }
+    else
+    {
+      // None anywhere: numbered by coordinates, whatever the partition, and a seam point
+      // that several processes claim owned by the lowest (coordinate_ids.h).
+      const std::vector<std::uint8_t> claimed = std::move(owned);
+      gid =
+        geoshaping::coordinate_ids(xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex);
+      in.GeneratedIds = vtkSmartPointer<vtkIdTypeArray>::New();
+      in.GeneratedIds->SetName("GlobalIds");
+      in.GeneratedIds->SetNumberOfTuples(n);
+      std::copy(gid.begin(), gid.end(), in.GeneratedIds->GetPointer(0));
     }
     in.Partition = std::make_unique<geoshaping::PartitionedChainMail>(in.Deformer);
     const std::string error = in.Partition->set_piece(
@@ -239,6 +297,15 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       in.GeometryValid = false;
       in.Partition.reset();
       return true;
+    }
+    if (n == 0)
+    {
+      // UpdateGeometry did not run: remember this empty piece, or it would look changed
+      // at every update and rebuild every process's piece each frame.
+      in.GeometryPoints = input->GetPoints();
+      in.GeometrySize = 0;
+      in.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
+      in.GeometryPrecision = this->OutputPointsPrecision;
     }
     in.GeometryValid = true;
   }
@@ -275,12 +342,16 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       vtkErrorMacro("No deformation: " << r.message << "; output is the undeformed input.");
     }
     // Totals over all processes.
-    std::int64_t moved = 0, examined = 0;
-    for (const auto& v : ex.all_gather({ std::int64_t(r.moved), std::int64_t(r.examined) }))
+    std::int64_t moved = 0, examined = 0, bytes = 0;
+    for (const auto& v : ex.all_gather(
+           { std::int64_t(r.moved), std::int64_t(r.examined), std::int64_t(ex.bytes_sent()) }))
     {
       moved += v[0];
       examined += v[1];
+      bytes += v[2];
     }
+    this->Statistics.NumberOfBytesExchanged = vtkIdType(bytes);
+    this->Statistics.NumberOfSupersteps = vtkIdType(in.Partition->supersteps());
     this->Statistics.NumberOfDisplacedPoints = vtkIdType(moved);
     this->Statistics.NumberOfExaminedCandidates = vtkIdType(examined);
     this->Statistics.LastGraspPointId = r.ok ? this->GraspPointId : -1;
@@ -293,5 +364,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
   }
   if (n > 0)
     this->WriteOutput(input, output, {}, {});
+  if (n > 0 && in.GeneratedIds)
+    output->GetPointData()->SetGlobalIds(in.GeneratedIds);
   return true;
 }

@@ -7,12 +7,14 @@
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <array>
@@ -22,6 +24,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 vtkStandardNewMacro(vtkGocadTSurfWriter);
@@ -179,6 +182,88 @@ bool GroupTriangles(vtkPolyData* input, std::vector<SurfaceGroup>& groups, std::
   return true;
 }
 
+// The pieces of a surface gathered from several processes (vtkParallelSerialWriter
+// appends them) as one surface: ghost cells (DUPLICATECELL) are left out, the copies of
+// a point (the same point GlobalIds) become one point, ghost points (DUPLICATEPOINT) no
+// kept triangle uses are left out, and the vtkGhostType arrays are not written. Only the
+// polygons are kept. Data without ghost arrays is returned as it is.
+vtkSmartPointer<vtkPolyData> MergePieces(vtkPolyData* input)
+{
+  vtkUnsignedCharArray* cellGhosts = input->GetCellGhostArray();
+  vtkUnsignedCharArray* pointGhosts = input->GetPointGhostArray();
+  if (!cellGhosts && !pointGhosts)
+    return input;
+  const vtkIdType n = input->GetNumberOfPoints();
+  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const auto kept = [&](vtkIdType cellId)
+  { return !cellGhosts || !(cellGhosts->GetValue(cellId) & vtkDataSetAttributes::DUPLICATECELL); };
+  std::vector<char> used(static_cast<std::size_t>(n), 0);
+  auto it = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    it->GetCurrentCell(npts, pts);
+    if (kept(firstPoly + it->GetCurrentCellId()))
+      for (vtkIdType k = 0; k < npts; ++k)
+        used[std::size_t(pts[k])] = 1;
+  }
+
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->GetFieldData()->ShallowCopy(input->GetFieldData());
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = out->GetPointData();
+  outPD->CopyFieldOff(vtkDataSetAttributes::GhostArrayName());
+  outPD->CopyGlobalIdsOn(); // written as the serial writer writes them: a property
+  outPD->CopyAllocate(inPD, n);
+  vtkDataArray* gids = inPD->GetGlobalIds();
+  std::unordered_map<long long, vtkIdType> byGlobalId;
+  std::vector<vtkIdType> newId(static_cast<std::size_t>(n), -1);
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    if (!used[std::size_t(p)] && pointGhosts &&
+        (pointGhosts->GetValue(p) & vtkDataSetAttributes::DUPLICATEPOINT))
+      continue;
+    if (gids)
+    {
+      const auto found =
+        byGlobalId.emplace((long long)gids->GetTuple1(p), points->GetNumberOfPoints());
+      if (!found.second)
+      {
+        newId[std::size_t(p)] = found.first->second;
+        continue;
+      }
+    }
+    newId[std::size_t(p)] = points->InsertNextPoint(input->GetPoint(p));
+    outPD->CopyData(inPD, p, newId[std::size_t(p)]);
+  }
+  out->SetPoints(points);
+
+  vtkNew<vtkCellArray> polys;
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = out->GetCellData();
+  outCD->CopyFieldOff(vtkDataSetAttributes::GhostArrayName());
+  outCD->CopyAllocate(inCD, input->GetNumberOfPolys());
+  std::vector<vtkIdType> ids;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    it->GetCurrentCell(npts, pts);
+    const vtkIdType cellId = firstPoly + it->GetCurrentCellId();
+    if (!kept(cellId))
+      continue;
+    ids.assign(pts, pts + npts);
+    for (vtkIdType& id : ids)
+      id = newId[std::size_t(id)];
+    outCD->CopyData(inCD, cellId, polys->InsertNextCell(npts, ids.data()));
+  }
+  out->SetPolys(polys);
+  return out;
+}
+
 struct SurfaceWriter
 {
   std::ostream& Out;
@@ -275,13 +360,14 @@ int vtkGocadTSurfWriter::FillInputPortInformation(int, vtkInformation* info)
 
 void vtkGocadTSurfWriter::WriteData()
 {
-  vtkPolyData* input = this->GetInput();
-  if (!input || !this->FileName || !*this->FileName)
+  if (!this->GetInput() || !this->FileName || !*this->FileName)
   {
-    vtkErrorMacro(<< (input ? "No FileName set." : "No vtkPolyData input."));
+    vtkErrorMacro(<< (this->GetInput() ? "No FileName set." : "No vtkPolyData input."));
     this->SetErrorCode(vtkErrorCode::NoFileNameError);
     return;
   }
+  const vtkSmartPointer<vtkPolyData> pieces = MergePieces(this->GetInput());
+  vtkPolyData* input = pieces;
   std::string error;
   std::vector<SurfaceGroup> groups;
   if (!CheckPoints(input, error) || !GroupTriangles(input, groups, error))

@@ -17,6 +17,12 @@
  * that are not triangles and triangle strips are refused with an error (apply
  * Triangulate first); vertices and lines are left out with a warning; other cell data
  * is not written. Non-finite coordinates are refused. See docs/tsurf.md.
+ *
+ * Pieces of a surface gathered from several processes (ParaView's
+ * vtkParallelSerialWriter appends them to the first process; docs/mpi.md) are written as
+ * the one surface they are cut from: when the input has vtkGhostType arrays, ghost cells
+ * are left out, the copies of a point (equal point GlobalIds) are one vertex, ghost
+ * points no triangle uses are left out, and vtkGhostType is not written as a property.
  */
 #ifndef vtkGocadTSurfWriter_h
 #define vtkGocadTSurfWriter_h

@@ -5,13 +5,18 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkPoints.h"
 #include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <random>
+#include <set>
 #include <sstream>
 
 namespace
@@ -157,4 +162,99 @@ TEST(GocadTSurfWriter, ReportsAnUnwritableFile)
   writer->SetFileName(gocadtest::WorkPath("no/such/folder/x.ts").c_str());
   writer->Write();
   EXPECT_NE(capture->Errors.find("Cannot open"), std::string::npos) << capture->Errors;
+}
+
+namespace
+{
+// Rows [lo, hi) of the n x n UtmSurface's points as one process's piece would hold them
+// after ParaView distributes it (one ghost ring, ghost arrays, point GlobalIds): the
+// quads of rows lo - 1 .. hi (those outside [lo, hi) ghost cells), the points they use
+// (those outside [lo, hi) ghost points).
+void AppendPiece(vtkPolyData* surface, int n, int lo, int hi, vtkPolyData* pieces)
+{
+  vtkPoints* points = pieces->GetPoints();
+  auto* pointGhosts = vtkUnsignedCharArray::SafeDownCast(
+    pieces->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  auto* cellGhosts = vtkUnsignedCharArray::SafeDownCast(
+    pieces->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  std::map<vtkIdType, vtkIdType> local;
+  const auto add = [&](vtkIdType id)
+  {
+    const auto found = local.emplace(id, points->GetNumberOfPoints());
+    if (!found.second)
+      return found.first->second;
+    points->InsertNextPoint(surface->GetPoint(id));
+    for (int a = 0; a < surface->GetPointData()->GetNumberOfArrays(); ++a)
+      pieces->GetPointData()
+        ->GetArray(surface->GetPointData()->GetArrayName(a))
+        ->InsertNextTuple(id, surface->GetPointData()->GetArray(a));
+    const int row = int(id / n);
+    pointGhosts->InsertNextValue(row >= lo && row < hi ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
+    return found.first->second;
+  };
+  // The points in ascending id order (so the merged surface has the whole one's order).
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    std::set<vtkIdType> used;
+    for (int qj = std::max(lo - 1, 0); qj <= std::min(hi, n - 2); ++qj)
+      for (vtkIdType c = 2 * qj * (n - 1); c < 2 * (qj + 1) * (n - 1); ++c)
+      {
+        vtkNew<vtkIdList> ids;
+        surface->GetCellPoints(c, ids);
+        vtkIdType tri[3];
+        for (int k = 0; k < 3; ++k)
+          used.insert(tri[k] = pass ? add(ids->GetId(k)) : ids->GetId(k));
+        if (pass)
+        {
+          pieces->GetPolys()->InsertNextCell(3, tri);
+          cellGhosts->InsertNextValue(
+            qj >= lo && qj < hi ? 0 : vtkDataSetAttributes::DUPLICATECELL);
+        }
+      }
+    if (!pass)
+      for (vtkIdType id : used)
+        add(id);
+  }
+}
+}
+
+TEST(GocadTSurfWriter, PiecesFromSeveralProcessesAreWrittenAsTheWholeSurface)
+{
+  const int n = 6;
+  auto surface = UtmSurface(n);
+  vtkNew<vtkIdTypeArray> gids;
+  gids->SetName("GlobalIds");
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+    gids->InsertNextValue(i);
+  surface->GetPointData()->SetGlobalIds(gids);
+
+  // What vtkParallelSerialWriter's AppendPolyData gives on the first process.
+  vtkNew<vtkPolyData> pieces;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  pieces->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  pieces->SetPolys(polys);
+  for (int a = 0; a < surface->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* from = surface->GetPointData()->GetArray(a);
+    auto to = vtk::TakeSmartPointer(from->NewInstance());
+    to->SetName(from->GetName());
+    to->SetNumberOfComponents(from->GetNumberOfComponents());
+    pieces->GetPointData()->AddArray(to);
+  }
+  pieces->GetPointData()->SetActiveGlobalIds("GlobalIds");
+  vtkNew<vtkUnsignedCharArray> pointGhosts, cellGhosts;
+  pointGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  cellGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  pieces->GetPointData()->AddArray(pointGhosts);
+  pieces->GetCellData()->AddArray(cellGhosts);
+  AppendPiece(surface, n, 0, 3, pieces);
+  AppendPiece(surface, n, 3, n, pieces);
+  ASSERT_GT(pieces->GetNumberOfPoints(), surface->GetNumberOfPoints());
+  ASSERT_GT(pieces->GetNumberOfPolys(), surface->GetNumberOfPolys());
+
+  const std::string path = gocadtest::Write(pieces, "pieces.ts");
+  EXPECT_EQ(ReadAll(path).find("vtkGhostType"), std::string::npos);
+  gocadtest::ExpectSameSurface(surface, gocadtest::Read(path).Output, "pieces.ts");
 }

@@ -1,6 +1,11 @@
 """Run by `mpiexec -n N pvbatch --sym` (test_mpi_deformation.py): distributes a scene,
 deforms it with ChainMailDeformation and writes every owned point's (global id, x, y,
-z, rest x, y, z) to OUT/result.npy, gathered on rank 0. Arguments: SCENE OUT."""
+z, rest x, y, z) to OUT/result.npy, gathered on rank 0, and (surfaces) SaveData's
+TSurf to OUT/deformed.ts. Arguments: SCENE OUT [noids].
+With noids the data is distributed without point GlobalIds, so on N > 1 ranks the
+filter numbers the points itself (by coordinates); on 1 rank the same numbering is
+given by numpy here (the rank of each point among the distinct coordinates, an
+independent computation), so the results must still be equal."""
 import os
 import sys
 
@@ -12,6 +17,7 @@ from vtkmodules.vtkCommonCore import vtkIdTypeArray
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 scene, out = sys.argv[1], sys.argv[2]
+noids = sys.argv[3:] == ["noids"]
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
@@ -35,7 +41,24 @@ else:
 # Global ids = the point ids of the undistributed data (all on rank 0). Not
 # GenerateGlobalIds: it merges coincident points, and a fault's two sides must stay apart.
 ids = ProgrammableFilter(Input=source)  # noqa: F405
-ids.Script = """
+COORDINATE_RANKS = """
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray, vtk_to_numpy
+out = self.GetOutput()
+out.ShallowCopy(self.GetInput())
+if out.GetNumberOfPoints():
+    xyz = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
+    order = np.lexsort((xyz[:, 2], xyz[:, 1], xyz[:, 0]))
+    s = xyz[order]
+    new = np.ones(len(s), dtype=bool)
+    new[1:] = np.any(s[1:] != s[:-1], axis=1)
+    rank = np.empty(len(s), dtype=np.int64)
+    rank[order] = np.cumsum(new) - 1
+    gids = numpy_to_vtkIdTypeArray(rank, deep=1)
+    gids.SetName("GlobalIds")
+    out.GetPointData().SetGlobalIds(gids)
+"""
+ids.Script = COORDINATE_RANKS if noids else """
 from vtkmodules.vtkCommonCore import vtkIdTypeArray
 out = self.GetOutput()
 out.ShallowCopy(self.GetInput())
@@ -46,7 +69,7 @@ for i in range(out.GetNumberOfPoints()):
     gids.SetValue(i, i)
 out.GetPointData().SetGlobalIds(gids)
 """
-spread = RedistributeDataSet(Input=ids)  # noqa: F405
+spread = RedistributeDataSet(Input=source if noids and nranks > 1 else ids)  # noqa: F405
 ghosts = GhostCellsGenerator(Input=spread)  # noqa: F405
 chain = ChainMailDeformation(Input=ghosts)  # noqa: F405
 chain.CandidateQueue = "FIFO Priority"
@@ -65,6 +88,8 @@ choice.SetNumberOfTuples(1)
 if rank == 0:
     xyz = vtk_to_numpy(whole.GetPoints().GetData()).astype(float)
     gid = vtk_to_numpy(whole.GetPointData().GetGlobalIds())
+    if noids and len(np.unique(gid)) != len(gid):
+        raise RuntimeError("coincident points: the coordinate numbering joins them")
     lo, hi = xyz.min(axis=0), xyz.max(axis=0)
     target = lo[:2] + np.array(grasp_at) * (hi - lo)[:2]
     choice.SetValue(0, int(gid[np.argmin(((xyz[:, :2] - target) ** 2).sum(axis=1))]))
@@ -72,6 +97,14 @@ controller.Broadcast(choice, 0)
 chain.GraspPointId = int(choice.GetValue(0))
 chain.Displacement = pull
 chain.UpdatePipeline()
+
+os.makedirs(out, exist_ok=True)
+if scene not in ("slab",):
+    # SaveData of a TSurf from N ranks: rank 0 writes one file (GocadTSurfWriter is a
+    # vtkParallelSerialWriter); test_mpi_deformation.py compares it to the 1-rank file.
+    # RedistributeDataSet made the surface an unstructured grid: ExtractSurface makes it
+    # polydata again, as a user must before saving a TSurf.
+    SaveData(os.path.join(out, "deformed.ts"), proxy=ExtractSurface(Input=chain))  # noqa: F405
 
 data = chain.GetClientSideObject().GetOutputDataObject(0)
 n = data.GetNumberOfPoints()
@@ -83,7 +116,6 @@ if n:
     pts = vtk_to_numpy(data.GetPoints().GetData()).astype(float)[owned]
     rest = ghosts.GetClientSideObject().GetOutputDataObject(0).GetPoints().GetData()
     rows = np.column_stack([ids_here.astype(float), pts, vtk_to_numpy(rest).astype(float)[owned]])
-os.makedirs(out, exist_ok=True)
 np.save(os.path.join(out, "rank%d.npy" % rank), rows)
 controller.Barrier()
 if rank == 0:

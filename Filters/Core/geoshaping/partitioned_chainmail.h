@@ -69,6 +69,11 @@ public:
   // list it.
   virtual std::vector<std::vector<MovedVertex>> exchange(const std::vector<int>& to,
     const std::vector<std::vector<MovedVertex>>& out, const std::vector<int>& from) = 0;
+  // Sends out[q] to piece q (one entry per piece) and returns what every piece sent
+  // this one, by piece. The default goes through all_gather (every piece receives
+  // everything); a transport overrides it with messages to the pieces concerned.
+  virtual std::vector<std::vector<std::int64_t>> all_to_all(
+    const std::vector<std::vector<std::int64_t>>& out);
   // Bytes this piece sent through exchange().
   std::size_t bytes_sent() const { return bytes_sent_; }
 

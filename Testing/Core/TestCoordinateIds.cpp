@@ -1,0 +1,145 @@
+// coordinate_ids (coordinate_ids.h) against a direct numbering: the rank of each
+// point's (x, y, z) among the distinct coordinates of the whole point set, the same for
+// any split into pieces, with copies of a point on several pieces (ghosts), coincident
+// points, negative coordinates, -0 and an empty piece; and the owner of each point: the
+// lowest piece that claims a copy of it (none when no piece claims it).
+#include "geoshaping/coordinate_ids.h"
+#include "geoshaping/in_process_exchange.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+#include <thread>
+#include <tuple>
+
+using namespace geoshaping;
+
+namespace
+{
+using Point = std::tuple<double, double, double>;
+
+// Points on a coarse lattice (so many coincide), some negative, one at -0.
+std::vector<Point> lattice_points(std::size_t count, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> cell(-6, 6);
+  std::vector<Point> points;
+  for (std::size_t i = 0; i < count; ++i)
+    points.emplace_back(0.25 * cell(rng), 1e6 + 0.5 * cell(rng), -3.0 * cell(rng));
+  points.emplace_back(-0.0, 1e6, 0.0);
+  points.emplace_back(0.0, 1e6, -0.0);
+  return points;
+}
+
+struct Split
+{
+  std::vector<std::vector<std::size_t>> held;     // point indices, by piece
+  std::vector<std::vector<std::uint8_t>> claimed; // by piece and local point
+};
+
+// Piece p holds the points `owner` gives it, claimed except every seventh, plus every
+// fourth point of the next piece (copies, as ghosts are; every eighth claimed there
+// too, as a seam point is); piece `empty` holds nothing.
+Split split(std::size_t count, int pieces, unsigned seed, int empty = -1)
+{
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> owner(0, pieces - 1);
+  Split s{ std::vector<std::vector<std::size_t>>(std::size_t(pieces)),
+    std::vector<std::vector<std::uint8_t>>(std::size_t(pieces)) };
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    int p = owner(rng);
+    if (p == empty)
+      p = (p + 1) % pieces;
+    s.held[std::size_t(p)].push_back(i);
+    s.claimed[std::size_t(p)].push_back(i % 7 != 0);
+    const int next = (p + 1) % pieces;
+    if (i % 4 == 0 && next != empty && next != p)
+    {
+      s.held[std::size_t(next)].push_back(i);
+      s.claimed[std::size_t(next)].push_back(i % 8 == 0);
+    }
+  }
+  return s;
+}
+
+// ids[piece][local] from threads exchanging in process; owned[piece][local].
+std::vector<std::vector<std::int64_t>> run(
+  const std::vector<Point>& points, const Split& s, std::vector<std::vector<std::uint8_t>>& owned)
+{
+  const auto& held = s.held;
+  const int pieces = int(held.size());
+  InProcessHub hub(pieces);
+  std::vector<std::vector<std::int64_t>> ids(held.size());
+  owned.assign(held.size(), {});
+  std::vector<std::thread> threads;
+  for (int p = 0; p < pieces; ++p)
+    threads.emplace_back(
+      [&, p]
+      {
+        std::vector<double> xyz;
+        for (std::size_t i : held[std::size_t(p)])
+          xyz.insert(
+            xyz.end(), { std::get<0>(points[i]), std::get<1>(points[i]), std::get<2>(points[i]) });
+        InProcessExchange ex(hub, p);
+        ids[std::size_t(p)] = coordinate_ids(xyz.data(), index_t(held[std::size_t(p)].size()),
+          s.claimed[std::size_t(p)].data(), owned[std::size_t(p)], ex);
+      });
+  for (auto& t : threads)
+    t.join();
+  return ids;
+}
+} // namespace
+
+TEST(CoordinateIds, IdsAreTheRanksOfTheDistinctCoordinatesForAnySplit)
+{
+  const std::vector<Point> points = lattice_points(3000, 7);
+  std::map<Point, std::int64_t> rank; // std::less on doubles: -0 == +0
+  for (const Point& x : points)
+    rank.emplace(x, 0);
+  std::int64_t next = 0;
+  for (auto& entry : rank)
+    entry.second = next++;
+  ASSERT_LT(rank.size(), points.size()); // coincident points exist
+  for (int pieces = 1; pieces <= 4; ++pieces)
+    for (unsigned seed : { 1u, 2u })
+    {
+      const Split s = split(points.size(), pieces, seed, pieces == 3 ? 1 : -1);
+      std::vector<std::vector<std::uint8_t>> owned;
+      const auto ids = run(points, s, owned);
+      // Expected owner of each distinct point: the lowest piece claiming a copy.
+      std::map<Point, int> expected;
+      for (int p = pieces - 1; p >= 0; --p)
+        for (std::size_t l = 0; l < s.held[std::size_t(p)].size(); ++l)
+          if (s.claimed[std::size_t(p)][l])
+            expected[points[s.held[std::size_t(p)][l]]] = p;
+      std::map<Point, int> owners; // how many owned copies each point has
+      for (int p = 0; p < pieces; ++p)
+      {
+        ASSERT_EQ(ids[std::size_t(p)].size(), s.held[std::size_t(p)].size());
+        for (std::size_t l = 0; l < s.held[std::size_t(p)].size(); ++l)
+        {
+          const Point& x = points[s.held[std::size_t(p)][l]];
+          ASSERT_EQ(ids[std::size_t(p)][l], rank.at(x))
+            << pieces << " pieces, seed " << seed << ", piece " << p << ", point " << l;
+          if (owned[std::size_t(p)][l])
+          {
+            ++owners[x];
+            EXPECT_EQ(expected.at(x), p) << "the lowest claiming piece owns a point";
+          }
+        }
+      }
+      for (const auto& e : expected)
+        EXPECT_EQ(owners[e.first], 1) << "each claimed point has one owned copy";
+      EXPECT_LT(expected.size(), rank.size()) << "some points are claimed by no piece";
+    }
+}
+
+TEST(CoordinateIds, NoPointsAnywhereGivesNoIds)
+{
+  std::vector<std::vector<std::uint8_t>> owned;
+  const auto ids = run({}, Split{ { {}, {}, {} }, { {}, {}, {} } }, owned);
+  for (const auto& piece : ids)
+    EXPECT_TRUE(piece.empty());
+}
