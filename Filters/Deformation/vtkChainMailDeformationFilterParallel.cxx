@@ -175,7 +175,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   if (!controller || controller->GetNumberOfProcesses() < 2)
     return false;
-  vtkInternals& in = *this->Internals;
+  vtkInternals& state = *this->Internals;
   ControllerExchange ex(controller);
 
   // Not distributed yet: decided from properties, so the same on every process.
@@ -184,7 +184,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     refused = "RefinementIterations > 0 (refinement)";
   else if (this->RelaxationIterations > 0)
     refused = "RelaxationIterations > 0 (relaxation)";
-  else if (!in.Edits.records().empty())
+  else if (!state.Edits.records().empty())
     refused = "edits (EditHistory, CommitEdit)";
   else if (this->GraspMode == GRASP_NEAREST_TO_POSITION)
     refused = "GraspMode nearest to a position (use a GraspPointId: a global point id)";
@@ -216,10 +216,10 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
   if (!problem.empty())
     vtkErrorMacro(
       "Process " << ex.piece() << ": " << problem << "; output is the undeformed input.");
-  const bool stale = !in.Partition || !in.GeometryValid ||
-                     in.GeometryPoints != input->GetPoints() || in.GeometrySize != n ||
-                     in.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
-                     in.GeometryPrecision != this->OutputPointsPrecision;
+  const bool stale = !state.Partition || !state.GeometryValid ||
+                     state.GeometryPoints != input->GetPoints() || state.GeometrySize != n ||
+                     state.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
+                     state.GeometryPrecision != this->OutputPointsPrecision;
   bool ok = true, anyStale = false, withIds = false, withoutIds = false;
   for (const auto& v : ex.all_gather({ problem.empty(), stale, n == 0 ? 0 : gids ? 1 : 2 }))
   {
@@ -238,15 +238,15 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     vtkErrorMacro("Another process refused its piece; output is the undeformed input.");
   if (!ok)
   {
-    in.GeometryValid = false;
-    in.Partition.reset();
+    state.GeometryValid = false;
+    state.Partition.reset();
     return true;
   }
 
   // Geometry: rebuilt on every process when it changed on any (points read only then).
   if (anyStale)
   {
-    in.GeometryValid = false;
+    state.GeometryValid = false;
     std::vector<double> xyz;
     vtkIdType firstBad = -1;
     const bool finite =
@@ -256,7 +256,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
                                << firstBad << "); output is the undeformed input.");
     if (!AllAgree(ex, finite))
     {
-      in.Partition.reset();
+      state.Partition.reset();
       return true;
     }
     if (n > 0)
@@ -267,7 +267,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
     for (vtkIdType i = 0; i < n; ++i)
       owned[std::size_t(i)] = (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
-    in.GeneratedIds = nullptr;
+    state.GeneratedIds = nullptr;
     if (withIds)
     {
       for (vtkIdType i = 0; i < n; ++i)
@@ -280,60 +280,60 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       const std::vector<std::uint8_t> claimed = std::move(owned);
       gid =
         geoshaping::coordinate_ids(xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex);
-      in.GeneratedIds = vtkSmartPointer<vtkIdTypeArray>::New();
-      in.GeneratedIds->SetName("GlobalIds");
-      in.GeneratedIds->SetNumberOfTuples(n);
-      std::copy(gid.begin(), gid.end(), in.GeneratedIds->GetPointer(0));
+      state.GeneratedIds = vtkSmartPointer<vtkIdTypeArray>::New();
+      state.GeneratedIds->SetName("GlobalIds");
+      state.GeneratedIds->SetNumberOfTuples(n);
+      std::copy(gid.begin(), gid.end(), state.GeneratedIds->GetPointer(0));
     }
-    in.Partition = std::make_unique<geoshaping::PartitionedChainMail>(in.Deformer);
-    const std::string error = in.Partition->set_piece(
+    state.Partition = std::make_unique<geoshaping::PartitionedChainMail>(state.Deformer);
+    const std::string error = state.Partition->set_piece(
       xyz.data(), geoshaping::index_t(n), std::move(adjacency), gid.data(), owned.data(), ex);
-    in.MalleabilitySource = nullptr; // set_piece reset the deformer's arrays
-    in.PinSource = nullptr;
-    in.MalleabilityDefault = -1.0;
+    state.MalleabilitySource = nullptr; // set_piece reset the deformer's arrays
+    state.PinSource = nullptr;
+    state.MalleabilityDefault = -1.0;
     if (!error.empty())
     {
       vtkErrorMacro("Refused partition: " << error << "; output is the undeformed input.");
-      in.GeometryValid = false;
-      in.Partition.reset();
+      state.GeometryValid = false;
+      state.Partition.reset();
       return true;
     }
     if (n == 0)
     {
       // UpdateGeometry did not run: remember this empty piece, or it would look changed
       // at every update and rebuild every process's piece each frame.
-      in.GeometryPoints = input->GetPoints();
-      in.GeometrySize = 0;
-      in.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
-      in.GeometryPrecision = this->OutputPointsPrecision;
+      state.GeometryPoints = input->GetPoints();
+      state.GeometrySize = 0;
+      state.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
+      state.GeometryPrecision = this->OutputPointsPrecision;
     }
-    in.GeometryValid = true;
+    state.GeometryValid = true;
   }
   if (!AllAgree(ex, n == 0 || this->UpdateMalleabilityAndPins(inputVector, n)))
   {
-    in.Deformer.reset();
+    state.Deformer.reset();
     return true;
   }
 
   const geoshaping::TransferFunction tf =
-    Transfer(this, in.StretchCurve, in.CompressionCurve, in.ShearCurve);
+    Transfer(this, state.StretchCurve, state.CompressionCurve, state.ShearCurve);
   if (*tf.validate())
   {
     vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");
     return true;
   }
-  in.Deformer.set_transfer_function(tf);
-  in.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
-  in.Deformer.set_valid_region_frame(
+  state.Deformer.set_transfer_function(tf);
+  state.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
+  state.Deformer.set_valid_region_frame(
     static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame));
   if (this->GraspPointId < 0)
   {
-    in.Deformer.reset(); // no grasp: the rest shape
+    state.Deformer.reset(); // no grasp: the rest shape
   }
   else
   {
     const auto start = std::chrono::steady_clock::now();
-    const geoshaping::FrameResult r = in.Partition->deform(this->GraspPointId,
+    const geoshaping::FrameResult r = state.Partition->deform(this->GraspPointId,
       Eigen::Vector3d(this->Displacement[0], this->Displacement[1], this->Displacement[2]), ex);
     this->Statistics.LastDeformationMilliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -351,20 +351,20 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       bytes += v[2];
     }
     this->Statistics.NumberOfBytesExchanged = vtkIdType(bytes);
-    this->Statistics.NumberOfSupersteps = vtkIdType(in.Partition->supersteps());
+    this->Statistics.NumberOfSupersteps = vtkIdType(state.Partition->supersteps());
     this->Statistics.NumberOfDisplacedPoints = vtkIdType(moved);
     this->Statistics.NumberOfExaminedCandidates = vtkIdType(examined);
     this->Statistics.LastGraspPointId = r.ok ? this->GraspPointId : -1;
     if (r.ok && n > 0 && !this->OutputFits())
     {
-      in.Deformer.reset();
+      state.Deformer.reset();
       this->Statistics.NumberOfDisplacedPoints = 0;
       this->Statistics.LastGraspPointId = -1;
     }
   }
   if (n > 0)
     this->WriteOutput(input, output, {}, {});
-  if (n > 0 && in.GeneratedIds)
-    output->GetPointData()->SetGlobalIds(in.GeneratedIds);
+  if (n > 0 && state.GeneratedIds)
+    output->GetPointData()->SetGlobalIds(state.GeneratedIds);
   return true;
 }
