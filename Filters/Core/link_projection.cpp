@@ -285,19 +285,19 @@ double LinkProjector::directed(index_t c, index_t s, const Eigen::Vector3d& w) c
   return region_distance(mesh_.frame, mesh_.rest[c] - mesh_.rest[s], mesh_.params[c], w);
 }
 
+double LinkProjector::violation(const Link& l, const Eigen::Vector3d& w) const
+{
+  if (vars_[l.a].inverse_weight + vars_[l.b].inverse_weight == 0.0)
+    return 0.0;
+  return std::max(directed(l.c, l.s, w), directed(l.s, l.c, -w));
+}
+
 // E_link over the swept links (unnormalised): each direction against its own region.
 double LinkProjector::max_violation() const
 {
   double worst = 0.0;
   for (const Link& l : links_)
-  {
-    const Variable& a = vars_[l.a];
-    const Variable& b = vars_[l.b];
-    if (a.inverse_weight + b.inverse_weight == 0.0)
-      continue;
-    const Eigen::Vector3d r = a.value - b.value;
-    worst = std::max({ worst, directed(l.c, l.s, r), directed(l.s, l.c, -r) });
-  }
+    worst = std::max(worst, violation(l, vars_[l.a].value - vars_[l.b].value));
   return worst;
 }
 
@@ -469,7 +469,7 @@ void LinkProjector::run_admm(const ProjectionOptions& options, ProjectionReport&
       if (a.inverse_weight + b.inverse_weight == 0.0)
         continue;
       const Eigen::Vector3d w = a.value - b.value;
-      violation = std::max({ violation, directed(l.c, l.s, w), directed(l.s, l.c, -w) });
+      violation = std::max(violation, this->violation(l, w));
       const Eigen::Vector3d relaxed = alpha * w + (1.0 - alpha) * l.y;
       const Eigen::Vector3d y = project_onto(l.C, relaxed + l.lambda);
       l.lambda += relaxed - y;

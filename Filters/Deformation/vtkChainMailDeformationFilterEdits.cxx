@@ -118,8 +118,7 @@ void vtkChainMailDeformationFilter::CommitEdit()
     vtkWarningMacro("CommitEdit: nothing to commit (no deformation in the last update).");
     return;
   }
-  state.Passes.begin_frame();
-  state.Invalidate(vtkInternals::Stale::Links);
+  state.Invalidate(vtkInternals::Stale::Links); // the passes' results and link data
   // The frame is now the rest shape. GraspPointId and Displacement are the client's: it
   // releases them (ParaView's proxy does, docs/editing.md), else the next update applies
   // the grasp again, to the new rest shape.

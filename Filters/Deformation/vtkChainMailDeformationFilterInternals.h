@@ -194,7 +194,6 @@ inline void vtkChainMailDeformationFilter::vtkInternals::Invalidate(Stale level)
   this->PinSource = nullptr;
   this->MalleabilityDefault = -1.0;
   this->Locator = nullptr;
-  this->Passes.begin_frame();
   this->PassesWritten.clear();
   this->Edits.forget_applied();
   this->Warned.clear();

@@ -37,8 +37,15 @@ public:
   FramePasses(const FramePasses&) = delete; // the passes hold references to links_
   FramePasses& operator=(const FramePasses&) = delete;
 
-  // The link data no longer matches the deformer (malleability, pins or rest changed).
-  void invalidate() { projector_.reset(); }
+  // The link data no longer matches the deformer (malleability, pins or rest changed):
+  // the passes' results go with it (a new frame begins) and the data is rebuilt on the
+  // next pass.
+  void invalidate()
+  {
+    begin_frame();
+    projector_.reset();
+    relaxer_.reset();
+  }
   // A new frame: forgets the passes' results (the lists stay until the next pass).
   void begin_frame();
 

@@ -227,6 +227,9 @@ private:
   double relax(std::size_t k);
   double sweep();
   double directed(index_t c, index_t s, const Eigen::Vector3d& w) const;
+  // The violation of link l at w = value_a - value_b: the worse of its two directions,
+  // each against its own region; 0 for a link between two fixed variables.
+  double violation(const Link& l, const Eigen::Vector3d& w) const;
   double max_violation() const;
   double pending_violation(double tol, std::vector<index_t>* grow);
   void keep_best();
