@@ -1,9 +1,9 @@
 // The partitioned ChainMail (partitioned_chainmail.h) against the whole mesh: pieces run
 // by threads exchanging through InProcessExchange must give every vertex the whole
 // mesh's displacement, bit for bit, for any partition into 1..4 pieces.
-#include "geoshaping/in_process_exchange.h"
 #include "geoshaping/partitioned_chainmail.h"
 #include "test_meshes.h"
+#include "test_pieces.h"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,6 @@
 #include <functional>
 #include <numeric>
 #include <random>
-#include <set>
-#include <thread>
 
 using namespace geoshaping;
 using geoshaping::testing::Mesh;
@@ -29,58 +27,24 @@ struct Scene
   std::vector<std::int64_t> gid; // not the vertex ids: a shuffled, sparse numbering
 };
 
-struct Piece
+// A piece with the scene's pins and malleability of its vertices.
+struct Piece : geoshaping::testing::MeshPiece
 {
-  std::vector<index_t> global; // local -> whole-mesh vertex
-  std::vector<double> xyz;
-  Adjacency adjacency;
-  std::vector<std::int64_t> gid;
-  std::vector<std::uint8_t> owned, pins;
+  std::vector<std::uint8_t> pins;
   std::vector<float> malleability;
 };
 
-// Piece p holds the vertices it owns, their neighbours (the ghost ring) and `extra`
-// ghosts, in a shuffled local order.
 std::vector<Piece> split(const Scene& s, const std::vector<int>& owner, int pieces,
   const std::vector<std::vector<index_t>>& extra = {}, unsigned seed = 1)
 {
-  const Adjacency& adj = s.mesh.adjacency;
-  std::mt19937 rng(seed);
-  std::vector<Piece> out(static_cast<std::size_t>(pieces));
-  for (int p = 0; p < pieces; ++p)
+  std::vector<Piece> out;
+  for (auto& mesh_piece : geoshaping::testing::split_mesh(
+         s.mesh.xyz, s.mesh.adjacency, s.gid, owner, pieces, extra, seed))
   {
-    std::set<index_t> local;
-    for (index_t v = 0; v < s.mesh.size(); ++v)
-      if (owner[std::size_t(v)] == p)
-      {
-        local.insert(v);
-        local.insert(adj.begin(v), adj.end(v));
-      }
-    if (std::size_t(p) < extra.size())
-      local.insert(extra[std::size_t(p)].begin(), extra[std::size_t(p)].end());
-    Piece& piece = out[std::size_t(p)];
-    piece.global.assign(local.begin(), local.end());
-    std::shuffle(piece.global.begin(), piece.global.end(), rng);
-    std::vector<index_t> local_of(static_cast<std::size_t>(s.mesh.size()), -1);
-    for (std::size_t i = 0; i < piece.global.size(); ++i)
-      local_of[std::size_t(piece.global[i])] = index_t(i);
-    piece.adjacency.offsets.push_back(0);
-    for (index_t v : piece.global)
-    {
-      piece.xyz.insert(
-        piece.xyz.end(), &s.mesh.xyz[3 * std::size_t(v)], &s.mesh.xyz[3 * std::size_t(v)] + 3);
-      std::vector<index_t> row;
-      for (const index_t* it = adj.begin(v); it != adj.end(v); ++it)
-        if (local_of[std::size_t(*it)] >= 0)
-          row.push_back(local_of[std::size_t(*it)]);
-      std::sort(row.begin(), row.end());
-      piece.adjacency.neighbors.insert(piece.adjacency.neighbors.end(), row.begin(), row.end());
-      piece.adjacency.offsets.push_back(std::int64_t(piece.adjacency.neighbors.size()));
-      piece.gid.push_back(s.gid[std::size_t(v)]);
-      piece.owned.push_back(owner[std::size_t(v)] == p);
-      piece.pins.push_back(s.pins[std::size_t(v)]);
-      piece.malleability.push_back(s.malleability[std::size_t(v)]);
-    }
+    Piece piece{ std::move(mesh_piece), {}, {} };
+    piece.pins = piece.gather(s.pins);
+    piece.malleability = piece.gather(s.malleability);
+    out.push_back(std::move(piece));
   }
   return out;
 }
@@ -120,34 +84,27 @@ std::vector<std::vector<Outcome>> run_pieces(std::vector<Piece>& pieces,
   const std::vector<Frame>& frames, const PieceSetup& setup,
   std::vector<std::string>* setup_errors = nullptr, std::vector<std::size_t>* bytes = nullptr)
 {
-  const int n = int(pieces.size());
-  InProcessHub hub(n);
   std::vector<std::vector<Outcome>> out(pieces.size());
   std::vector<std::string> errors(pieces.size());
   std::vector<std::size_t> sent(pieces.size());
-  std::vector<std::thread> threads;
-  for (int p = 0; p < n; ++p)
-    threads.emplace_back(
-      [&, p]
-      {
-        Piece& piece = pieces[std::size_t(p)];
-        InProcessExchange ex(hub, p);
-        ChainMailDeformer deformer;
-        PartitionedChainMail pc(deformer);
-        errors[std::size_t(p)] = pc.set_piece(piece.xyz.data(), index_t(piece.global.size()),
-          piece.adjacency, piece.gid.data(), piece.owned.data(), ex);
-        if (!errors[std::size_t(p)].empty())
-          return;
-        ChainMailDeformer& d = pc.deformer();
-        d.set_malleability(piece.malleability.data());
-        d.set_pinned(piece.pins.data());
-        setup(d);
-        for (const Frame& f : frames)
-          out[std::size_t(p)].push_back(record(d, pc.deform(f.grasp, f.pull, ex)));
-        sent[std::size_t(p)] = ex.bytes_sent();
-      });
-  for (auto& t : threads)
-    t.join();
+  geoshaping::testing::run_in_pieces(int(pieces.size()),
+    [&](int p, Exchange& ex)
+    {
+      Piece& piece = pieces[std::size_t(p)];
+      ChainMailDeformer deformer;
+      PartitionedChainMail pc(deformer);
+      errors[std::size_t(p)] = pc.set_piece(piece.xyz.data(), index_t(piece.global.size()),
+        piece.adjacency, piece.gid.data(), piece.owned.data(), ex);
+      if (!errors[std::size_t(p)].empty())
+        return;
+      ChainMailDeformer& d = pc.deformer();
+      d.set_malleability(piece.malleability.data());
+      d.set_pinned(piece.pins.data());
+      setup(d);
+      for (const Frame& f : frames)
+        out[std::size_t(p)].push_back(record(d, pc.deform(f.grasp, f.pull, ex)));
+      sent[std::size_t(p)] = ex.bytes_sent();
+    });
   if (setup_errors)
     *setup_errors = errors;
   if (bytes)
@@ -293,27 +250,12 @@ Scene tet_slab(index_t nx, index_t ny, index_t nz)
 
 std::vector<int> striped(const Scene& s, int pieces)
 {
-  double lo = 1e300, hi = -1e300;
-  for (index_t v = 0; v < s.mesh.size(); ++v)
-  {
-    lo = std::min(lo, s.mesh.xyz[3 * std::size_t(v)]);
-    hi = std::max(hi, s.mesh.xyz[3 * std::size_t(v)]);
-  }
-  std::vector<int> owner(static_cast<std::size_t>(s.mesh.size()));
-  for (index_t v = 0; v < s.mesh.size(); ++v)
-    owner[std::size_t(v)] =
-      std::min(pieces - 1, int(double(pieces) * (s.mesh.xyz[3 * std::size_t(v)] - lo) / (hi - lo)));
-  return owner;
+  return geoshaping::testing::striped_owner(s.mesh.xyz, pieces);
 }
 
 std::vector<int> random_owner(const Scene& s, const std::vector<int>& choices, unsigned seed)
 {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<std::size_t> pick(0, choices.size() - 1);
-  std::vector<int> owner(static_cast<std::size_t>(s.mesh.size()));
-  for (int& o : owner)
-    o = choices[pick(rng)];
-  return owner;
+  return geoshaping::testing::random_owner(s.mesh.size(), choices, seed);
 }
 
 std::int64_t gid_at(const Scene& s, index_t v)

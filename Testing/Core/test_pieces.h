@@ -1,0 +1,54 @@
+#pragma once
+// A whole mesh split into pieces as ParaView's distributed pipeline hands them to ranks
+// (partitioned_chainmail.h): each piece holds the vertices it owns and one ring of
+// ghosts, every vertex with its global id. Shared by the partitioned tests and the
+// report's distributed section; O(pieces x n log n), for tests only.
+#include "geoshaping/adjacency.h"
+#include "geoshaping/partitioned_chainmail.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace geoshaping::testing
+{
+
+struct MeshPiece
+{
+  std::vector<index_t> global; // local -> whole-mesh vertex
+  std::vector<double> xyz;
+  Adjacency adjacency; // local ids
+  std::vector<std::int64_t> gid;
+  std::vector<std::uint8_t> owned;
+
+  index_t size() const { return index_t(global.size()); }
+  // The piece's values of a per-vertex array of the whole mesh.
+  template<class T>
+  std::vector<T> gather(const std::vector<T>& whole) const
+  {
+    std::vector<T> out;
+    out.reserve(global.size());
+    for (index_t v : global)
+      out.push_back(whole[std::size_t(v)]);
+    return out;
+  }
+};
+
+// Piece p holds the vertices whose owner is p, their neighbours (the ghost ring) and
+// extra[p] (more ghosts), in a shuffled local order (seeded), each row of its adjacency
+// sorted.
+std::vector<MeshPiece> split_mesh(const std::vector<double>& xyz, const Adjacency& adjacency,
+  const std::vector<std::int64_t>& gid, const std::vector<int>& owner, int pieces,
+  const std::vector<std::vector<index_t>>& extra = {}, unsigned seed = 1);
+
+// Owners by slabs of equal width along x (a spatial partition, like ParaView's
+// RedistributeDataSet in one direction).
+std::vector<int> striped_owner(const std::vector<double>& xyz, int pieces);
+// Each vertex owned by a random one of `choices`.
+std::vector<int> random_owner(index_t n, const std::vector<int>& choices, unsigned seed);
+
+// Runs body(piece, exchange) for pieces 0 .. pieces - 1, each in its own thread, with an
+// InProcessExchange of one shared hub (the tests' stand-in for mpiexec -n pieces).
+void run_in_pieces(int pieces, const std::function<void(int piece, Exchange& exchange)>& body);
+
+} // namespace geoshaping::testing
