@@ -267,7 +267,9 @@ void write_results(const Options& o, const Results& r)
          << fmt("%.2f", p.frame_ms) << " (" << p.iterations << " iterations) | "
          << fmt("%.3f", p.chainmail_ms) << " | " << fmt("%.0f", p.frame_ms / p.chainmail_ms)
          << "x |\n";
-  md << "\n## Scenes and every variant\n\n";
+  md << "\n";
+  write_distributed(md, r.distributed);
+  md << "## Scenes and every variant\n\n";
   for (const SceneResult& s : r.scenes)
   {
     md << "### " << s.scene.title << "\n\n"

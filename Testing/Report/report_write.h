@@ -1,5 +1,6 @@
 #pragma once
 // Output of the report: CSVs, per-vertex dumps for the pictures, and report.md.
+#include "report_distributed.h"
 #include "report_measure.h"
 #include "report_peer.h"
 #include "report_scale.h"
@@ -38,9 +39,10 @@ struct Results
 {
   std::vector<SceneResult> scenes;
   Table1 table1;
-  std::vector<PeerResult> peers; // the fault step, the Table 1 grid at 29,241
-  ScaleResult scale;             // refinement at 29,241
-  double seconds = 0.0;          // the report's run time
+  std::vector<PeerResult> peers;             // the fault step, the Table 1 grid at 29,241
+  ScaleResult scale;                         // refinement at 29,241
+  std::vector<DistributedScene> distributed; // the scenes split into pieces (issue 14)
+  double seconds = 0.0;                      // the report's run time
 };
 
 // Per-vertex CSVs behind the Figure 6 (fault step) and Figure 8 (equal malleability)
