@@ -36,6 +36,16 @@ inline void prefetch(const void* p)
   (void)p;
 #endif
 }
+
+// A per-vertex array in the caller's numbering brought into the deformer's (renumbered)
+// layout: out[i] = f(values[outer_of[i]]).
+template<class T, class S, class F>
+void to_inner(std::vector<T>& out, const S* values, const std::vector<index_t>& outer_of, F f)
+{
+  out.resize(outer_of.size());
+  for (std::size_t i = 0; i < outer_of.size(); ++i)
+    out[i] = f(values[std::size_t(outer_of[i])]);
+}
 } // namespace
 
 bool ChainMailDeformer::bounds(
@@ -230,29 +240,21 @@ void ChainMailDeformer::set_pinned(const std::uint8_t* mask)
     return;
   }
   pinned_.assign(mask, mask + nodes_.size());
-  pinned_inner_.resize(nodes_.size());
-  for (std::size_t i = 0; i < nodes_.size(); ++i)
-    pinned_inner_[i] = pinned_[std::size_t(outer_of_[i])];
+  to_inner(pinned_inner_, mask, outer_of_, [](std::uint8_t m) { return m; });
 }
 
 void ChainMailDeformer::set_global_ids(const std::int64_t* gid)
 {
   gid_.clear();
-  if (!gid)
-    return;
-  gid_.resize(nodes_.size());
-  for (std::size_t i = 0; i < nodes_.size(); ++i)
-    gid_[i] = gid[std::size_t(outer_of_[i])];
+  if (gid)
+    to_inner(gid_, gid, outer_of_, [](std::int64_t g) { return g; });
 }
 
 void ChainMailDeformer::set_owned(const std::uint8_t* mask)
 {
   ghost_.clear();
-  if (!mask)
-    return;
-  ghost_.resize(nodes_.size());
-  for (std::size_t i = 0; i < nodes_.size(); ++i)
-    ghost_[i] = mask[std::size_t(outer_of_[i])] == 0;
+  if (mask)
+    to_inner(ghost_, mask, outer_of_, [](std::uint8_t m) { return m == 0; });
 }
 
 void ChainMailDeformer::reset()
