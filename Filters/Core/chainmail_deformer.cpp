@@ -367,6 +367,13 @@ void ChainMailDeformer::move_vertex(index_t v, const Eigen::Vector3d& d, const S
   move(index_t(inner(v)), d, -1, root);
 }
 
+void ChainMailDeformer::skip_to_superstep(std::uint32_t n)
+{
+  if (n < superstep_)
+    throw std::invalid_argument("ChainMailDeformer: supersteps only go forward");
+  superstep_ = n;
+}
+
 std::size_t ChainMailDeformer::superstep(const SuperstepKey& key)
 {
   std::size_t begin, end;

@@ -4,12 +4,16 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 namespace geoshaping
 {
 
 namespace
 {
+// The global id of the marker record that leads a run-ahead superstep's frontier.
+constexpr std::int64_t round_marker = std::numeric_limits<std::int64_t>::min();
+
 std::int64_t bits(double x)
 {
   return bit_cast<std::int64_t>(x);
@@ -44,6 +48,16 @@ std::vector<std::vector<std::int64_t>> Exchange::all_to_all(
   return in;
 }
 
+std::vector<RoundState> Exchange::all_round_states(const RoundState& state)
+{
+  std::vector<RoundState> out;
+  for (const auto& w : all_gather({ std::int64_t(state.pending[0]), std::int64_t(state.pending[1]),
+         std::int64_t(state.pending[2]), std::int64_t(state.superstep) }))
+    out.push_back(
+      { { std::uint64_t(w[0]), std::uint64_t(w[1]), std::uint64_t(w[2]) }, std::uint64_t(w[3]) });
+  return out;
+}
+
 std::string PartitionedChainMail::set_piece(const double* xyz, index_t n, Adjacency adjacency,
   const std::int64_t* gid, const std::uint8_t* owned, Exchange& exchange)
 {
@@ -52,9 +66,13 @@ std::string PartitionedChainMail::set_piece(const double* xyz, index_t n, Adjace
   // The whole mesh's origin: the centre of the union of the pieces' bounding boxes.
   Eigen::Vector3d lo, hi;
   const bool any = ChainMailDeformer::bounds(xyz, n, lo, hi);
-  const auto boxes = exchange.all_gather(
-    { any, bits(lo.x()), bits(lo.y()), bits(lo.z()), bits(hi.x()), bits(hi.y()), bits(hi.z()) });
+  const bool reserved = std::find(gid, gid + n, round_marker) != gid + n;
+  const auto boxes = exchange.all_gather({ any, bits(lo.x()), bits(lo.y()), bits(lo.z()),
+    bits(hi.x()), bits(hi.y()), bits(hi.z()), reserved });
   bool first = true;
+  for (const auto& b : boxes)
+    if (b[7])
+      return "global id " + std::to_string(round_marker) + " is reserved";
   for (const auto& b : boxes)
   {
     if (!b[0])
@@ -166,10 +184,11 @@ std::string PartitionedChainMail::set_piece(const double* xyz, index_t n, Adjace
   return {};
 }
 
-void PartitionedChainMail::exchange_frontier(Exchange& exchange)
+bool PartitionedChainMail::fill_outbox()
 {
   for (auto& box : outbox_)
     box.clear();
+  bool any = false;
   const auto& moved = deformer_.moved();
   for (std::size_t k = deformer_.superstep_begin(); k < moved.size(); ++k)
   {
@@ -179,19 +198,42 @@ void PartitionedChainMail::exchange_frontier(Exchange& exchange)
     const Eigen::Vector3d& d = deformer_.displacement(v);
     for (std::uint32_t i = subscriber_offsets_[std::size_t(v)];
          i < subscriber_offsets_[std::size_t(v) + 1]; ++i)
+    {
       outbox_[subscribers_[i]].push_back(
         { deformer_.global_id(v), { d.x(), d.y(), d.z() }, deformer_.root(v) });
+      any = true;
+    }
   }
+  return any;
+}
+
+void PartitionedChainMail::trade(Exchange& exchange, bool marked)
+{
+  if (marked)
+    for (auto& box : outbox_)
+      if (!box.empty())
+        box.insert(box.begin(),
+          { round_marker, { 0.0, 0.0, 0.0 }, { deformer_.superstep_index(), round_marker } });
   for (const auto& box : exchange.exchange(send_to_, outbox_, receive_from_))
     for (const MovedVertex& m : box)
     {
+      if (m.gid == round_marker)
+      {
+        deformer_.skip_to_superstep(m.root.generation);
+        continue;
+      }
       const auto it = local_of_.find(m.gid);
       if (it != local_of_.end() && !deformer_.owned(it->second))
         deformer_.move_vertex(
           it->second, { m.displacement[0], m.displacement[1], m.displacement[2] }, m.root);
     }
+}
+
+void PartitionedChainMail::move_aliases()
+{
   if (aliases_.empty())
     return;
+  const auto& moved = deformer_.moved();
   const std::size_t end = moved.size();
   for (std::size_t k = deformer_.superstep_begin(); k < end; ++k)
   {
@@ -247,15 +289,61 @@ FrameResult PartitionedChainMail::deform(
 
   if (g >= 0)
     deformer_.move_vertex(g, displacement);
-  exchange_frontier(exchange);
+  rounds_ = 0;
+  fill_outbox();
+  trade(exchange, false);
+  move_aliases();
   deformer_.end_superstep();
-  for (SuperstepKey key; (key = exchange.all_min(deformer_.pending())) != SuperstepQueue::none;)
+  const std::size_t me = std::size_t(exchange.piece());
+  for (;;)
   {
-    result.examined += deformer_.superstep(key);
-    exchange_frontier(exchange);
-    deformer_.end_superstep();
-    ++supersteps_;
+    // The lowest key anywhere, the lowest on the other pieces, the superstep reached.
+    SuperstepKey key = SuperstepQueue::none, others = SuperstepQueue::none;
+    std::uint64_t reached = 0;
+    const auto states =
+      exchange.all_round_states({ deformer_.pending(), deformer_.superstep_index() });
+    for (std::size_t q = 0; q < states.size(); ++q)
+    {
+      key = std::min(key, states[q].pending);
+      if (q != me)
+        others = std::min(others, states[q].pending);
+      reached = std::max(reached, states[q].superstep);
+    }
+    deformer_.skip_to_superstep(std::uint32_t(reached));
+    if (key == SuperstepQueue::none)
+      break;
+    ++rounds_;
+    bool ended = false; // the last superstep run ahead was ended here (it sent nothing)
+    bool loud = false;
+    if (deformer_.pending() == key)
+    {
+      result.examined += deformer_.superstep(key);
+      loud = fill_outbox();
+      // Alone with the lowest key: on to the next while nothing needs sending.
+      while (!loud && key < others)
+      {
+        move_aliases();
+        deformer_.end_superstep();
+        const SuperstepKey next = deformer_.pending();
+        if (!(next < others))
+        {
+          ended = true;
+          break;
+        }
+        result.examined += deformer_.superstep(next);
+        loud = fill_outbox();
+      }
+    }
+    else
+      fill_outbox(); // empties the outboxes: nothing moved here
+    trade(exchange, loud && deformer_.superstep_index() > reached);
+    if (!ended)
+    {
+      move_aliases();
+      deformer_.end_superstep();
+    }
   }
+  supersteps_ = deformer_.superstep_index() - 1;
   result.ok = true;
   for (index_t v : deformer_.moved())
     result.moved += deformer_.owned(v);

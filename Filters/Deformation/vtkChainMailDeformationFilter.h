@@ -279,10 +279,12 @@ public:
 
   ///@{
   /// Figures of the last update on data split across processes (docs/mpi.md; 0 in one
-  /// process): bytes of moved frontier sent between processes (all processes' sum) and
-  /// supersteps run.
+  /// process): bytes of moved frontier sent between processes (all processes' sum),
+  /// supersteps run, and rounds: the synchronisations between processes they took (a
+  /// process alone with the lowest key runs ahead while it has nothing to send).
   vtkIdType GetNumberOfBytesExchanged() { return this->Statistics.NumberOfBytesExchanged; }
   vtkIdType GetNumberOfSupersteps() { return this->Statistics.NumberOfSupersteps; }
+  vtkIdType GetNumberOfRounds() { return this->Statistics.NumberOfRounds; }
   ///@}
 
   ///@{
@@ -378,6 +380,7 @@ protected:
     double LastRelaxationMilliseconds = 0.0;
     vtkIdType NumberOfBytesExchanged = 0;
     vtkIdType NumberOfSupersteps = 0;
+    vtkIdType NumberOfRounds = 0;
   };
   FrameStatistics Statistics;
   int NumberOfRebuilds = 0;

@@ -29,6 +29,18 @@ public:
   int pieces() const override { return this->Controller->GetNumberOfProcesses(); }
   int piece() const override { return this->Controller->GetLocalProcessId(); }
 
+  std::vector<geoshaping::RoundState> all_round_states(const geoshaping::RoundState& state) override
+  {
+    std::vector<unsigned long long> all(4 * std::size_t(this->pieces()));
+    const unsigned long long mine[4] = { state.pending[0], state.pending[1], state.pending[2],
+      state.superstep };
+    this->Controller->AllGather(mine, all.data(), 4);
+    std::vector<geoshaping::RoundState> out;
+    for (std::size_t p = 0; p < all.size(); p += 4)
+      out.push_back({ { all[p], all[p + 1], all[p + 2] }, all[p + 3] });
+    return out;
+  }
+
   geoshaping::SuperstepKey all_min(const geoshaping::SuperstepKey& value) override
   {
     std::vector<unsigned long long> all(3 * std::size_t(this->pieces()));
@@ -352,6 +364,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     }
     this->Statistics.NumberOfBytesExchanged = vtkIdType(bytes);
     this->Statistics.NumberOfSupersteps = vtkIdType(state.Partition->supersteps());
+    this->Statistics.NumberOfRounds = vtkIdType(state.Partition->rounds());
     this->Statistics.NumberOfDisplacedPoints = vtkIdType(moved);
     this->Statistics.NumberOfExaminedCandidates = vtkIdType(examined);
     this->Statistics.LastGraspPointId = r.ok ? this->GraspPointId : -1;

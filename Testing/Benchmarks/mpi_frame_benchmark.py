@@ -3,7 +3,7 @@
 about time.
 
   mpiexec --oversubscribe -n N pvbatch --sym mpi_frame_benchmark.py [--sides 1000,4000]
-      [--frames 15] [--small 2.0] [--large 60.0]
+      [--frames 15] [--small 2.0] [--large 60.0] [--grasp-row 0.5]
 
 Each rank builds its piece of a flat S x S triangle grid (spacing 1, uniform
 malleability 0.7, FIFO Priority) directly: the rows it owns and one ghost row on each
@@ -35,6 +35,9 @@ parser.add_argument("--sides", default="1000,4000")
 parser.add_argument("--frames", type=int, default=15)
 parser.add_argument("--small", type=float, default=2.0)
 parser.add_argument("--large", type=float, default=60.0)
+parser.add_argument("--grasp-row", type=float, default=0.5,
+                    help="the grasp's row as a fraction of the side (0.5: the centre, on a rank "
+                         "border for 2 and 4 ranks)")
 args = parser.parse_args([a for a in sys.argv[1:] if a.startswith("--") or not a.endswith(".py")])
 
 controller = vtkMultiProcessController.GetGlobalController()
@@ -105,7 +108,7 @@ for side in [int(s) for s in args.sides.split(",")]:
     chain.MalleabilityArray = ["POINTS", "None"]
     chain.DefaultMalleability = 0.7
     chain.CandidateQueue = "FIFO Priority"
-    chain.GraspPointId = (side // 2) * side + side // 2
+    chain.GraspPointId = int(args.grasp_row * side) * side + side // 2
     controller.Barrier()
     start = time.perf_counter()
     chain.Displacement = [0.0, 0.0, 0.0]
@@ -125,18 +128,20 @@ for frame in range(args.frames):
             core = slowest(info(chain, "LastDeformationMilliseconds")) * 1e-3
             samples.setdefault((side, name), []).append(
                 (wall, core, info(chain, "NumberOfDisplacedPoints"),
-                 info(chain, "NumberOfBytesExchanged"), info(chain, "NumberOfSupersteps")))
+                 info(chain, "NumberOfBytesExchanged"), info(chain, "NumberOfSupersteps"),
+                 info(chain, "NumberOfRounds")))
 
 if rank == 0:
     print("ranks %d, %d frames each, medians" % (nranks, args.frames))
     for side, _, setup in grids:
         print("grid %d x %d = %d vertices: first update (setup) %.2f s" % (side, side, side * side, setup))
-    print("%10s %6s %10s %10s %10s %12s %10s %10s" % ("vertices", "grasp", "displaced", "frame ms",
-                                                       "core ms", "bytes", "bytes/disp", "supersteps"))
+    print("%10s %6s %10s %10s %10s %12s %10s %10s %7s" % (
+        "vertices", "grasp", "displaced", "frame ms", "core ms", "bytes", "bytes/disp", "supersteps",
+        "rounds"))
     for (side, name), rows in samples.items():
         r = np.median(np.array(rows, dtype=float), axis=0)
-        print("%10d %6s %10d %10.2f %10.2f %12d %10.2f %10d" % (
-            side * side, name, r[2], 1e3 * r[0], 1e3 * r[1], r[3], r[3] / max(r[2], 1), r[4]))
+        print("%10d %6s %10d %10.2f %10.2f %12d %10.2f %10d %7d" % (
+            side * side, name, r[2], 1e3 * r[0], 1e3 * r[1], r[3], r[3] / max(r[2], 1), r[4], r[5]))
     for name in ("small", "large"):
         keyed = [(side, np.median([s[0] for s in samples[(side, name)]])) for side, _, _ in grids]
         if len(keyed) > 1:

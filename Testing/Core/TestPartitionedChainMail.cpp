@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <random>
 
@@ -423,7 +424,62 @@ TEST(PartitionedChainMail, OnlyTheMovedFrontierCrossesPieces)
     if (parts[0].owned[v] && got[0][0].moved[v] &&
         std::find(parts[1].gid.begin(), parts[1].gid.end(), parts[0].gid[v]) != parts[1].gid.end())
       ++moved_held_elsewhere;
-  EXPECT_EQ(bytes[0], moved_held_elsewhere * sizeof(MovedVertex));
+  // Plus one marker record per message of a superstep that piece 0 ran ahead alone.
+  ASSERT_EQ(bytes[0] % sizeof(MovedVertex), 0u);
+  const std::size_t records = bytes[0] / sizeof(MovedVertex);
+  EXPECT_GE(records, moved_held_elsewhere);
+  EXPECT_LE(records, moved_held_elsewhere + 3) << "markers: at most a few rounds send one";
+}
+
+TEST(PartitionedChainMail, PiecesRunAheadAloneWhileTheyHaveNothingToSend)
+{
+  // One piece: a frame is one round. Two stripes, a grasp far from the border: most
+  // supersteps run on piece 0 alone, with no synchronisation; the same bits (the tests
+  // above) and the same superstep count as the whole mesh's frame.
+  const Scene s = painted_grid(40, 20);
+  const std::vector<Frame> frames = { { gid_at(s, 10 * 40 + 5), { 0.0, 0.0, 3.0 } } };
+  for (int pieces : { 1, 2, 3 })
+  {
+    auto parts = split(s, striped(s, pieces), pieces);
+    std::vector<std::size_t> supersteps(parts.size()), rounds(parts.size());
+    geoshaping::testing::run_in_pieces(pieces,
+      [&](int p, Exchange& ex)
+      {
+        Piece& piece = parts[std::size_t(p)];
+        ChainMailDeformer d;
+        PartitionedChainMail pc(d);
+        ASSERT_EQ(pc.set_piece(piece.xyz.data(), piece.size(), piece.adjacency, piece.gid.data(),
+                    piece.owned.data(), ex),
+          "");
+        d.set_malleability(piece.malleability.data());
+        d.set_pinned(piece.pins.data());
+        ASSERT_TRUE(pc.deform(frames[0].grasp, frames[0].pull, ex).ok);
+        supersteps[std::size_t(p)] = pc.supersteps();
+        rounds[std::size_t(p)] = pc.rounds();
+      });
+    for (int p = 1; p < pieces; ++p)
+    {
+      EXPECT_EQ(supersteps[std::size_t(p)], supersteps[0]);
+      EXPECT_EQ(rounds[std::size_t(p)], rounds[0]);
+    }
+    EXPECT_GT(supersteps[0], 20u);
+    if (pieces == 1)
+      EXPECT_EQ(rounds[0], 1u);
+    else
+      EXPECT_LT(2 * rounds[0], supersteps[0]) << pieces << " pieces";
+  }
+}
+
+TEST(PartitionedChainMail, TheMarkersGlobalIdIsRefusedOnEveryPiece)
+{
+  Scene s = painted_grid(12, 10);
+  s.gid[5] = std::numeric_limits<std::int64_t>::min();
+  auto parts = split(s, striped(s, 2), 2);
+  std::vector<std::string> errors;
+  run_pieces(
+    parts, {}, [](ChainMailDeformer&) {}, &errors);
+  for (const std::string& e : errors)
+    EXPECT_NE(e.find("reserved"), std::string::npos) << e;
 }
 
 TEST(PartitionedChainMail, APointHeldTwiceByAPieceMovesAsOne)

@@ -27,9 +27,9 @@ struct Gathered
 
 struct Run
 {
-  std::vector<Gathered> frames;               // the scene's pull, then the drag
-  std::vector<double> ms;                     // the timed repetitions at the scene's pull
-  std::vector<std::size_t> bytes, supersteps; // per frame (bytes: all pieces)
+  std::vector<Gathered> frames;                       // the scene's pull, then the drag
+  std::vector<double> ms;                             // the timed repetitions at the scene's pull
+  std::vector<std::size_t> bytes, supersteps, rounds; // per frame (bytes: all pieces)
 };
 
 std::vector<Eigen::Vector3d> pulls(const Scene& s, int drag_steps)
@@ -79,6 +79,7 @@ Run run_whole(const Scene& s, ChainMailDeformer& d, const std::vector<std::int64
     run.frames.push_back(std::move(g));
     run.bytes.push_back(0);
     run.supersteps.push_back(0);
+    run.rounds.push_back(0);
   }
   return run;
 }
@@ -94,6 +95,7 @@ Run run_pieces(const Scene& s, std::vector<MeshPiece>& parts, std::int64_t grasp
   run.frames.assign(frames.size(),
     Gathered{ Displacements(n, Eigen::Vector3d::Zero()), std::vector<std::uint8_t>(n, 0) });
   run.supersteps.assign(frames.size(), 0);
+  run.rounds.assign(frames.size(), 0);
   std::vector<std::vector<std::size_t>> bytes(
     parts.size(), std::vector<std::size_t>(frames.size(), 0));
   std::vector<std::string> errors(parts.size());
@@ -128,7 +130,10 @@ Run run_pieces(const Scene& s, std::vector<MeshPiece>& parts, std::int64_t grasp
         }
         bytes[std::size_t(p)][i] = ex.bytes_sent() - before;
         if (p == 0)
+        {
           run.supersteps[i] = pc.supersteps();
+          run.rounds[i] = pc.rounds();
+        }
         for (index_t v = 0; v < piece.size(); ++v)
           if (piece.owned[std::size_t(v)] && d.moved_this_frame(v))
           {
@@ -186,6 +191,7 @@ DistributedRow measure(const LinkMesh& lm, const Run& run, const std::vector<Eig
   }
   row.e_temporal = temporal.value();
   row.supersteps = run.supersteps.front();
+  row.rounds = run.rounds.front();
   row.bytes_per_frame =
     double(std::accumulate(run.bytes.begin() + 1, run.bytes.end(), std::size_t(0))) /
     double(std::max<std::size_t>(1, run.bytes.size() - 1));
@@ -272,11 +278,14 @@ void write_distributed(std::ostream& md, const std::vector<DistributedScene>& sc
         "every piece's owned displacements gathered and the errors measured on that gathered "
         "output. `identical`: every vertex's displacement and moved flag equal to the single "
         "process, bit for bit, at the pull and over the drag (the report exits with an error "
-        "otherwise). Bytes: frontier sent by all pieces per frame of the drag. ms: the frame at "
+        "otherwise). Rounds: the synchronisations of that frame (a piece alone with the lowest "
+        "key runs ahead while it has nothing to send; partitioned_chainmail.h). Bytes: frontier "
+        "sent by all pieces per frame of the drag. ms: the frame at "
         "the pull, median, wall clock on piece 0, threads on this machine's cores (more pieces "
         "than cores share them).\n\n";
   md << "| scene | frame | partition | identical | displaced | E_rigid | E_link | E_temporal | "
-        "supersteps | bytes/frame | ms |\n|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+        "supersteps | rounds | bytes/frame | ms "
+        "|\n|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const DistributedScene& s : scenes)
     for (const DistributedRow& r : s.rows)
       md << "| " << s.title << " | " << frame_name(r.frame) << " | " << r.partition << " | "
@@ -286,6 +295,7 @@ void write_distributed(std::ostream& md, const std::vector<DistributedScene>& sc
          << " | " << r.displaced << " | " << num("%.3g", r.e_rigid) << " | "
          << num("%.3g", r.e_link) << " | " << num("%.3g", r.e_temporal) << " | "
          << (r.pieces == 0 ? "—" : std::to_string(r.supersteps)) << " | "
+         << (r.pieces == 0 ? "—" : std::to_string(r.rounds)) << " | "
          << (r.pieces == 0 ? "—" : num("%.0f", r.bytes_per_frame)) << " | "
          << num("%.3f", r.median_ms) << " |\n";
   md << "\n";

@@ -25,6 +25,7 @@ struct DistributedRow
   std::size_t displaced = 0;
   double e_rigid = 0.0, e_link = 0.0, e_temporal = 0.0;
   std::size_t supersteps = 0; // of the frame at the scene's pull
+  std::size_t rounds = 0;     // its synchronisations (pieces run ahead alone)
   double bytes_per_frame = 0; // sent by all pieces, mean over the drag's frames
   double median_ms = 0.0;     // frame at the scene's pull, wall clock on piece 0
 };

@@ -150,6 +150,14 @@ public:
   // superstep, and starts the next.
   void end_superstep();
   std::size_t superstep_begin() const { return superstep_begin_; }
+  // The current superstep's number (0: the grasp's; an entry's generation is 1 + the
+  // number of the superstep its sponsor moved in). A partitioned driver whose piece sat
+  // out supersteps that another piece ran alone brings it to the others' number:
+  // skip_to_superstep(n), n >= superstep_index(), is n - superstep_index() supersteps in
+  // which this piece moved nothing (what it moved since the last end_superstep(),
+  // ghosts received, belongs to superstep n).
+  std::uint32_t superstep_index() const { return superstep_; }
+  void skip_to_superstep(std::uint32_t n);
 
   // Editing (edit_history.h). The rest shape can change: `commit()` makes the last
   // frame's shape the rest shape of the vertices it moved (x0 += u, u = 0), in

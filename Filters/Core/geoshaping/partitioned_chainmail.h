@@ -25,10 +25,24 @@
 // whole mesh's displacement for each vertex it owns, and each vertex moves at most
 // once, on its owner. Pins and rigid regions need nothing more.
 //
-// Cost of a frame: the supersteps' work is O(displaced on this piece), plus per
-// superstep one global min and one message to and from each neighbour piece carrying
-// the moved frontier (sizeof(MovedVertex) = 48 bytes per moved vertex and piece holding
-// it as a ghost).
+// Rounds: the supersteps run in rounds, one synchronisation each (a gather of every
+// piece's lowest pending key and superstep number, then the frontier exchange). A piece
+// whose lowest key is below every other piece's runs ahead alone: it goes on to its
+// next key while the superstep it just ran moved nothing another piece holds (nothing to
+// send) and that next key is still below the others'. This is the same sequence of
+// supersteps as one per round: the others' keys cannot change while nothing reaches them,
+// so each key run ahead is the global minimum when it runs. A superstep's generation is
+// its number in the frame, so a piece that sat out supersteps skips to the number the
+// others reached (ChainMailDeformer::skip_to_superstep): from the gathered numbers at the
+// start of a round, or, for a piece that receives the frontier of a run-ahead superstep,
+// from a marker record at the front of that message (global id INT64_MIN, reserved; its
+// root.generation is the superstep's number).
+//
+// Cost of a frame: the supersteps' work is O(displaced on this piece), plus per round
+// one gather of 32 bytes per piece and one message to and from each neighbour piece
+// carrying the moved frontier (sizeof(MovedVertex) = 48 bytes per moved vertex and piece
+// holding it as a ghost, plus one marker after a run-ahead). Rounds <= supersteps; on
+// one piece a frame is one round.
 // Setting up a piece gathers every piece's ghost ids on every piece (once per mesh).
 //
 // Only FIFO and FIFO Priority are partitioned: Priority (heap order) and Max Violation
@@ -49,6 +63,13 @@ struct MovedVertex
   std::int64_t gid;
   double displacement[3];
   SuperstepRoot root;
+};
+
+// What a piece tells the others at the start of a round of supersteps.
+struct RoundState
+{
+  SuperstepKey pending;    // its lowest pending key (SuperstepQueue::none: nothing)
+  std::uint64_t superstep; // its superstep number (ChainMailDeformer::superstep_index)
 };
 
 // Communication between the pieces of a partitioned mesh, like an MPI communicator:
@@ -74,6 +95,9 @@ public:
   // everything); a transport overrides it with messages to the pieces concerned.
   virtual std::vector<std::vector<std::int64_t>> all_to_all(
     const std::vector<std::vector<std::int64_t>>& out);
+  // Every piece's `state`, by piece: one collective (the default goes through
+  // all_gather; a transport overrides it with one fixed-size gather).
+  virtual std::vector<RoundState> all_round_states(const RoundState& state);
   // Bytes this piece sent through exchange().
   std::size_t bytes_sent() const { return bytes_sent_; }
 
@@ -107,9 +131,19 @@ public:
   FrameResult deform(std::int64_t grasp, const Eigen::Vector3d& displacement, Exchange& exchange);
   // Supersteps of the last frame (the same on every piece).
   std::size_t supersteps() const { return supersteps_; }
+  // Rounds (synchronisations) of the last frame, after the grasp's (the same on every
+  // piece): what a frame's latency grows with.
+  std::size_t rounds() const { return rounds_; }
 
 private:
-  void exchange_frontier(Exchange& exchange);
+  // Fills the outboxes with this superstep's owned moved vertices that other pieces hold;
+  // true if any.
+  bool fill_outbox();
+  // Sends the outboxes (with a marker of this superstep's number first when `marked`)
+  // and moves the ghosts received.
+  void trade(Exchange& exchange, bool marked);
+  // Moves the other copies of the points moved in this superstep.
+  void move_aliases();
 
   ChainMailDeformer& deformer_;
   std::unordered_map<std::int64_t, index_t> local_of_; // global id -> local id
@@ -120,6 +154,7 @@ private:
   std::vector<std::uint32_t> subscribers_;
   std::vector<std::vector<MovedVertex>> outbox_;
   std::size_t supersteps_ = 0;
+  std::size_t rounds_ = 0;
 };
 
 } // namespace geoshaping
