@@ -46,6 +46,16 @@ ProjectionReport FramePasses::refine(
   return report;
 }
 
+ProjectionReport FramePasses::refine_with(const ChainMailDeformer& deformer,
+  const std::function<ProjectionReport(const LinkMesh&, LinkProjector&)>& run)
+{
+  ensure_links(deformer);
+  const ProjectionReport report = run(links_, *projector_);
+  refining_ = true;
+  add_beyond(deformer, projector_->changed());
+  return report;
+}
+
 RelaxationReport FramePasses::relax(
   const ChainMailDeformer& deformer, index_t grasp, const RelaxationOptions& options)
 {

@@ -818,6 +818,23 @@ bool LinkProjector::finish_iteration(ProjectionReport& report, double violation,
   return report.converged || (options.stop && options.stop());
 }
 
+bool link_axis_slab(const LinkMesh& mesh, index_t c, index_t s, int axis, double& lo, double& hi)
+{
+  return axis_slab(mesh, c, s, axis, lo, hi);
+}
+
+void LinkProjector::assign(const std::vector<index_t>& vertices, const Displacements& values,
+  const std::vector<index_t>& changed)
+{
+  clear();
+  for (std::size_t i = 0; i < vertices.size() && i < values.size(); ++i)
+  {
+    u_[std::size_t(vertices[i])] = values[i];
+    region_.push_back(vertices[i]);
+  }
+  changed_ = changed;
+}
+
 const char* solver_name(ProjectionSolver solver)
 {
   switch (solver)

@@ -59,10 +59,12 @@
  * takes point identity from the point GlobalIds and ownership from vtkGhostType, and
  * propagates across processes in supersteps (the core's partitioned_chainmail.h): the
  * result equals the one-process result bit for bit. GraspPointId is then a global id,
- * as it is in one process whenever the input carries point GlobalIds. Not distributed
- * yet, refused with the same error on every process (output = input): refinement,
- * edits, grasp nearest to a position, the Priority and Max Violation queues, and input
- * without GlobalIds.
+ * as it is in one process whenever the input carries point GlobalIds. Refinement runs
+ * there with RefinementSolver REFINEMENT_ENVELOPE in the AXES frame (the core's
+ * partitioned_envelope.h, the same bits as one process). Not distributed yet, refused
+ * with the same error on every process (output = input): the other refinement solvers
+ * or the LINK frame, relaxation, edits, grasp nearest to a position, the Priority and
+ * Max Violation queues.
  */
 #ifndef vtkChainMailDeformationFilter_h
 #define vtkChainMailDeformationFilter_h

@@ -28,10 +28,12 @@
 #include "geoshaping/edit_session.h"
 #include "geoshaping/frame_passes.h"
 #include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/partitioned_envelope.h"
 #include "geoshaping/sparse_normals.h"
 
 #include <chrono>
 #include <initializer_list>
+#include <memory>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -109,6 +111,9 @@ struct vtkChainMailDeformationFilter::vtkInternals
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   // The distributed path (more than one process): drives Deformer over this piece.
   std::unique_ptr<geoshaping::PartitionedChainMail> Partition;
+  // Its refinement (the partitioned envelope), set up on the first refinement after
+  // the partition changed.
+  std::shared_ptr<geoshaping::PartitionedEnvelope> Envelope;
   // Its point GlobalIds when the input has none (geoshaping::coordinate_ids), shown in
   // the output; null when the input has its own.
   vtkSmartPointer<vtkIdTypeArray> GeneratedIds;

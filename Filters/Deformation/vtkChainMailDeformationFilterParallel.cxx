@@ -2,6 +2,7 @@
 // holds a piece with one ghost level; the core's PartitionedChainMail propagates across
 // processes through a geoshaping::Exchange over the global vtkMultiProcessController.
 #include "vtkChainMailDeformationFilterInternals.h"
+#include "vtkChainMailDeformationFilterParallelRefine.h"
 
 #include "vtkCommunicator.h"
 #include "vtkDataSetAttributes.h"
@@ -192,8 +193,13 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
 
   // Not distributed yet: decided from properties, so the same on every process.
   std::string refused;
-  if (this->RefinementIterations > 0)
-    refused = "RefinementIterations > 0 (refinement)";
+  if (this->RefinementIterations > 0 &&
+      (this->RefinementSolver != REFINEMENT_ENVELOPE || this->ValidRegionFrame != AXES))
+    refused =
+      std::string("refinement with RefinementSolver ") +
+      geoshaping::solver_name(static_cast<geoshaping::ProjectionSolver>(this->RefinementSolver)) +
+      (this->ValidRegionFrame == AXES ? " in the Axes frame" : " in the Link frame") +
+      " (use RefinementSolver Envelope with ValidRegionFrame Axes)";
   else if (this->RelaxationIterations > 0)
     refused = "RelaxationIterations > 0 (relaxation)";
   else if (!state.Edits.records().empty())
@@ -298,6 +304,8 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       std::copy(gid.begin(), gid.end(), state.GeneratedIds->GetPointer(0));
     }
     state.Partition = std::make_unique<geoshaping::PartitionedChainMail>(state.Deformer);
+    state.Envelope.reset(); // set up again on the next refinement
+    state.Passes.invalidate();
     const std::string error = state.Partition->set_piece(
       xyz.data(), geoshaping::index_t(n), std::move(adjacency), gid.data(), owned.data(), ex);
     state.MalleabilitySource = nullptr; // set_piece reset the deformer's arrays
@@ -353,7 +361,20 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     {
       vtkErrorMacro("No deformation: " << r.message << "; output is the undeformed input.");
     }
-    // Totals over all processes.
+    PartitionedRefinement refined;
+    if (r.ok && this->RefinementIterations > 0) // collective; Envelope in the Axes frame
+    {
+      geoshaping::ProjectionOptions options;
+      options.max_iterations = this->RefinementIterations;
+      options.tolerance = this->RefinementTolerance;
+      options.solver = geoshaping::ProjectionSolver::envelope;
+      refined = RefinePartitioned(
+        state.Passes, state.Deformer, state.Envelope, this->GraspPointId, options, ex);
+      this->Statistics.LastRefinementMilliseconds = refined.milliseconds;
+      this->Statistics.NumberOfRefinementSweeps = refined.report.iterations;
+      this->Statistics.NumberOfRefinedPoints = vtkIdType(refined.refined);
+    }
+    // Totals over all processes (the bytes include the refinement's).
     std::int64_t moved = 0, examined = 0, bytes = 0;
     for (const auto& v : ex.all_gather(
            { std::int64_t(r.moved), std::int64_t(r.examined), std::int64_t(ex.bytes_sent()) }))
@@ -363,14 +384,17 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       bytes += v[2];
     }
     this->Statistics.NumberOfBytesExchanged = vtkIdType(bytes);
-    this->Statistics.NumberOfSupersteps = vtkIdType(state.Partition->supersteps());
-    this->Statistics.NumberOfRounds = vtkIdType(state.Partition->rounds());
+    // Each superstep of the refinement's label correction is one round.
+    this->Statistics.NumberOfSupersteps =
+      vtkIdType(state.Partition->supersteps() + refined.supersteps);
+    this->Statistics.NumberOfRounds = vtkIdType(state.Partition->rounds() + refined.supersteps);
     this->Statistics.NumberOfDisplacedPoints = vtkIdType(moved);
     this->Statistics.NumberOfExaminedCandidates = vtkIdType(examined);
     this->Statistics.LastGraspPointId = r.ok ? this->GraspPointId : -1;
     if (r.ok && n > 0 && !this->OutputFits())
     {
       state.Deformer.reset();
+      state.Passes.begin_frame();
       this->Statistics.NumberOfDisplacedPoints = 0;
       this->Statistics.LastGraspPointId = -1;
     }

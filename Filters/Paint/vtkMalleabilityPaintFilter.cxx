@@ -1,7 +1,9 @@
 #include "vtkMalleabilityPaintFilter.h"
 
+#include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkGeoShapingAdapter.h"
+#include "vtkGeoShapingControllerExchange.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -14,9 +16,11 @@
 #include "vtkSparseArrayChanges.h"
 #include "vtkSparsePointChanges.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "geoshaping/brush.h"
+#include "geoshaping/partitioned_geodesic.h"
 #include "geoshaping/transfer_function.h"
 
 #include <algorithm>
@@ -25,6 +29,7 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -77,7 +82,66 @@ struct vtkMalleabilityPaintFilter::vtkInternals
   // Rebuilds what depends on the geometry when it changed; false on bad points.
   bool Update(vtkPointSet* input, vtkMalleabilityPaintFilter* self);
   geoshaping::PointQueries Queries();
+
+  // The id a tie for the nearest vertex goes by: the point GlobalIds when the input has
+  // them (one per point), else the point id; copied when that array changes.
+  vtkDataArray* IdSource = nullptr;
+  vtkMTimeType IdTime = 0;
+  std::vector<std::int64_t> Ids; // empty: the point ids
+  void UpdateIds(vtkPointSet* input);
+  // The vertex nearest p, ties to the lowest id (-1 when there is none).
+  geoshaping::index_t Nearest(const Eigen::Vector3d& p);
+  vtkNew<vtkIdList> Found;
+
+  // Geodesic painting on data split across processes: the pieces' label exchange, set
+  // up when the geometry or the ids change on any process.
+  std::unique_ptr<geoshaping::PartitionedGeodesic> Geodesic;
 };
+
+void vtkMalleabilityPaintFilter::vtkInternals::UpdateIds(vtkPointSet* input)
+{
+  vtkDataArray* ids = input->GetPointData()->GetGlobalIds();
+  const vtkIdType n = input->GetNumberOfPoints();
+  if (ids && (ids->GetNumberOfTuples() != n || ids->GetNumberOfComponents() != 1))
+    ids = nullptr;
+  if (ids == this->IdSource && (!ids || ids->GetMTime() == this->IdTime) &&
+      (ids || this->Ids.empty()))
+    return;
+  this->IdSource = ids;
+  this->IdTime = ids ? ids->GetMTime() : 0;
+  this->Ids.clear();
+  if (ids)
+  {
+    this->Ids.resize(std::size_t(n));
+    for (vtkIdType i = 0; i < n; ++i)
+      this->Ids[std::size_t(i)] = std::int64_t(ids->GetTuple1(i));
+  }
+}
+
+geoshaping::index_t vtkMalleabilityPaintFilter::vtkInternals::Nearest(const Eigen::Vector3d& p)
+{
+  const vtkIdType first = this->Locator->FindClosestPoint(p.data());
+  if (first < 0)
+    return -1;
+  // The distance as the core measures it (brush.cpp), and every point as near.
+  const auto distance = [this, &p](vtkIdType v)
+  { return (Eigen::Vector3d(&this->Xyz[3 * std::size_t(v)]) - p).norm(); };
+  const auto id = [this](vtkIdType v)
+  { return this->Ids.empty() ? std::int64_t(v) : this->Ids[std::size_t(v)]; };
+  vtkIdType best = first;
+  double nearest = distance(first);
+  this->Locator->FindPointsWithinRadius(nearest * (1.0 + 1e-9), p.data(), this->Found);
+  for (vtkIdType v : *this->Found)
+  {
+    const double d = distance(v);
+    if (d < nearest || (d == nearest && id(v) < id(best)))
+    {
+      best = v;
+      nearest = d;
+    }
+  }
+  return geoshaping::index_t(best);
+}
 
 bool vtkMalleabilityPaintFilter::vtkInternals::Update(
   vtkPointSet* input, vtkMalleabilityPaintFilter* self)
@@ -129,8 +193,7 @@ geoshaping::PointQueries vtkMalleabilityPaintFilter::vtkInternals::Queries()
 {
   vtkStaticPointLocator* locator = this->Locator;
   geoshaping::PointQueries q;
-  q.nearest = [locator](const Eigen::Vector3d& p)
-  { return geoshaping::index_t(locator->FindClosestPoint(p.data())); };
+  q.nearest = [this](const Eigen::Vector3d& p) { return this->Nearest(p); };
   auto found = vtkSmartPointer<vtkIdList>::New();
   q.within = [locator, found](
                const Eigen::Vector3d& p, double r, std::vector<geoshaping::index_t>& ids)
@@ -207,6 +270,32 @@ bool vtkMalleabilityPaintFilter::GetDab(int i, double dab[6])
   return true;
 }
 
+bool vtkMalleabilityPaintFilter::Distributed() const
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return this->DistanceMode == GEODESIC && controller && controller->GetNumberOfProcesses() > 1;
+}
+
+int vtkMalleabilityPaintFilter::ComputeInputUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::ComputeInputUpdateExtent(request, inputVector, outputVector))
+    return 0;
+  if (this->Distributed())
+  {
+    // One ring of ghosts: every neighbour of an owned point is on this process.
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    vtkInformation* outInfo = outputVector->GetInformationObject(0);
+    const int levels =
+      outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+        ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+        : 0;
+    inInfo->Set(
+      vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(levels, 1));
+  }
+  return 1;
+}
+
 int vtkMalleabilityPaintFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -239,13 +328,39 @@ int vtkMalleabilityPaintFilter::RequestData(
     return 1;
   }
   const vtkIdType n = input->GetNumberOfPoints();
+  // With several processes painting geodesically, a process that stops alone would leave
+  // the others waiting in a collective: the data checks are agreed on by all.
+  const bool distributed = this->Distributed();
+  bool badData = false;
   if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
   {
     vtkErrorMacro("Input has " << n << " points; painting supports at most 2^31 - 1.");
+    badData = true;
+  }
+  vtkAbstractArray* named = input->GetPointData()->GetAbstractArray(name);
+  vtkDataArray* source = vtkDataArray::SafeDownCast(named);
+  if (!badData && source && source->GetNumberOfTuples() != n)
+  {
+    vtkErrorMacro("Point array '" << name << "' has " << source->GetNumberOfTuples()
+                                  << " values for " << n << " points; output is the input.");
+    badData = true;
+  }
+  if (distributed)
+  {
+    vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController());
+    bool all = true;
+    for (const auto& v : ex.all_gather({ badData ? 0 : 1 }))
+      all = all && v[0] != 0;
+    if (!all && !badData)
+      vtkErrorMacro("Another process refused its piece; output is the input.");
+    badData = !all;
+  }
+  if (badData)
+  {
     return 1;
   }
 
-  if (!this->PaintPins && this->PaintIncrementally(input, output, name))
+  if (!this->PaintPins && !distributed && this->PaintIncrementally(input, output, name))
   {
     ++this->NumberOfIncrementalUpdates;
     this->Internals->KeepOutput(output);
@@ -256,20 +371,12 @@ int vtkMalleabilityPaintFilter::RequestData(
   auto malleability = vtkSmartPointer<vtkFloatArray>::New();
   malleability->SetName(name);
   malleability->SetNumberOfTuples(n);
-  vtkAbstractArray* named = input->GetPointData()->GetAbstractArray(name);
-  vtkDataArray* source = vtkDataArray::SafeDownCast(named);
   if (named && !source)
   {
     vtkWarningMacro("Point array '"
                     << name << "' is not numeric (" << named->GetClassName()
                     << "); it is replaced by "
                     << (this->PaintPins ? "an empty mask." : "InitialMalleability."));
-  }
-  if (source && source->GetNumberOfTuples() != n)
-  {
-    vtkErrorMacro("Point array '" << name << "' has " << source->GetNumberOfTuples()
-                                  << " values for " << n << " points; output is the input.");
-    return 1;
   }
   if (source && source->GetNumberOfComponents() != 1)
   {
@@ -403,6 +510,10 @@ void vtkMalleabilityPaintFilter::ApplyPointDabs(
 bool vtkMalleabilityPaintFilter::ApplyDabs(
   vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched)
 {
+  if (this->Distributed())
+  {
+    return this->ApplyDabsDistributed(input, m, first, touched);
+  }
   vtkInternals& in = *this->Internals;
   const vtkIdType n = input->GetNumberOfPoints();
   if (n == 0 || first >= in.Dabs.size() || !in.Update(input, this))
@@ -410,6 +521,10 @@ bool vtkMalleabilityPaintFilter::ApplyDabs(
     return true;
   }
   const auto mode = static_cast<geoshaping::DistanceMode>(this->DistanceMode);
+  if (mode == geoshaping::DistanceMode::geodesic)
+  {
+    in.UpdateIds(input); // the nearest vertex's tie rule
+  }
   if (mode == geoshaping::DistanceMode::geodesic && !in.AdjacencyValid)
   {
     vtkIdType skipped = 0;
@@ -469,6 +584,118 @@ bool vtkMalleabilityPaintFilter::ApplyDabs(
     vtkErrorMacro(<< msg.str());
   }
   return !report.aborted;
+}
+
+bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
+  vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched)
+{
+  vtkInternals& in = *this->Internals;
+  vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController());
+  const vtkIdType n = input->GetNumberOfPoints();
+
+  // Local checks and whether the piece changed, agreed on by every process.
+  std::string problem;
+  vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
+  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+  if (n > 0 && (!gids || gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
+    problem = "no point GlobalIds array (one value per point)";
+  else if (n > 0 && (!ghosts || ghosts->GetNumberOfTuples() != n))
+    problem = "no vtkGhostType point array (ownership of the points)";
+  const bool stale = !in.Geodesic || in.GeometryPoints != input->GetPoints() ||
+                     in.GeometrySize != n ||
+                     in.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
+                     in.IdSource != gids || (gids && in.IdTime != gids->GetMTime());
+  if (problem.empty() && n > 0 && !in.Update(input, this))
+    problem = "non-finite point coordinates";
+  if (n == 0)
+  {
+    // Remembered like any other piece, or it would look changed at every update.
+    in.GeometryPoints = input->GetPoints();
+    in.GeometrySize = 0;
+    in.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
+  }
+  bool ok = true, anyStale = false;
+  for (const auto& v : ex.all_gather({ problem.empty() ? 1 : 0, stale ? 1 : 0 }))
+  {
+    ok = ok && v[0] != 0;
+    anyStale = anyStale || v[1] != 0;
+  }
+  if (!ok)
+  {
+    if (!problem.empty())
+      vtkErrorMacro("Process " << ex.piece() << ": " << problem
+                               << "; no geodesic dab is applied on any process.");
+    else
+      vtkErrorMacro("Another process refused its piece; no geodesic dab is applied.");
+    in.Geodesic.reset();
+    return true;
+  }
+  if (anyStale)
+  {
+    in.UpdateIds(input);
+    std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+      owned[std::size_t(i)] = (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
+    in.Adjacency = {};
+    in.Adjacency.offsets.assign(1, 0);
+    if (n > 0)
+    {
+      vtkIdType skipped = 0;
+      in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
+      if (skipped > 0)
+        vtkWarningMacro(<< skipped
+                        << " cells are of an unsupported type or have invalid point "
+                           "ids; geodesic paths do not follow their edges.");
+    }
+    in.AdjacencyValid = true;
+    in.Geodesic = std::make_unique<geoshaping::PartitionedGeodesic>();
+    in.Geodesic->set_piece(
+      in.Xyz.data(), geoshaping::index_t(n), &in.Adjacency, in.Ids.data(), owned.data(), ex);
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto falloff = static_cast<geoshaping::Falloff>(this->Falloff);
+  geoshaping::Reach reach;
+  std::int64_t painted = 0;
+  std::vector<std::pair<std::size_t, std::string>> rejected;
+  int applied = 0;
+  for (std::size_t i = first; i < in.Dabs.size(); ++i)
+  {
+    const geoshaping::Dab& dab = in.Dabs[i];
+    const char* why = geoshaping::validate_dab(dab);
+    if (*why)
+    {
+      rejected.emplace_back(i, why); // the same on every process
+      continue;
+    }
+    in.Geodesic->compute(dab.center, dab.radius, n > 0 ? in.Nearest(dab.center) : -1, reach, ex);
+    geoshaping::apply_dab(dab, falloff, reach, m);
+    for (geoshaping::index_t v : reach.vertices)
+    {
+      painted += in.Geodesic->pieces().owned(v);
+      if (touched)
+        touched->push_back(v);
+    }
+    ++applied;
+  }
+  std::int64_t total = 0;
+  for (const auto& v : ex.all_gather({ painted }))
+    total += v[0];
+  this->LastPaintMilliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  this->NumberOfAppliedDabs = applied;
+  this->NumberOfRejectedDabs = static_cast<int>(rejected.size());
+  this->NumberOfPaintedValues = vtkIdType(total);
+  if (!rejected.empty())
+  {
+    std::ostringstream msg;
+    msg << rejected.size() << " of " << in.Dabs.size() - first
+        << " dabs were skipped (the others are applied):";
+    for (std::size_t k = 0; k < rejected.size() && k < 10; ++k)
+      msg << "\n  dab " << rejected[k].first << ": " << rejected[k].second;
+    vtkErrorMacro(<< msg.str());
+  }
+  return true;
 }
 
 void vtkMalleabilityPaintFilter::PrintSelf(ostream& os, vtkIndent indent)

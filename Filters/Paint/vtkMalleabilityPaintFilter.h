@@ -39,8 +39,15 @@
  *
  * A bad dab (a non-finite number, a negative radius, value or strength outside [0, 1])
  * is skipped with an error naming it; the other dabs are applied as if it were absent.
- * In parallel each process paints its own points: Euclidean painting is exact, geodesic
- * paths stop at the boundary of the local piece.
+ * In parallel (an MPI server or pvbatch with more than one process) each process paints
+ * its own points and their ghost copies. Euclidean painting is exact. Geodesic painting
+ * asks for one ghost level and needs point GlobalIds and vtkGhostType on every process:
+ * the source of a dab is the vertex nearest its centre over all processes (ties to the
+ * lowest global id, the rule on one process too) and the distances are found by a
+ * distributed label-correcting run (geoshaping/partitioned_geodesic.h), equal bit for bit
+ * to one process's; without GlobalIds every process reports an error and applies no
+ * geodesic dab. Updates there always repaint every dab (never incrementally) and cannot
+ * be aborted midway (an abort on one process would leave the others waiting).
  */
 #ifndef vtkMalleabilityPaintFilter_h
 #define vtkMalleabilityPaintFilter_h
@@ -147,6 +154,8 @@ protected:
   ~vtkMalleabilityPaintFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int ComputeInputUpdateExtent(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   char* MalleabilityArrayName = nullptr;
   double InitialMalleability = 0.5;
@@ -173,6 +182,11 @@ private:
     vtkPointSet* input, float* m, std::size_t first = 0, std::vector<vtkIdType>* touched = nullptr);
   void ApplyPointDabs(
     vtkIdType n, float* m, std::size_t first = 0, std::vector<vtkIdType>* touched = nullptr);
+  // Geodesic dabs on data split across processes (collective); returns as ApplyDabs.
+  bool ApplyDabsDistributed(
+    vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched);
+  // True when painting needs the processes together: geodesic with several processes.
+  bool Distributed() const;
   // The update when only dabs were appended since the last one; false otherwise.
   bool PaintIncrementally(vtkPointSet* input, vtkPointSet* output, const char* name);
 

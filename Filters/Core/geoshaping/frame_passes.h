@@ -24,6 +24,7 @@
 #include "geoshaping/relaxation.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -52,6 +53,10 @@ public:
   // Refinement from the deformer's frame (refine_links): grasp and pins fixed.
   ProjectionReport refine(
     const ChainMailDeformer& deformer, index_t grasp, const ProjectionOptions& options);
+  // Refinement computed by `run` on this frame's link data, which leaves its result in
+  // the projector (LinkProjector::assign): the partitioned envelope (docs/mpi.md).
+  ProjectionReport refine_with(const ChainMailDeformer& deformer,
+    const std::function<ProjectionReport(const LinkMesh&, LinkProjector&)>& run);
   // Relaxation from the frame's shape so far (after refine() if it ran this frame):
   // grasp, pins and rigid vertices fixed, links kept in the deformer's valid-region frame.
   RelaxationReport relax(

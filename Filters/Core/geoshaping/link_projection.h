@@ -190,6 +190,12 @@ public:
   // must rewrite. Fixed vertices never appear: they are left bit-identical.
   const std::vector<index_t>& changed() const { return changed_; }
 
+  // A result computed elsewhere taken as this call's (the partitioned envelope,
+  // partitioned_envelope.h): `vertices` at `values`, every other vertex at rest;
+  // region() = vertices, changed() = `changed` (a subset). O(vertices + the last region).
+  void assign(const std::vector<index_t>& vertices, const Displacements& values,
+    const std::vector<index_t>& changed);
+
 private:
   struct Variable
   {
@@ -275,6 +281,11 @@ private:
   struct Factor;
   std::unique_ptr<Factor> factor_;
 };
+
+// One axis of a link's feasible set (Axes frame): lo <= u_c[axis] - u_s[axis] <= hi, both
+// directions intersected, exactly the numbers the envelope uses; false when the rest
+// offset is not finite (no constraint). For the partitioned envelope.
+bool link_axis_slab(const LinkMesh& mesh, index_t c, index_t s, int axis, double& lo, double& hi);
 
 // The refinement pass: at most `options.max_iterations` iterations (RefinementIterations)
 // starting from the deformer's last frame (its moved vertices and their displacements),

@@ -1,0 +1,72 @@
+"""Run by `mpiexec -n N pvbatch --sym` (test_mpi_paint.py): FaultStepHorizon (a fault
+step: a geodesic brush on one side must not paint the other) given point GlobalIds,
+distributed by RedistributeDataSet + GhostCellsGenerator, painted by MalleabilityPaint
+with Geodesic distance (dabs spread over the surface, some across the rank borders);
+writes every owned point's (global id, malleability) to OUT/result.npy on rank 0 and the
+filter's figures to OUT/stats.json. Arguments: OUT."""
+import json
+import os
+import sys
+
+import numpy as np
+from paraview.simple import *  # noqa: F401,F403
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+
+out = sys.argv[1]
+controller = vtkMultiProcessController.GetGlobalController()
+rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
+LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
+
+source = FaultStepHorizon(Length=40.0, Width=20.0, Throw=8.0, StepRun=2.0, Spacing=0.5)  # noqa: F405
+ids = ProgrammableFilter(Input=source)  # noqa: F405
+ids.Script = """
+from vtkmodules.vtkCommonCore import vtkIdTypeArray
+out = self.GetOutput()
+out.ShallowCopy(self.GetInput())
+gids = vtkIdTypeArray()
+gids.SetName("GlobalIds")
+gids.SetNumberOfTuples(out.GetNumberOfPoints())
+for i in range(out.GetNumberOfPoints()):
+    gids.SetValue(i, i)
+out.GetPointData().SetGlobalIds(gids)
+"""
+spread = RedistributeDataSet(Input=ids)  # noqa: F405
+ghosts = GhostCellsGenerator(Input=spread)  # noqa: F405
+paint = MalleabilityPaint(Input=ghosts)  # noqa: F405
+paint.InitialMalleability = 0.4
+paint.Falloff = "Smooth"
+paint.DistanceMode = "Geodesic"
+dabs = []
+# A stroke along the step's foot, large dabs across the middle, one at a grid point's
+# exact position (a tie for the nearest vertex is possible), and an invalid one.
+for y in np.arange(0.0, 20.01, 2.5):
+    dabs += [19.0, y, 8.0, 2.5, 0.0, 1.0]
+dabs += [10.0, 10.0, 8.0, 9.0, 1.0, 0.6, 30.0, 10.0, 0.0, 12.0, 0.9, 0.8, 20.25, 5.25, 4.0, 3.0, 0.2, 1.0]
+dabs += [5.0, 5.0, 8.0, -1.0, 0.5, 0.5]
+paint.Dabs = dabs
+paint.UpdatePipeline()
+
+data = paint.GetClientSideObject().GetOutputDataObject(0)
+n = data.GetNumberOfPoints()
+rows = np.zeros((0, 2))
+if n:
+    ghost = vtk_to_numpy(data.GetPointData().GetArray("vtkGhostType")) if nranks > 1 else np.zeros(n)
+    owned = (ghost.astype(int) & 1) == 0
+    gid = vtk_to_numpy(data.GetPointData().GetGlobalIds())[owned]
+    m = vtk_to_numpy(data.GetPointData().GetArray("Malleability"))[owned]
+    rows = np.column_stack([gid.astype(float), m.astype(float)])
+np.save(os.path.join(out, "rank%d.npy" % rank), rows)
+paint.UpdatePropertyInformation()
+stats = {key: paint.GetProperty(name).GetData() for key, name in (
+    ("applied", "NumberOfAppliedDabs"), ("rejected", "NumberOfRejectedDabs"),
+    ("painted", "NumberOfPaintedValues"), ("ms", "LastPaintMilliseconds"))}
+controller.Barrier()
+if rank == 0:
+    rows = np.concatenate([np.load(os.path.join(out, "rank%d.npy" % r)) for r in range(nranks)])
+    rows = rows[np.argsort(rows[:, 0], kind="stable")]
+    np.save(os.path.join(out, "result.npy"), rows)
+    with open(os.path.join(out, "stats.json"), "w") as text:
+        json.dump(stats, text)
+    print("rank0: %d points from %d ranks, %s" % (len(rows), nranks, json.dumps(stats)))
+controller.Barrier()

@@ -1,0 +1,110 @@
+"""Refinement on distributed data (docs/mpi.md, "Refinement on distributed data"):
+`mpiexec -n 1/2/3 pvbatch --sym` runs mpi_refine.py (ChainMail + one envelope refinement,
+Axes frame) on a scene; the gathered points of 2 and 3 ranks must equal the 1-rank result
+bit for bit, the refined point counts agree, and E_link of the gathered output, computed
+here with numpy from the points, the malleability and the filter's default transfer
+curves (an independent computation), is <= 1e-9 L. Then Dykstra on 2 ranks must be
+refused with an error naming what works, leaving the input undeformed.
+Usage: test_mpi_refinement.py SCENE (surface or slab)."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+scene = sys.argv[1]
+here = os.path.dirname(os.path.abspath(__file__))
+env = dict(os.environ)
+env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")  # 3 ranks on 2 cores
+
+
+def run(n, out, *extra):
+    cmd = [env.get("MPIEXEC", "mpiexec"), "--allow-run-as-root", "--oversubscribe", "-n", str(n),
+           env.get("PVBATCH", "pvbatch"), "--sym", os.path.join(here, "mpi_refine.py"), scene, out]
+    cmd += list(extra)
+    result = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=240)
+    errors = [line for line in (result.stdout + result.stderr).splitlines() if "ERR|" in line]
+    return cmd, result, errors
+
+
+def link_error(rows, edges):
+    """E_link / L of the gathered output: per directed edge (c, s) the distance of
+    w = u_c - u_s to c's box (valid_region.h) with the default linear curves
+    t = 1 + m, k = 1 - m / 2, h = m / 2, the worst over both directions."""
+    index = {int(g): i for i, g in enumerate(rows[:, 0])}
+    a = np.array([index[int(e)] for e in edges[:, 0]])
+    b = np.array([index[int(e)] for e in edges[:, 1]])
+    x, x0, m = rows[:, 1:4], rows[:, 4:7], np.clip(rows[:, 7], 0.0, 1.0)
+    u = x - x0
+    t, k, h = np.maximum(1.0, 1.0 + m), np.clip(1.0 - 0.5 * m, 0.0, 1.0), np.maximum(0.0, 0.5 * m)
+    worst = 0.0
+    for c, s in ((a, b), (b, a)):
+        o, w = x0[c] - x0[s], u[c] - u[s]
+        side = np.abs(o).sum(axis=1)[:, None] - np.abs(o)
+        near, far = (k[c] - 1.0)[:, None] * o, (t[c] - 1.0)[:, None] * o
+        lo = np.where(o >= 0.0, near, far) - h[c][:, None] * side
+        hi = np.where(o >= 0.0, far, near) + h[c][:, None] * side
+        excess = np.maximum(0.0, np.maximum(lo - w, w - hi))
+        worst = max(worst, float(np.sqrt((excess ** 2).sum(axis=1)).max()))
+    length = np.linalg.norm(x0[a] - x0[b], axis=1).mean()
+    return worst / length
+
+
+results, stats = {}, {}
+with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as tmp:
+    for n in (1, 2, 3):
+        out = os.path.join(tmp, "n%d" % n)
+        cmd, result, errors = run(n, out)
+        if result.returncode != 0 or errors:
+            print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
+            print("FAILED: %d ranks: exit %d, %d error lines" % (n, result.returncode, len(errors)))
+            sys.exit(1)
+        rows = np.load(os.path.join(out, "result.npy"))
+        ids, first = np.unique(rows[:, 0], return_index=True)
+        for i in range(len(rows)):
+            j = first[np.searchsorted(ids, rows[i, 0])]
+            if not np.array_equal(rows[i, 1:], rows[j, 1:]):
+                print("FAILED: %d ranks: copies of point %d differ" % (n, rows[i, 0]))
+                sys.exit(1)
+        results[n] = rows[first]
+        with open(os.path.join(out, "stats.json")) as text:
+            stats[n] = json.load(text)
+        if n == 1:
+            edges = np.load(os.path.join(out, "edges.npy"))
+        print("%d ranks: %d points, %s" % (n, len(results[n]), stats[n]))
+
+    # Dykstra on 2 ranks: refused on every rank, naming what works.
+    cmd, result, errors = run(2, os.path.join(tmp, "dykstra"), "Dykstra")
+    wanted = "use RefinementSolver Envelope with ValidRegionFrame Axes"
+    if result.returncode != 0 or not errors or not all(wanted in e for e in errors) or len(errors) < 2:
+        print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
+        print("FAILED: Dykstra on 2 ranks: expected an error naming '%s' on each rank" % wanted)
+        sys.exit(1)
+    refused = np.load(os.path.join(tmp, "dykstra", "result.npy"))
+    if not np.array_equal(refused[:, 1:4], refused[:, 4:7]):
+        print("FAILED: the refused update deformed its input")
+        sys.exit(1)
+    print("ok: Dykstra on 2 ranks refused on every rank (%s), input unchanged" % errors[0].strip()[:120])
+
+one = results[1]
+moved = int(np.count_nonzero(np.any(one[:, 1:4] != one[:, 4:7], axis=1)))
+if moved < 50 or stats[1]["refined"] < 1:
+    print("FAILED: %d points moved, %d refined on 1 rank" % (moved, stats[1]["refined"]))
+    sys.exit(1)
+error = link_error(one, edges)
+print("ok: %d of %d points moved, %d refined; E_link %.3g L" % (moved, len(one), stats[1]["refined"], error))
+if not error <= 1e-9:
+    print("FAILED: E_link %.3g L > 1e-9 L after the envelope" % error)
+    sys.exit(1)
+for n in (2, 3):
+    if results[n].shape != one.shape or not np.array_equal(results[n], one):
+        diff = np.abs(results[n] - one).max() if results[n].shape == one.shape else "shape"
+        print("FAILED: %d ranks differ from 1 rank (max difference %s)" % (n, diff))
+        sys.exit(1)
+    if stats[n]["refined"] != stats[1]["refined"] or stats[n]["displaced"] != stats[1]["displaced"]:
+        print("FAILED: %d ranks report %s, 1 rank %s" % (n, stats[n], stats[1]))
+        sys.exit(1)
+    print("ok: %d ranks equal 1 rank bit for bit (%d supersteps, %d bytes exchanged)"
+          % (n, stats[n]["supersteps"], stats[n]["bytes"]))
