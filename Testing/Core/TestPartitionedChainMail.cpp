@@ -20,35 +20,12 @@ using geoshaping::testing::Mesh;
 namespace
 {
 
-struct Scene
-{
-  Mesh mesh;
-  std::vector<float> malleability;
-  std::vector<std::uint8_t> pins;
-  std::vector<std::int64_t> gid; // not the vertex ids: a shuffled, sparse numbering
-};
-
-// A piece with the scene's pins and malleability of its vertices.
-struct Piece : geoshaping::testing::MeshPiece
-{
-  std::vector<std::uint8_t> pins;
-  std::vector<float> malleability;
-};
-
-std::vector<Piece> split(const Scene& s, const std::vector<int>& owner, int pieces,
-  const std::vector<std::vector<index_t>>& extra = {}, unsigned seed = 1)
-{
-  std::vector<Piece> out;
-  for (auto& mesh_piece : geoshaping::testing::split_mesh(
-         s.mesh.xyz, s.mesh.adjacency, s.gid, owner, pieces, extra, seed))
-  {
-    Piece piece{ std::move(mesh_piece), {}, {} };
-    piece.pins = piece.gather(s.pins);
-    piece.malleability = piece.gather(s.malleability);
-    out.push_back(std::move(piece));
-  }
-  return out;
-}
+using Scene = geoshaping::testing::PaintedMesh;
+using Piece = geoshaping::testing::PaintedPiece;
+using geoshaping::testing::painted_grid;
+using geoshaping::testing::shuffled_ids;
+using geoshaping::testing::split;
+using geoshaping::testing::tet_slab;
 
 struct Frame
 {
@@ -170,83 +147,6 @@ void expect_same(const std::vector<Piece>& pieces, const std::vector<std::vector
       EXPECT_EQ(examined, w.result.examined) << what << " frame " << f;
     }
   }
-}
-
-std::vector<std::int64_t> shuffled_ids(index_t n, unsigned seed)
-{
-  std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
-  std::iota(gid.begin(), gid.end(), std::int64_t(0));
-  std::shuffle(gid.begin(), gid.end(), std::mt19937(seed));
-  for (auto& g : gid)
-    g = 3 * g + 1000000007LL; // sparse and large
-  return gid;
-}
-
-// A jittered triangle grid painted in bands, with a rigid (0) block and a wall of pins.
-Scene painted_grid(index_t nx, index_t ny)
-{
-  Scene s;
-  s.mesh = geoshaping::testing::triangle_grid(nx, ny, 1.0);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-  for (double& x : s.mesh.xyz)
-    x += jitter(rng);
-  s.malleability.resize(std::size_t(s.mesh.size()));
-  s.pins.assign(s.malleability.size(), 0);
-  for (index_t j = 0; j < ny; ++j)
-    for (index_t i = 0; i < nx; ++i)
-    {
-      const double b = 0.5 + 0.5 * std::sin(0.3 * i) * std::cos(0.25 * j);
-      float m = float(0.2 + 0.1 * std::floor(b * 7.999));
-      if (i >= nx / 3 && i < nx / 3 + 6 && j >= ny / 2 && j < ny / 2 + 5)
-        m = 0.0f;
-      s.malleability[std::size_t(j * nx + i)] = m;
-      if (j == ny / 4 && i > 3 && i < nx - 4)
-        s.pins[std::size_t(j * nx + i)] = 1;
-    }
-  s.gid = shuffled_ids(s.mesh.size(), 17);
-  return s;
-}
-
-// A tetrahedral slab: a jittered nx x ny x nz lattice cut into tetrahedra (UTM-sized).
-Scene tet_slab(index_t nx, index_t ny, index_t nz)
-{
-  Scene s;
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-  for (index_t k = 0; k < nz; ++k)
-    for (index_t j = 0; j < ny; ++j)
-      for (index_t i = 0; i < nx; ++i)
-        for (double c : { double(i), double(j), 0.5 * double(k) })
-          s.mesh.xyz.push_back(5e5 + c + jitter(rng));
-  const index_t n = nx * ny * nz;
-  AdjacencyBuilder builder(n);
-  auto id = [&](index_t i, index_t j, index_t k) { return std::int64_t((k * ny + j) * nx + i); };
-  for (index_t k = 0; k + 1 < nz; ++k)
-    for (index_t j = 0; j + 1 < ny; ++j)
-      for (index_t i = 0; i + 1 < nx; ++i)
-      {
-        // The six tetrahedra of a cube around its main diagonal.
-        const std::int64_t c[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
-          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-          id(i, j + 1, k + 1) };
-        const int tets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
-          { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
-        for (const auto& t : tets)
-        {
-          const std::int64_t ids[4] = { c[t[0]], c[t[1]], c[t[2]], c[t[3]] };
-          builder.add_cell(CellKind::tetra, ids, 4);
-        }
-      }
-  s.mesh.adjacency = builder.build();
-  s.malleability.resize(std::size_t(n));
-  std::uniform_int_distribution<int> band(0, 4);
-  for (float& m : s.malleability)
-    m = 0.25f * float(band(rng));
-  s.pins.assign(std::size_t(n), 0);
-  s.pins[std::size_t(id(nx / 2, 1, 0))] = 1;
-  s.gid = shuffled_ids(n, 23);
-  return s;
 }
 
 std::vector<int> striped(const Scene& s, int pieces)

@@ -10,6 +10,7 @@
 #include "geoshaping/partitioned_envelope.h"
 #include "geoshaping/partitioned_geodesic.h"
 #include "test_meshes.h"
+#include "test_pieces.h"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,6 @@
 #include <numeric>
 #include <random>
 #include <set>
-#include <thread>
 
 using namespace geoshaping;
 using geoshaping::testing::Mesh;
@@ -27,171 +27,34 @@ using geoshaping::testing::Mesh;
 namespace
 {
 
-struct Scene
-{
-  Mesh mesh;
-  std::vector<float> malleability;
-  std::vector<std::uint8_t> pins;
-  std::vector<std::int64_t> gid; // shuffled, sparse
-};
+using Scene = geoshaping::testing::PaintedMesh;
+using Piece = geoshaping::testing::PaintedPiece;
+using geoshaping::testing::painted_grid;
 
-struct Piece
-{
-  std::vector<index_t> global; // local -> whole-mesh vertex
-  std::vector<double> xyz;
-  Adjacency adjacency;
-  std::vector<std::int64_t> gid;
-  std::vector<std::uint8_t> owned, pins;
-  std::vector<float> malleability;
-};
-
-// Piece p: its owned vertices, their rings (ghosts) and `extra` ghosts, shuffled.
-std::vector<Piece> split(const Scene& s, const std::vector<int>& owner, int pieces,
+// Each piece keeps only the links with an owned end (as a ghost cell layer of lines).
+std::vector<Piece> split_ghost_cells(const Scene& s, const std::vector<int>& owner, int pieces,
   const std::vector<std::vector<index_t>>& extra = {}, unsigned seed = 1)
 {
-  const Adjacency& adj = s.mesh.adjacency;
-  std::mt19937 rng(seed);
-  std::vector<Piece> out(static_cast<std::size_t>(pieces));
-  for (int p = 0; p < pieces; ++p)
-  {
-    std::set<index_t> local;
-    for (index_t v = 0; v < s.mesh.size(); ++v)
-      if (owner[std::size_t(v)] == p)
-      {
-        local.insert(v);
-        local.insert(adj.begin(v), adj.end(v));
-      }
-    if (std::size_t(p) < extra.size())
-      local.insert(extra[std::size_t(p)].begin(), extra[std::size_t(p)].end());
-    Piece& piece = out[std::size_t(p)];
-    piece.global.assign(local.begin(), local.end());
-    std::shuffle(piece.global.begin(), piece.global.end(), rng);
-    std::vector<index_t> local_of(static_cast<std::size_t>(s.mesh.size()), -1);
-    for (std::size_t i = 0; i < piece.global.size(); ++i)
-      local_of[std::size_t(piece.global[i])] = index_t(i);
-    piece.adjacency.offsets.push_back(0);
-    for (index_t v : piece.global)
-    {
-      piece.xyz.insert(
-        piece.xyz.end(), &s.mesh.xyz[3 * std::size_t(v)], &s.mesh.xyz[3 * std::size_t(v)] + 3);
-      std::vector<index_t> row;
-      // A ghost's row holds only the links to the piece's vertices (as a ghost cell layer).
-      for (const index_t* it = adj.begin(v); it != adj.end(v); ++it)
-        if (local_of[std::size_t(*it)] >= 0 &&
-            (owner[std::size_t(v)] == p || owner[std::size_t(*it)] == p))
-          row.push_back(local_of[std::size_t(*it)]);
-      std::sort(row.begin(), row.end());
-      piece.adjacency.neighbors.insert(piece.adjacency.neighbors.end(), row.begin(), row.end());
-      piece.adjacency.offsets.push_back(std::int64_t(piece.adjacency.neighbors.size()));
-      piece.gid.push_back(s.gid[std::size_t(v)]);
-      piece.owned.push_back(owner[std::size_t(v)] == p);
-      piece.pins.push_back(s.pins[std::size_t(v)]);
-      piece.malleability.push_back(s.malleability[std::size_t(v)]);
-    }
-  }
-  return out;
+  return geoshaping::testing::split(
+    s, owner, pieces, extra, seed, geoshaping::testing::GhostLinks::to_owned);
 }
 
-std::vector<std::int64_t> shuffled_ids(index_t n, unsigned seed)
-{
-  std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
-  std::iota(gid.begin(), gid.end(), std::int64_t(0));
-  std::shuffle(gid.begin(), gid.end(), std::mt19937(seed));
-  for (auto& g : gid)
-    g = 3 * g + 1000000007LL;
-  return gid;
-}
-
-// A jittered triangle grid painted in bands, a rigid block and a wall of pins.
-Scene painted_grid(index_t nx, index_t ny)
-{
-  Scene s;
-  s.mesh = geoshaping::testing::triangle_grid(nx, ny, 1.0);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-  for (double& x : s.mesh.xyz)
-    x += jitter(rng);
-  s.malleability.resize(std::size_t(s.mesh.size()));
-  s.pins.assign(s.malleability.size(), 0);
-  for (index_t j = 0; j < ny; ++j)
-    for (index_t i = 0; i < nx; ++i)
-    {
-      const double b = 0.5 + 0.5 * std::sin(0.3 * i) * std::cos(0.25 * j);
-      float m = float(0.2 + 0.1 * std::floor(b * 7.999));
-      if (i >= nx / 3 && i < nx / 3 + 6 && j >= ny / 2 && j < ny / 2 + 5)
-        m = 0.0f;
-      s.malleability[std::size_t(j * nx + i)] = m;
-      if (j == ny / 4 && i > 3 && i < nx - 4)
-        s.pins[std::size_t(j * nx + i)] = 1;
-    }
-  s.gid = shuffled_ids(s.mesh.size(), 17);
-  return s;
-}
-
-// A tetrahedral slab (jittered lattice cut into six tetrahedra per cube), UTM-sized.
+// The shared slab with a second pin next to the first.
 Scene tet_slab(index_t nx, index_t ny, index_t nz)
 {
-  Scene s;
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-  for (index_t k = 0; k < nz; ++k)
-    for (index_t j = 0; j < ny; ++j)
-      for (index_t i = 0; i < nx; ++i)
-        for (double c : { double(i), double(j), 0.5 * double(k) })
-          s.mesh.xyz.push_back(5e5 + c + jitter(rng));
-  const index_t n = nx * ny * nz;
-  AdjacencyBuilder builder(n);
-  auto id = [&](index_t i, index_t j, index_t k) { return std::int64_t((k * ny + j) * nx + i); };
-  for (index_t k = 0; k + 1 < nz; ++k)
-    for (index_t j = 0; j + 1 < ny; ++j)
-      for (index_t i = 0; i + 1 < nx; ++i)
-      {
-        const std::int64_t c[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
-          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-          id(i, j + 1, k + 1) };
-        const int tets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
-          { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
-        for (const auto& t : tets)
-        {
-          const std::int64_t ids[4] = { c[t[0]], c[t[1]], c[t[2]], c[t[3]] };
-          builder.add_cell(CellKind::tetra, ids, 4);
-        }
-      }
-  s.mesh.adjacency = builder.build();
-  s.malleability.resize(std::size_t(n));
-  std::uniform_int_distribution<int> band(0, 4);
-  for (float& m : s.malleability)
-    m = 0.25f * float(band(rng));
-  s.pins.assign(std::size_t(n), 0);
-  s.pins[std::size_t(id(nx / 2, 1, 0))] = 1;
-  s.pins[std::size_t(id(nx / 2 + 1, 1, 0))] = 1;
-  s.gid = shuffled_ids(n, 23);
+  Scene s = geoshaping::testing::tet_slab(nx, ny, nz);
+  s.pins[std::size_t((0 * ny + 1) * nx + nx / 2 + 1)] = 1;
   return s;
 }
 
 std::vector<int> striped(const Scene& s, int pieces)
 {
-  double lo = 1e300, hi = -1e300;
-  for (index_t v = 0; v < s.mesh.size(); ++v)
-  {
-    lo = std::min(lo, s.mesh.xyz[3 * std::size_t(v)]);
-    hi = std::max(hi, s.mesh.xyz[3 * std::size_t(v)]);
-  }
-  std::vector<int> owner(static_cast<std::size_t>(s.mesh.size()));
-  for (index_t v = 0; v < s.mesh.size(); ++v)
-    owner[std::size_t(v)] =
-      std::min(pieces - 1, int(double(pieces) * (s.mesh.xyz[3 * std::size_t(v)] - lo) / (hi - lo)));
-  return owner;
+  return geoshaping::testing::striped_owner(s.mesh.xyz, pieces);
 }
 
 std::vector<int> random_owner(const Scene& s, const std::vector<int>& choices, unsigned seed)
 {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<std::size_t> pick(0, choices.size() - 1);
-  std::vector<int> owner(static_cast<std::size_t>(s.mesh.size()));
-  for (int& o : owner)
-    o = choices[pick(rng)];
-  return owner;
+  return geoshaping::testing::random_owner(s.mesh.size(), choices, seed);
 }
 
 bool same_bits(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
@@ -294,65 +157,58 @@ struct PieceResult
 
 std::vector<PieceResult> run_pieces(const Scene& s, std::vector<Piece>& pieces, const Case& c)
 {
-  const int n = int(pieces.size());
-  InProcessHub hub(n);
   std::vector<PieceResult> out(pieces.size());
   std::vector<std::pair<index_t, Eigen::Vector3d>> start;
   if (c.random_start)
     start = random_start(s, c, 4);
-  std::vector<std::thread> threads;
-  for (int p = 0; p < n; ++p)
-    threads.emplace_back(
-      [&, p]
+  geoshaping::testing::run_in_pieces(int(pieces.size()),
+    [&](int p, Exchange& ex)
+    {
+      Piece& piece = pieces[std::size_t(p)];
+      ChainMailDeformer deformer;
+      PartitionedChainMail pc(deformer);
+      const std::string error = pc.set_piece(piece.xyz.data(), index_t(piece.global.size()),
+        piece.adjacency, piece.gid.data(), piece.owned.data(), ex);
+      EXPECT_EQ(error, "");
+      setup(deformer, piece.malleability.data(), piece.pins.data());
+      const LinkMesh mesh = link_mesh(deformer);
+      PartitionedEnvelope envelope;
+      envelope.set_piece(deformer, mesh, ex);
+      std::vector<index_t> vertices;
+      Displacements values;
+      const std::int64_t grasp = s.gid[std::size_t(c.grasp)];
+      if (c.random_start)
       {
-        Piece& piece = pieces[std::size_t(p)];
-        InProcessExchange ex(hub, p);
-        ChainMailDeformer deformer;
-        PartitionedChainMail pc(deformer);
-        const std::string error = pc.set_piece(piece.xyz.data(), index_t(piece.global.size()),
-          piece.adjacency, piece.gid.data(), piece.owned.data(), ex);
-        EXPECT_EQ(error, "");
-        setup(deformer, piece.malleability.data(), piece.pins.data());
-        const LinkMesh mesh = link_mesh(deformer);
-        PartitionedEnvelope envelope;
-        envelope.set_piece(deformer, mesh, ex);
-        std::vector<index_t> vertices;
-        Displacements values;
-        const std::int64_t grasp = s.gid[std::size_t(c.grasp)];
-        if (c.random_start)
-        {
-          std::vector<index_t> local_of(std::size_t(s.mesh.size()), -1);
-          for (std::size_t i = 0; i < piece.global.size(); ++i)
-            local_of[std::size_t(piece.global[i])] = index_t(i);
-          for (const auto& [v, x] : start)
-            if (local_of[std::size_t(v)] >= 0)
-            {
-              vertices.push_back(local_of[std::size_t(v)]);
-              values.push_back(x);
-            }
-        }
-        else
-        {
-          EXPECT_TRUE(pc.deform(grasp, c.pull, ex).ok);
-          vertices = deformer.moved();
-          for (index_t v : vertices)
-            values.push_back(deformer.displacement(v));
-        }
-        const std::size_t before = ex.bytes_sent();
-        ProjectionOptions options;
-        options.solver = ProjectionSolver::envelope;
-        PieceResult& r = out[std::size_t(p)];
-        r.report = envelope.project(mesh, grasp, vertices, values, options, ex);
-        r.u = envelope.displacements();
-        r.changed.assign(piece.global.size(), 0);
-        for (index_t v : envelope.changed())
-          r.changed[std::size_t(v)] = 1;
-        r.changed_total = envelope.changed_total();
-        r.supersteps = envelope.supersteps();
-        r.bytes = ex.bytes_sent() - before;
-      });
-  for (auto& t : threads)
-    t.join();
+        std::vector<index_t> local_of(std::size_t(s.mesh.size()), -1);
+        for (std::size_t i = 0; i < piece.global.size(); ++i)
+          local_of[std::size_t(piece.global[i])] = index_t(i);
+        for (const auto& [v, x] : start)
+          if (local_of[std::size_t(v)] >= 0)
+          {
+            vertices.push_back(local_of[std::size_t(v)]);
+            values.push_back(x);
+          }
+      }
+      else
+      {
+        EXPECT_TRUE(pc.deform(grasp, c.pull, ex).ok);
+        vertices = deformer.moved();
+        for (index_t v : vertices)
+          values.push_back(deformer.displacement(v));
+      }
+      const std::size_t before = ex.bytes_sent();
+      ProjectionOptions options;
+      options.solver = ProjectionSolver::envelope;
+      PieceResult& r = out[std::size_t(p)];
+      r.report = envelope.project(mesh, grasp, vertices, values, options, ex);
+      r.u = envelope.displacements();
+      r.changed.assign(piece.global.size(), 0);
+      for (index_t v : envelope.changed())
+        r.changed[std::size_t(v)] = 1;
+      r.changed_total = envelope.changed_total();
+      r.supersteps = envelope.supersteps();
+      r.bytes = ex.bytes_sent() - before;
+    });
   return out;
 }
 
@@ -362,7 +218,7 @@ void expect_same(const Scene& s, const std::vector<int>& owner, int n, const Cas
 {
   const Whole w = run_whole(s, c);
   ASSERT_GT(w.changed, 0u) << what << ": nothing to refine";
-  std::vector<Piece> pieces = split(s, owner, n, extra);
+  std::vector<Piece> pieces = split_ghost_cells(s, owner, n, extra);
   const std::vector<PieceResult> got = run_pieces(s, pieces, c);
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
@@ -445,10 +301,10 @@ TEST(PartitionedEnvelope, BytesAreTheLoweredBorderLabels)
 {
   const Scene s = painted_grid(40, 30);
   const Case c{ 15 * 40 + 20, Eigen::Vector3d(0.3, -0.2, 2.5) };
-  std::vector<Piece> one = split(s, striped(s, 1), 1);
+  std::vector<Piece> one = split_ghost_cells(s, striped(s, 1), 1);
   const auto single = run_pieces(s, one, c);
   EXPECT_EQ(single[0].bytes, 0u);
-  std::vector<Piece> two = split(s, striped(s, 2), 2);
+  std::vector<Piece> two = split_ghost_cells(s, striped(s, 2), 2);
   const auto got = run_pieces(s, two, c);
   EXPECT_GT(got[0].bytes + got[1].bytes, 0u);
   EXPECT_EQ((got[0].bytes + got[1].bytes) % sizeof(MovedVertex), 0u);
@@ -501,35 +357,29 @@ void expect_same_reach(const Scene& s, const std::vector<int>& owner, int n,
     for (std::size_t i = 0; i < r.vertices.size(); ++i)
       whole.back()[std::size_t(r.vertices[i])] = r.distances[i];
   }
-  std::vector<Piece> pieces = split(s, owner, n, extra);
-  InProcessHub hub(n);
+  std::vector<Piece> pieces = split_ghost_cells(s, owner, n, extra);
   std::vector<std::vector<Reach>> got(pieces.size());
   std::vector<std::vector<std::size_t>> steps(pieces.size());
-  std::vector<std::thread> threads;
-  for (int p = 0; p < n; ++p)
-    threads.emplace_back(
-      [&, p]
+  geoshaping::testing::run_in_pieces(int(pieces.size()),
+    [&](int p, Exchange& ex)
+    {
+      const Piece& piece = pieces[std::size_t(p)];
+      PartitionedGeodesic geodesic;
+      geodesic.set_piece(piece.xyz.data(), index_t(piece.global.size()), &piece.adjacency,
+        piece.gid.data(), piece.owned.data(), ex);
+      for (const DabCase& d : dabs)
       {
-        const Piece& piece = pieces[std::size_t(p)];
-        InProcessExchange ex(hub, p);
-        PartitionedGeodesic geodesic;
-        geodesic.set_piece(piece.xyz.data(), index_t(piece.global.size()), &piece.adjacency,
-          piece.gid.data(), piece.owned.data(), ex);
-        for (const DabCase& d : dabs)
-        {
-          const index_t g = nearest(s, piece.global, d.center);
-          const index_t local = g < 0
-                                  ? -1
-                                  : index_t(std::find(piece.global.begin(), piece.global.end(), g) -
-                                            piece.global.begin());
-          Reach r;
-          geodesic.compute(d.center, d.radius, local, r, ex);
-          got[std::size_t(p)].push_back(r);
-          steps[std::size_t(p)].push_back(geodesic.supersteps());
-        }
-      });
-  for (auto& t : threads)
-    t.join();
+        const index_t g = nearest(s, piece.global, d.center);
+        const index_t local = g < 0
+                                ? -1
+                                : index_t(std::find(piece.global.begin(), piece.global.end(), g) -
+                                          piece.global.begin());
+        Reach r;
+        geodesic.compute(d.center, d.radius, local, r, ex);
+        got[std::size_t(p)].push_back(r);
+        steps[std::size_t(p)].push_back(geodesic.supersteps());
+      }
+    });
   for (std::size_t k = 0; k < dabs.size(); ++k)
   {
     std::size_t reached = 0;

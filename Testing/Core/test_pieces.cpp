@@ -3,6 +3,8 @@
 #include "geoshaping/in_process_exchange.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numeric>
 #include <random>
 #include <set>
 #include <thread>
@@ -12,7 +14,7 @@ namespace geoshaping::testing
 
 std::vector<MeshPiece> split_mesh(const std::vector<double>& xyz, const Adjacency& adj,
   const std::vector<std::int64_t>& gid, const std::vector<int>& owner, int pieces,
-  const std::vector<std::vector<index_t>>& extra, unsigned seed)
+  const std::vector<std::vector<index_t>>& extra, unsigned seed, GhostLinks links)
 {
   const index_t n = index_t(xyz.size() / 3);
   std::mt19937 rng(seed);
@@ -41,7 +43,9 @@ std::vector<MeshPiece> split_mesh(const std::vector<double>& xyz, const Adjacenc
       piece.xyz.insert(piece.xyz.end(), &xyz[3 * std::size_t(v)], &xyz[3 * std::size_t(v)] + 3);
       row.clear();
       for (const index_t* it = adj.begin(v); it != adj.end(v); ++it)
-        if (local_of[std::size_t(*it)] >= 0)
+        if (local_of[std::size_t(*it)] >= 0 &&
+            (links == GhostLinks::all || owner[std::size_t(v)] == p ||
+              owner[std::size_t(*it)] == p))
           row.push_back(local_of[std::size_t(*it)]);
       std::sort(row.begin(), row.end());
       piece.adjacency.neighbors.insert(piece.adjacency.neighbors.end(), row.begin(), row.end());
@@ -79,6 +83,96 @@ std::vector<int> random_owner(index_t n, const std::vector<int>& choices, unsign
   for (int& o : owner)
     o = choices[pick(rng)];
   return owner;
+}
+
+std::vector<std::int64_t> shuffled_ids(index_t n, unsigned seed)
+{
+  std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
+  std::iota(gid.begin(), gid.end(), std::int64_t(0));
+  std::shuffle(gid.begin(), gid.end(), std::mt19937(seed));
+  for (auto& g : gid)
+    g = 3 * g + 1000000007LL;
+  return gid;
+}
+
+PaintedMesh painted_grid(index_t nx, index_t ny)
+{
+  PaintedMesh s;
+  s.mesh = triangle_grid(nx, ny, 1.0);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  for (double& x : s.mesh.xyz)
+    x += jitter(rng);
+  s.malleability.resize(std::size_t(s.mesh.size()));
+  s.pins.assign(s.malleability.size(), 0);
+  for (index_t j = 0; j < ny; ++j)
+    for (index_t i = 0; i < nx; ++i)
+    {
+      const double b = 0.5 + 0.5 * std::sin(0.3 * i) * std::cos(0.25 * j);
+      float m = float(0.2 + 0.1 * std::floor(b * 7.999));
+      if (i >= nx / 3 && i < nx / 3 + 6 && j >= ny / 2 && j < ny / 2 + 5)
+        m = 0.0f;
+      s.malleability[std::size_t(j * nx + i)] = m;
+      if (j == ny / 4 && i > 3 && i < nx - 4)
+        s.pins[std::size_t(j * nx + i)] = 1;
+    }
+  s.gid = shuffled_ids(s.mesh.size(), 17);
+  return s;
+}
+
+PaintedMesh tet_slab(index_t nx, index_t ny, index_t nz)
+{
+  PaintedMesh s;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  for (index_t k = 0; k < nz; ++k)
+    for (index_t j = 0; j < ny; ++j)
+      for (index_t i = 0; i < nx; ++i)
+        for (double c : { double(i), double(j), 0.5 * double(k) })
+          s.mesh.xyz.push_back(5e5 + c + jitter(rng));
+  const index_t n = nx * ny * nz;
+  AdjacencyBuilder builder(n);
+  auto id = [&](index_t i, index_t j, index_t k) { return std::int64_t((k * ny + j) * nx + i); };
+  for (index_t k = 0; k + 1 < nz; ++k)
+    for (index_t j = 0; j + 1 < ny; ++j)
+      for (index_t i = 0; i + 1 < nx; ++i)
+      {
+        // The six tetrahedra of a cube around its main diagonal.
+        const std::int64_t c[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+          id(i, j + 1, k + 1) };
+        const int tets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
+          { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
+        for (const auto& t : tets)
+        {
+          const std::int64_t ids[4] = { c[t[0]], c[t[1]], c[t[2]], c[t[3]] };
+          builder.add_cell(CellKind::tetra, ids, 4);
+        }
+      }
+  s.mesh.adjacency = builder.build();
+  s.malleability.resize(std::size_t(n));
+  std::uniform_int_distribution<int> band(0, 4);
+  for (float& m : s.malleability)
+    m = 0.25f * float(band(rng));
+  s.pins.assign(std::size_t(n), 0);
+  s.pins[std::size_t(id(nx / 2, 1, 0))] = 1;
+  s.gid = shuffled_ids(n, 23);
+  return s;
+}
+
+std::vector<PaintedPiece> split(const PaintedMesh& m, const std::vector<int>& owner, int pieces,
+  const std::vector<std::vector<index_t>>& extra, unsigned seed, GhostLinks links)
+{
+  std::vector<PaintedPiece> out;
+  for (MeshPiece& piece :
+    split_mesh(m.mesh.xyz, m.mesh.adjacency, m.gid, owner, pieces, extra, seed, links))
+  {
+    PaintedPiece painted{ std::move(piece), {}, {} };
+    painted.pins = painted.gather(m.pins);
+    painted.malleability = painted.gather(m.malleability);
+    out.push_back(std::move(painted));
+  }
+  return out;
 }
 
 void run_in_pieces(int pieces, const std::function<void(int, Exchange&)>& body)
