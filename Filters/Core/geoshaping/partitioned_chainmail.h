@@ -107,6 +107,9 @@ public:
   FrameResult deform(std::int64_t grasp, const Eigen::Vector3d& displacement, Exchange& exchange);
   // Supersteps of the last frame (the same on every piece).
   std::size_t supersteps() const { return supersteps_; }
+  // Appends the local vertices holding global id `gid` (none when this piece does not
+  // hold it; a point held twice, all its copies): EditPlace::holders for edits.
+  void holders(std::int64_t gid, std::vector<index_t>& out) const;
 
 private:
   void exchange_frontier(Exchange& exchange);
