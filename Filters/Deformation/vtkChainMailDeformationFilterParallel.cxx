@@ -271,10 +271,27 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       state.Partition.reset();
       return true;
     }
+    // The setup once: the points read once, the adjacency built once, the deformer set
+    // up by set_piece alone (not also as a whole mesh), then the output's caches.
+    state.GeometryPoints = input->GetPoints();
+    state.GeometrySize = n;
+    state.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
+    state.GeometryPrecision = this->OutputPointsPrecision;
+    state.Ids.clear(); // one process's map: the partition names the points here
     if (n > 0)
-      this->UpdateGeometry(input); // the output points, normals and locator caches
+    {
+      this->BuildOutputCaches(input, xyz);
+      ++this->NumberOfRebuilds;
+    }
     vtkIdType skipped = 0;
     geoshaping::Adjacency adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
+    if (skipped > 0)
+    {
+      vtkWarningMacro("Process " << ex.piece() << ": " << skipped
+                                 << " cells are of an unsupported type (higher-order or "
+                                    "polyhedral) or have invalid point ids; their edges do not "
+                                    "propagate deformation.");
+    }
     std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
     std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
     for (vtkIdType i = 0; i < n; ++i)
@@ -310,15 +327,6 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       state.GeometryValid = false;
       state.Partition.reset();
       return true;
-    }
-    if (n == 0)
-    {
-      // UpdateGeometry did not run: remember this empty piece, or it would look changed
-      // at every update and rebuild every process's piece each frame.
-      state.GeometryPoints = input->GetPoints();
-      state.GeometrySize = 0;
-      state.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
-      state.GeometryPrecision = this->OutputPointsPrecision;
     }
     state.GeometryValid = true;
   }

@@ -104,43 +104,53 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
       state.Deformer.set_global_ids(gid.data());
     }
 
-    state.OutputPoints = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
-    const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT
-                          : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION
-                            ? VTK_DOUBLE
-                            : inPoints->GetDataType();
-    state.OutputPoints->SetDataType(precision);
-    state.OutputPoints->DeepCopy(inPoints);
-    if (state.OutputPoints->GetDataType() != precision)
-    {
-      auto converted = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
-      converted->SetDataType(precision);
-      converted->SetNumberOfPoints(n);
-      for (vtkIdType i = 0; i < n; ++i)
-        converted->SetPoint(i, xyz.data() + 3 * i);
-      state.OutputPoints = converted;
-    }
-    std::vector<std::int64_t> faceOffsets;
-    std::vector<geoshaping::index_t> faceVertices;
-    vtkDataArray* normals = input->GetPointData()->GetNormals();
-    state.OutputNormals = nullptr;
-    state.Normals = geoshaping::SparseNormals();
-    if (normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n &&
-        vtkGeoShapingAdapter::BuildFaces(input, faceOffsets, faceVertices))
-    {
-      state.Normals.set_mesh(
-        std::move(faceOffsets), std::move(faceVertices), geoshaping::index_t(n));
-      const double* rest = xyz.data();
-      state.Normals.set_positions(
-        [rest](geoshaping::index_t v) { return Eigen::Vector3d(rest + 3 * v); });
-      state.OutputNormals = vtk::TakeSmartPointer(normals->NewInstance());
-      state.OutputNormals->DeepCopy(normals);
-    }
+    this->BuildOutputCaches(input, xyz);
     state.GeometryValid = true;
     ++this->NumberOfRebuilds;
   }
 
   return state.GeometryValid;
+}
+
+void vtkChainMailDeformationFilter::BuildOutputCaches(
+  vtkPointSet* input, const std::vector<double>& xyz)
+{
+  // The output's points (and normals) of a new geometry, kept between updates; the
+  // distributed path calls this alone (its deformer is set up by set_piece).
+  vtkInternals& state = *this->Internals;
+  vtkPoints* inPoints = input->GetPoints();
+  const vtkIdType n = input->GetNumberOfPoints();
+  state.OutputPoints = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
+  const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT
+                        : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION
+                          ? VTK_DOUBLE
+                          : inPoints->GetDataType();
+  state.OutputPoints->SetDataType(precision);
+  state.OutputPoints->DeepCopy(inPoints);
+  if (state.OutputPoints->GetDataType() != precision)
+  {
+    auto converted = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
+    converted->SetDataType(precision);
+    converted->SetNumberOfPoints(n);
+    for (vtkIdType i = 0; i < n; ++i)
+      converted->SetPoint(i, xyz.data() + 3 * i);
+    state.OutputPoints = converted;
+  }
+  std::vector<std::int64_t> faceOffsets;
+  std::vector<geoshaping::index_t> faceVertices;
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  state.OutputNormals = nullptr;
+  state.Normals = geoshaping::SparseNormals();
+  if (normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n &&
+      vtkGeoShapingAdapter::BuildFaces(input, faceOffsets, faceVertices))
+  {
+    state.Normals.set_mesh(std::move(faceOffsets), std::move(faceVertices), geoshaping::index_t(n));
+    const double* rest = xyz.data();
+    state.Normals.set_positions(
+      [rest](geoshaping::index_t v) { return Eigen::Vector3d(rest + 3 * v); });
+    state.OutputNormals = vtk::TakeSmartPointer(normals->NewInstance());
+    state.OutputNormals->DeepCopy(normals);
+  }
 }
 
 void vtkChainMailDeformationFilter::WarnOnce(const std::string& message)
