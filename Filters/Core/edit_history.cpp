@@ -1,11 +1,14 @@
 #include "geoshaping/edit_history.h"
 
 #include "geoshaping/bit_cast.h"
+#include "geoshaping/partitioned_chainmail.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <numeric>
 #include <sstream>
 
 namespace geoshaping
@@ -13,7 +16,10 @@ namespace geoshaping
 namespace
 {
 const char* const kBase64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-constexpr std::size_t kVertexBytes = 4 + 3 * 8;
+std::size_t entry_bytes(int version)
+{
+  return (version == 1 ? 4 : 8) + 3 * 8;
+}
 
 void put_bytes(std::vector<unsigned char>& out, std::uint64_t bits, int bytes)
 {
@@ -107,7 +113,7 @@ std::string encode_edit(const Edit& e)
 {
   const EditRecipe& r = e.recipe;
   std::ostringstream out;
-  out << "GSE1 " << r.grasp;
+  out << (e.version == 1 ? "GSE1 " : "GSE2 ") << r.grasp;
   for (double x : { r.displacement.x(), r.displacement.y(), r.displacement.z() })
     out << ' ' << hex(x);
   out << ' ' << r.queue;
@@ -115,12 +121,15 @@ std::string encode_edit(const Edit& e)
     { r.stretch[0], r.stretch[1], r.compression[0], r.compression[1], r.shear[0], r.shear[1] })
     out << ' ' << hex(x);
   out << ' ' << r.curve_shape << ' ' << hex(r.step_threshold) << ' ' << r.refinement_iterations
-      << ' ' << e.vertices.size() << ' ';
+      << ' ' << e.ids.size() << ' ';
   std::vector<unsigned char> payload;
-  payload.reserve(e.vertices.size() * kVertexBytes);
-  for (std::size_t i = 0; i < e.vertices.size(); ++i)
+  payload.reserve(e.ids.size() * entry_bytes(e.version));
+  for (std::size_t i = 0; i < e.ids.size(); ++i)
   {
-    put_bytes(payload, std::uint32_t(e.vertices[i]), 4);
+    if (e.version == 1)
+      put_bytes(payload, std::uint32_t(e.ids[i]), 4);
+    else
+      put_bytes(payload, std::uint64_t(e.ids[i]), 8);
     for (int k = 0; k < 3; ++k)
       put_bytes(payload, bit_cast<std::uint64_t>(e.displacements[i][k]), 8);
   }
@@ -128,14 +137,15 @@ std::string encode_edit(const Edit& e)
   return out.str();
 }
 
-bool decode_edit(const std::string& record, index_t n, Edit& e, std::string& error)
+bool decode_edit(const std::string& record, Edit& e, std::string& error)
 {
   std::istringstream in(record);
   std::string magic, payload;
   double d[13];
   long long grasp, queue, shape, refinement, count;
   in >> magic;
-  bool ok = magic == "GSE1" && parse_integer(in, grasp) && parse_number(in, d[0]) &&
+  const int version = magic == "GSE1" ? 1 : magic == "GSE2" ? 2 : 0;
+  bool ok = version > 0 && parse_integer(in, grasp) && parse_number(in, d[0]) &&
             parse_number(in, d[1]) && parse_number(in, d[2]) && parse_integer(in, queue);
   for (int k = 3; ok && k < 9; ++k)
     ok = parse_number(in, d[k]);
@@ -144,14 +154,16 @@ bool decode_edit(const std::string& record, index_t n, Edit& e, std::string& err
   std::vector<unsigned char> bytes;
   if (ok && count > 0)
     ok = bool(in >> payload) && unbase64(payload, bytes);
-  if (!ok || count < 0 || bytes.size() != std::size_t(count) * kVertexBytes)
+  const std::size_t size = entry_bytes(version);
+  if (!ok || count < 0 || bytes.size() != std::size_t(count) * size)
   {
-    error = "malformed edit record (expected GSE1 ...)";
+    error = "malformed edit record (expected GSE2 ... or GSE1 ...)";
     return false;
   }
   e = Edit{};
+  e.version = version;
   EditRecipe& r = e.recipe;
-  r.grasp = index_t(grasp);
+  r.grasp = std::int64_t(grasp);
   r.displacement = Eigen::Vector3d(d[0], d[1], d[2]);
   r.queue = int(queue);
   std::memcpy(r.stretch, d + 3, sizeof r.stretch);
@@ -160,20 +172,23 @@ bool decode_edit(const std::string& record, index_t n, Edit& e, std::string& err
   r.curve_shape = int(shape);
   r.step_threshold = d[9];
   r.refinement_iterations = int(refinement);
-  e.vertices.resize(std::size_t(count));
+  e.ids.resize(std::size_t(count));
   e.displacements.resize(std::size_t(count));
   for (std::size_t i = 0; i < std::size_t(count); ++i)
   {
-    const unsigned char* p = bytes.data() + i * kVertexBytes;
-    const auto v = static_cast<std::int32_t>(static_cast<std::uint32_t>(get_bytes(p, 4)));
-    if (v < 0 || v >= n)
+    const unsigned char* p = bytes.data() + i * size;
+    const std::int64_t id =
+      version == 1
+        ? std::int64_t(static_cast<std::int32_t>(static_cast<std::uint32_t>(get_bytes(p, 4))))
+        : static_cast<std::int64_t>(get_bytes(p, 8));
+    if (version == 2 && i > 0 && id <= e.ids[i - 1])
     {
-      error = "edit moves vertex " + std::to_string(v) + ", outside [0, " + std::to_string(n) + ")";
+      error = "edit record's ids are not increasing (at id " + std::to_string(id) + ")";
       return false;
     }
-    e.vertices[i] = v;
+    e.ids[i] = id;
     for (int k = 0; k < 3; ++k)
-      e.displacements[i][k] = bit_cast<double>(get_bytes(p + 4 + 8 * k, 8));
+      e.displacements[i][k] = bit_cast<double>(get_bytes(p + size - 24 + 8 * k, 8));
     if (!e.displacements[i].allFinite())
     {
       error = "edit has a non-finite displacement";
@@ -192,6 +207,59 @@ std::uint64_t record_hash(const std::string& record)
   return h;
 }
 
+void GlobalIdMap::set(const std::int64_t* gid, index_t n)
+{
+  local_.clear();
+  if (!gid)
+    return;
+  local_.reserve(std::size_t(n));
+  for (index_t v = 0; v < n; ++v)
+    if (!local_.emplace(gid[v], v).second)
+    {
+      local_.clear(); // not distinct: not ids
+      return;
+    }
+}
+
+EditPlace GlobalIdMap::place() const
+{
+  EditPlace place;
+  if (!local_.empty())
+    place.holders = [this](std::int64_t id, std::vector<index_t>& out)
+    {
+      const index_t v = find(id);
+      if (v >= 0)
+        out.push_back(v);
+    };
+  return place;
+}
+
+void EditHistory::locate(const ChainMailDeformer& deformer, Edit& e, const EditPlace& place)
+{
+  e.vertices.clear();
+  e.entries.clear();
+  e.owned = 0;
+  // Ids are vertex indices without holders, and in GSE1 records on a whole mesh.
+  const bool by_index = !place.holders || (e.version == 1 && !place.exchange);
+  std::vector<index_t> holders;
+  for (std::size_t k = 0; k < e.ids.size(); ++k)
+  {
+    holders.clear();
+    if (!by_index)
+      place.holders(e.ids[k], holders);
+    else if (e.ids[k] >= 0 && e.ids[k] < deformer.size())
+      holders.push_back(index_t(e.ids[k]));
+    bool owned = false;
+    for (index_t v : holders)
+    {
+      e.vertices.push_back(v);
+      e.entries.push_back(std::uint32_t(k));
+      owned = owned || deformer.owned(v);
+    }
+    e.owned += owned;
+  }
+}
+
 void EditHistory::apply(ChainMailDeformer& deformer, Edit& e)
 {
   deformer.reset();
@@ -200,9 +268,10 @@ void EditHistory::apply(ChainMailDeformer& deformer, Edit& e)
   for (std::size_t i = 0; i < e.vertices.size(); ++i)
   {
     const index_t v = e.vertices[i];
+    const Eigen::Vector3d& u = e.displacements[e.entries[i]];
     e.old_rest[i] = deformer.rest_local(v);
     e.old_offset[i] = deformer.committed_offset(v);
-    deformer.set_rest(v, e.old_rest[i] + e.displacements[i], e.old_offset[i] + e.displacements[i]);
+    deformer.set_rest(v, e.old_rest[i] + u, e.old_offset[i] + u);
     touched_.push_back(v);
   }
 }
@@ -219,13 +288,42 @@ void EditHistory::revert(ChainMailDeformer& deformer, const Edit& e)
 }
 
 const Edit& EditHistory::commit(ChainMailDeformer& deformer, const EditRecipe& recipe,
-  const std::vector<index_t>& vertices, const std::vector<Eigen::Vector3d>& displacements)
+  const std::vector<index_t>& vertices, const std::vector<Eigen::Vector3d>& displacements,
+  const EditPlace& place)
 {
   edits_.resize(applied_);
   Edit e;
   e.recipe = recipe;
-  e.vertices = vertices;
-  e.displacements = displacements;
+  // This piece's entries: its owned vertices, by global id (by index without holders).
+  std::vector<std::int64_t> flat; // id, u as bits
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    const index_t v = vertices[i];
+    if (!deformer.owned(v))
+      continue;
+    flat.push_back(place.holders ? deformer.global_id(v) : std::int64_t(v));
+    for (int k = 0; k < 3; ++k)
+      flat.push_back(bit_cast<std::int64_t>(displacements[i][k]));
+  }
+  std::vector<std::vector<std::int64_t>> all;
+  if (place.exchange)
+    all = place.exchange->all_gather(flat);
+  else
+    all.push_back(std::move(flat));
+  std::vector<std::pair<std::int64_t, Eigen::Vector3d>> entries;
+  for (const auto& piece : all)
+    for (std::size_t i = 0; i + 3 < piece.size(); i += 4)
+      entries.emplace_back(
+        piece[i], Eigen::Vector3d(bit_cast<double>(piece[i + 1]), bit_cast<double>(piece[i + 2]),
+                    bit_cast<double>(piece[i + 3])));
+  std::sort(
+    entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [id, u] : entries)
+  {
+    e.ids.push_back(id);
+    e.displacements.push_back(u);
+  }
+  locate(deformer, e, place);
   e.hash = record_hash(encode_edit(e));
   edits_.push_back(std::move(e));
   apply(deformer, edits_.back());
@@ -249,26 +347,47 @@ bool EditHistory::redo(ChainMailDeformer& deformer)
   return true;
 }
 
-bool EditHistory::synchronize(ChainMailDeformer& deformer, const std::vector<std::string>& records,
-  std::string& error, const std::function<bool(index_t)>& fits)
+bool EditHistory::refused(ChainMailDeformer& deformer, std::size_t i,
+  const std::function<bool(index_t)>& fits, const EditPlace& place, std::string& error)
 {
-  // After the edit at applied_ - 1 was applied: drops it (and the redo tail) if a vertex
-  // it moved does not fit.
-  const auto refused = [&](std::size_t i)
+  const Edit& e = edits_[applied_ - 1];
+  // Whether every id is owned somewhere, and the lowest id that does not fit.
+  std::int64_t owned = std::int64_t(e.owned), unfit = 0, unfit_id = 0;
+  if (fits)
+    for (std::size_t k = 0; k < e.vertices.size(); ++k)
+    {
+      const std::int64_t id = e.ids[e.entries[k]];
+      if (!fits(e.vertices[k]) && (!unfit || id < unfit_id))
+        unfit = 1, unfit_id = id;
+    }
+  if (place.exchange)
   {
-    if (!fits)
-      return false;
-    for (index_t v : edits_[applied_ - 1].vertices)
-      if (!fits(v))
-      {
-        undo(deformer);
-        edits_.resize(applied_);
-        error = "edit " + std::to_string(i) + " moves vertex " + std::to_string(v) +
-                " beyond what the output's points hold";
-        return true;
-      }
+    owned = 0;
+    std::int64_t any = 0;
+    for (const auto& v : place.exchange->all_gather({ std::int64_t(e.owned), unfit, unfit_id }))
+    {
+      owned += v[0];
+      if (v[1] && (!any || v[2] < unfit_id))
+        unfit_id = v[2];
+      any = any || v[1];
+    }
+    unfit = any;
+  }
+  if (owned == std::int64_t(e.ids.size()) && !unfit)
     return false;
-  };
+  error = unfit ? "edit " + std::to_string(i) + " moves vertex " + std::to_string(unfit_id) +
+                    " beyond what the output's points hold"
+                : "edit " + std::to_string(i) + " moves " +
+                    std::to_string(std::int64_t(e.ids.size()) - owned) + " of its " +
+                    std::to_string(e.ids.size()) + " point ids that are not in the mesh";
+  undo(deformer);
+  edits_.resize(applied_);
+  return true;
+}
+
+bool EditHistory::synchronize(ChainMailDeformer& deformer, const std::vector<std::string>& records,
+  std::string& error, const std::function<bool(index_t)>& fits, const EditPlace& place)
+{
   std::vector<std::uint64_t> hashes(records.size());
   for (std::size_t i = 0; i < records.size(); ++i)
     hashes[i] = record_hash(records[i]);
@@ -282,20 +401,21 @@ bool EditHistory::synchronize(ChainMailDeformer& deformer, const std::vector<std
     if (i < edits_.size() && edits_[i].hash == hashes[i])
     {
       redo(deformer);
-      if (refused(i))
+      if (refused(deformer, i, fits, place, error))
         return false;
       continue;
     }
     Edit e;
-    if (!decode_edit(records[i], deformer.size(), e, error))
+    if (!decode_edit(records[i], e, error))
     {
       error = "edit " + std::to_string(i) + ": " + error;
       return false;
     }
+    locate(deformer, e, place);
     edits_.resize(applied_);
     edits_.push_back(std::move(e));
     redo(deformer);
-    if (refused(i))
+    if (refused(deformer, i, fits, place, error))
       return false;
   }
   return true;
@@ -319,7 +439,8 @@ std::size_t EditHistory::memory_bytes() const
 {
   std::size_t bytes = edits_.capacity() * sizeof(Edit) + touched_.capacity() * sizeof(index_t);
   for (const Edit& e : edits_)
-    bytes += e.vertices.capacity() * sizeof(index_t) +
+    bytes += e.ids.capacity() * sizeof(std::int64_t) + e.vertices.capacity() * sizeof(index_t) +
+             e.entries.capacity() * sizeof(std::uint32_t) +
              (e.displacements.capacity() + e.old_rest.capacity() + e.old_offset.capacity()) *
                sizeof(Eigen::Vector3d);
   return bytes;

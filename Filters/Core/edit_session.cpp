@@ -16,11 +16,12 @@ void EditSession::clear()
 }
 
 bool EditSession::commit(ChainMailDeformer& deformer, const EditRecipe& recipe,
-  const std::vector<index_t>& vertices, const std::vector<Eigen::Vector3d>& displacements)
+  const std::vector<index_t>& vertices, const std::vector<Eigen::Vector3d>& displacements,
+  const EditPlace& place)
 {
   if (pending_)
     return false;
-  history_.commit(deformer, recipe, vertices, displacements);
+  history_.commit(deformer, recipe, vertices, displacements, place);
   last_ = history_.record(history_.applied() - 1);
   records_.push_back(last_); // already applied: nothing pending
   return true;
@@ -65,13 +66,13 @@ void EditSession::forget_applied()
   pending_ = true;
 }
 
-bool EditSession::synchronize(
-  ChainMailDeformer& deformer, std::string& error, const std::function<bool(index_t)>& fits)
+bool EditSession::synchronize(ChainMailDeformer& deformer, std::string& error,
+  const std::function<bool(index_t)>& fits, const EditPlace& place)
 {
   if (!pending_)
     return true;
   pending_ = false;
-  return history_.synchronize(deformer, records_, error, fits);
+  return history_.synchronize(deformer, records_, error, fits, place);
 }
 
 } // namespace geoshaping

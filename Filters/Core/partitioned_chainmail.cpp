@@ -184,6 +184,17 @@ std::string PartitionedChainMail::set_piece(const double* xyz, index_t n, Adjace
   return {};
 }
 
+void PartitionedChainMail::holders(std::int64_t gid, std::vector<index_t>& out) const
+{
+  const auto it = local_of_.find(gid);
+  if (it == local_of_.end())
+    return;
+  out.push_back(it->second);
+  const auto range = aliases_.equal_range(it->second);
+  for (auto a = range.first; a != range.second; ++a)
+    out.push_back(a->second);
+}
+
 bool PartitionedChainMail::fill_outbox()
 {
   for (auto& box : outbox_)

@@ -400,6 +400,7 @@ private:
   void KeepAbortedPass(const char* pass, int done, int total);
   // The stages of RequestData (vtkChainMailDeformationFilterUpdate.cxx).
   bool UpdateGeometry(vtkPointSet* input);
+  void BuildOutputCaches(vtkPointSet* input, const std::vector<double>& xyz);
   // The distributed path (vtkChainMailDeformationFilterParallel.cxx): false when this
   // update runs in one process.
   bool RequestDataParallel(

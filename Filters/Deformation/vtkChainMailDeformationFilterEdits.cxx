@@ -113,7 +113,8 @@ void vtkChainMailDeformationFilter::CommitEdit()
   geoshaping::Displacements displacements;
   state.Passes.final_shape(state.Deformer, vertices, displacements);
   if (!state.GeometryValid || this->Statistics.LastGraspPointId < 0 ||
-      !state.Edits.commit(state.Deformer, state.FrameRecipe, vertices, displacements))
+      !state.Edits.commit(
+        state.Deformer, state.FrameRecipe, vertices, displacements, state.Placement()))
   {
     vtkWarningMacro("CommitEdit: nothing to commit (no deformation in the last update).");
     return;

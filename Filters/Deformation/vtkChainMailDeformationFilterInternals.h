@@ -9,10 +9,12 @@
 #include "vtkDoubleArray.h"
 #include "vtkGeoShapingAdapter.h"
 #include "vtkGrowingBoundsPoints.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationStringKey.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -117,8 +119,13 @@ struct vtkChainMailDeformationFilter::vtkInternals
   // Its point GlobalIds when the input has none (geoshaping::coordinate_ids), shown in
   // the output; null when the input has its own.
   vtkSmartPointer<vtkIdTypeArray> GeneratedIds;
-  // Point GlobalIds of the input, when it has them: global id -> point id.
-  std::unordered_map<std::int64_t, geoshaping::index_t> LocalOfGlobal;
+  // Point GlobalIds of the input in one process, when it has them: global id -> point id
+  // (the grasp's and the edit records' names).
+  geoshaping::GlobalIdMap Ids;
+  // The edits' collectives on several processes (the global controller), with Partition.
+  std::unique_ptr<geoshaping::Exchange> EditExchange;
+  // Where edit records' ids are: the partition's pieces, else Ids (Parallel.cxx).
+  geoshaping::EditPlace Placement() const;
   std::set<std::string> Warned; // WarnOnce's messages, cleared when the geometry changes
 };
 
@@ -137,13 +144,42 @@ inline void SetCurvePoints(geoshaping::Curve& curve, vtkPiecewiseFunction* f)
   }
 }
 
+// GraspMode nearest to a position: the point nearest `p` by squared distance (double,
+// from the points' coordinates), ties to the lowest id(v) (its global id), -1 when there
+// is none. The same rule on one process and on each process of several, so the reduction
+// over processes (Parallel.cxx) picks the same point for any partition.
+template<class Id>
+vtkIdType NearestPoint(
+  vtkStaticPointLocator* locator, vtkPoints* points, const double p[3], const Id& id, double& dist2)
+{
+  vtkIdType best = locator->FindClosestPoint(p);
+  if (best < 0)
+    return -1;
+  double x[3];
+  points->GetPoint(best, x);
+  dist2 = vtkMath::Distance2BetweenPoints(x, p);
+  // Every point as near (a tie the locator may have broken either way).
+  vtkNew<vtkIdList> near;
+  locator->FindPointsWithinRadius(std::sqrt(dist2) * (1.0 + 1e-9) + 1e-300, p, near);
+  for (vtkIdType i = 0; i < near->GetNumberOfIds(); ++i)
+  {
+    const vtkIdType v = near->GetId(i);
+    points->GetPoint(v, x);
+    const double d2 = vtkMath::Distance2BetweenPoints(x, p);
+    if (d2 < dist2 || (d2 == dist2 && id(v) < id(best)))
+      best = v, dist2 = d2;
+  }
+  return best;
+}
+
 using IdList = std::vector<geoshaping::index_t>;
 using IdLists = std::initializer_list<const IdList*>;
 
-inline geoshaping::EditRecipe Recipe(vtkChainMailDeformationFilter* self, vtkIdType grasp)
+// `grasp`: its global id (its point index without ids).
+inline geoshaping::EditRecipe Recipe(vtkChainMailDeformationFilter* self, std::int64_t grasp)
 {
   geoshaping::EditRecipe r;
-  r.grasp = geoshaping::index_t(grasp);
+  r.grasp = grasp;
   r.displacement = Eigen::Vector3d(self->GetDisplacement());
   r.queue = self->GetCandidateQueue();
   self->GetStretchRange(r.stretch);

@@ -9,10 +9,12 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "geoshaping/bit_cast.h"
 #include "geoshaping/coordinate_ids.h"
 #include "geoshaping/partitioned_chainmail.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace
 {
@@ -161,6 +163,18 @@ bool AllAgree(ControllerExchange& ex, bool ok)
 
 using namespace vtkChainMailDeformationFilterDetail;
 
+geoshaping::EditPlace vtkChainMailDeformationFilter::vtkInternals::Placement() const
+{
+  if (!this->Partition || !this->EditExchange)
+    return this->Ids.place();
+  geoshaping::EditPlace place;
+  const geoshaping::PartitionedChainMail* partition = this->Partition.get();
+  place.holders = [partition](std::int64_t id, std::vector<geoshaping::index_t>& out)
+  { partition->holders(id, out); };
+  place.exchange = this->EditExchange.get();
+  return place;
+}
+
 int vtkChainMailDeformationFilter::ComputeInputUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -202,10 +216,6 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       " (use RefinementSolver Envelope with ValidRegionFrame Axes)";
   else if (this->RelaxationIterations > 0)
     refused = "RelaxationIterations > 0 (relaxation)";
-  else if (!state.Edits.records().empty())
-    refused = "edits (EditHistory, CommitEdit)";
-  else if (this->GraspMode == GRASP_NEAREST_TO_POSITION)
-    refused = "GraspMode nearest to a position (use a GraspPointId: a global point id)";
   else if (this->CandidateQueue != FIFO && this->CandidateQueue != FIFO_PRIORITY)
     refused = std::string("the ") +
               geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) +
@@ -264,7 +274,9 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
   // Geometry: rebuilt on every process when it changed on any (points read only then).
   if (anyStale)
   {
-    state.GeometryValid = false;
+    // On every process, whether its own piece changed or not: set_piece below resets the
+    // deformer, so every process replays its edits (collectively) at UpdateEdits.
+    state.Invalidate(vtkInternals::Stale::Geometry);
     std::vector<double> xyz;
     vtkIdType firstBad = -1;
     const bool finite =
@@ -277,10 +289,27 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       state.Partition.reset();
       return true;
     }
+    // The setup once: the points read once, the adjacency built once, the deformer set
+    // up by set_piece alone (not also as a whole mesh), then the output's caches.
+    state.GeometryPoints = input->GetPoints();
+    state.GeometrySize = n;
+    state.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
+    state.GeometryPrecision = this->OutputPointsPrecision;
+    state.Ids.clear(); // one process's map: the partition names the points here
     if (n > 0)
-      this->UpdateGeometry(input); // the output points, normals and locator caches
+    {
+      this->BuildOutputCaches(input, xyz);
+      ++this->NumberOfRebuilds;
+    }
     vtkIdType skipped = 0;
     geoshaping::Adjacency adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
+    if (skipped > 0)
+    {
+      vtkWarningMacro("Process " << ex.piece() << ": " << skipped
+                                 << " cells are of an unsupported type (higher-order or "
+                                    "polyhedral) or have invalid point ids; their edges do not "
+                                    "propagate deformation.");
+    }
     std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
     std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
     for (vtkIdType i = 0; i < n; ++i)
@@ -306,6 +335,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     state.Partition = std::make_unique<geoshaping::PartitionedChainMail>(state.Deformer);
     state.Envelope.reset(); // set up again on the next refinement
     state.Passes.invalidate();
+    state.EditExchange = std::make_unique<ControllerExchange>(controller);
     const std::string error = state.Partition->set_piece(
       xyz.data(), geoshaping::index_t(n), std::move(adjacency), gid.data(), owned.data(), ex);
     state.MalleabilitySource = nullptr; // set_piece reset the deformer's arrays
@@ -318,15 +348,6 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       state.Partition.reset();
       return true;
     }
-    if (n == 0)
-    {
-      // UpdateGeometry did not run: remember this empty piece, or it would look changed
-      // at every update and rebuild every process's piece each frame.
-      state.GeometryPoints = input->GetPoints();
-      state.GeometrySize = 0;
-      state.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
-      state.GeometryPrecision = this->OutputPointsPrecision;
-    }
     state.GeometryValid = true;
   }
   if (!AllAgree(ex, n == 0 || this->UpdateMalleabilityAndPins(inputVector, n)))
@@ -334,26 +355,79 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     state.Deformer.reset();
     return true;
   }
+  // Committed edits (collective: the same list on every process).
+  std::vector<int> shown; // the last frame, shown until rewritten
+  const std::vector<int> touched = this->UpdateEdits(shown);
+
+  // The grasp, as a global id: GraspPointId, or the point nearest GraspPosition over all
+  // processes (each process's nearest, reduced by (squared distance, global id): a ghost
+  // has its owner's coordinates and id, so the result is the same for any partition).
+  std::int64_t grasp = this->GraspPointId;
+  if (this->GraspMode == GRASP_NEAREST_TO_POSITION)
+  {
+    grasp = -1;
+    const double* p = this->GraspPosition;
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+    {
+      vtkErrorMacro("No deformation: GraspPosition (" << p[0] << ", " << p[1] << ", " << p[2]
+                                                      << ") is not finite; output is the "
+                                                         "undeformed input.");
+    }
+    else
+    {
+      std::int64_t mine[3] = { 0, 0, 0 }; // found, squared distance's bits, global id
+      if (n > 0)
+      {
+        if (!state.Locator)
+        {
+          state.Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+          state.Locator->SetDataSet(input);
+          state.Locator->BuildLocator();
+        }
+        double dist2 = 0.0;
+        const vtkIdType v = NearestPoint(
+          state.Locator, input->GetPoints(), p,
+          [&state](vtkIdType w) { return state.Deformer.global_id(geoshaping::index_t(w)); },
+          dist2);
+        if (v >= 0)
+        {
+          mine[0] = 1;
+          mine[1] = geoshaping::bit_cast<std::int64_t>(dist2);
+          mine[2] = state.Deformer.global_id(geoshaping::index_t(v));
+        }
+      }
+      double best = 0.0;
+      for (const auto& o : ex.all_gather({ mine[0], mine[1], mine[2] }))
+      {
+        const double d2 = geoshaping::bit_cast<double>(o[1]);
+        if (o[0] && (grasp < 0 || d2 < best || (d2 == best && o[2] < grasp)))
+          grasp = o[2], best = d2;
+      }
+    }
+  }
 
   const geoshaping::TransferFunction tf =
     Transfer(this, state.StretchCurve, state.CompressionCurve, state.ShearCurve);
-  if (*tf.validate())
+  const bool validTransfer = !*tf.validate();
+  if (!validTransfer)
   {
     vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");
-    return true;
   }
-  state.Deformer.set_transfer_function(tf);
-  state.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
-  state.Deformer.set_valid_region_frame(
-    static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame));
-  if (this->GraspPointId < 0)
+  else
+  {
+    state.Deformer.set_transfer_function(tf);
+    state.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
+    state.Deformer.set_valid_region_frame(
+      static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame));
+  }
+  if (!validTransfer || grasp < 0)
   {
     state.Deformer.reset(); // no grasp: the rest shape
   }
   else
   {
     const auto start = std::chrono::steady_clock::now();
-    const geoshaping::FrameResult r = state.Partition->deform(this->GraspPointId,
+    const geoshaping::FrameResult r = state.Partition->deform(grasp,
       Eigen::Vector3d(this->Displacement[0], this->Displacement[1], this->Displacement[2]), ex);
     this->Statistics.LastDeformationMilliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -390,9 +464,13 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     this->Statistics.NumberOfRounds = vtkIdType(state.Partition->rounds() + refined.supersteps);
     this->Statistics.NumberOfDisplacedPoints = vtkIdType(moved);
     this->Statistics.NumberOfExaminedCandidates = vtkIdType(examined);
-    this->Statistics.LastGraspPointId = r.ok ? this->GraspPointId : -1;
-    if (r.ok && n > 0 && !this->OutputFits())
+    this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
+    state.FrameRecipe = Recipe(this, grasp);
+    if (r.ok && !AllAgree(ex, n == 0 || this->OutputFits()))
     {
+      // The last frame's vertices are still shown: restored with the stale ones.
+      const IdList& last = state.Deformer.previously_moved();
+      shown.insert(shown.end(), last.begin(), last.end());
       state.Deformer.reset();
       state.Passes.begin_frame();
       this->Statistics.NumberOfDisplacedPoints = 0;
@@ -400,7 +478,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     }
   }
   if (n > 0)
-    this->WriteOutput(input, output, {}, {});
+    this->WriteOutput(input, output, shown, touched);
   if (n > 0 && state.GeneratedIds)
     output->GetPointData()->SetGlobalIds(state.GeneratedIds);
   return true;

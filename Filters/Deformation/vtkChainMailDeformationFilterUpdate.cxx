@@ -93,56 +93,64 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
     state.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
     // Point GlobalIds decide the propagation order and name the grasp (docs/mpi.md), so
     // one process gives the same result as several.
-    state.LocalOfGlobal.clear();
+    state.Ids.clear();
     vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
     if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
     {
       std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
       for (vtkIdType i = 0; i < n; ++i)
-      {
         gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
-        state.LocalOfGlobal.emplace(gid[std::size_t(i)], geoshaping::index_t(i));
-      }
+      state.Ids.set(gid.data(), geoshaping::index_t(n));
       state.Deformer.set_global_ids(gid.data());
     }
 
-    state.OutputPoints = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
-    const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT
-                          : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION
-                            ? VTK_DOUBLE
-                            : inPoints->GetDataType();
-    state.OutputPoints->SetDataType(precision);
-    state.OutputPoints->DeepCopy(inPoints);
-    if (state.OutputPoints->GetDataType() != precision)
-    {
-      auto converted = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
-      converted->SetDataType(precision);
-      converted->SetNumberOfPoints(n);
-      for (vtkIdType i = 0; i < n; ++i)
-        converted->SetPoint(i, xyz.data() + 3 * i);
-      state.OutputPoints = converted;
-    }
-    std::vector<std::int64_t> faceOffsets;
-    std::vector<geoshaping::index_t> faceVertices;
-    vtkDataArray* normals = input->GetPointData()->GetNormals();
-    state.OutputNormals = nullptr;
-    state.Normals = geoshaping::SparseNormals();
-    if (normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n &&
-        vtkGeoShapingAdapter::BuildFaces(input, faceOffsets, faceVertices))
-    {
-      state.Normals.set_mesh(
-        std::move(faceOffsets), std::move(faceVertices), geoshaping::index_t(n));
-      const double* rest = xyz.data();
-      state.Normals.set_positions(
-        [rest](geoshaping::index_t v) { return Eigen::Vector3d(rest + 3 * v); });
-      state.OutputNormals = vtk::TakeSmartPointer(normals->NewInstance());
-      state.OutputNormals->DeepCopy(normals);
-    }
+    this->BuildOutputCaches(input, xyz);
     state.GeometryValid = true;
     ++this->NumberOfRebuilds;
   }
 
   return state.GeometryValid;
+}
+
+void vtkChainMailDeformationFilter::BuildOutputCaches(
+  vtkPointSet* input, const std::vector<double>& xyz)
+{
+  // The output's points (and normals) of a new geometry, kept between updates; the
+  // distributed path calls this alone (its deformer is set up by set_piece).
+  vtkInternals& state = *this->Internals;
+  vtkPoints* inPoints = input->GetPoints();
+  const vtkIdType n = input->GetNumberOfPoints();
+  state.OutputPoints = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
+  const int precision = this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT
+                        : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION
+                          ? VTK_DOUBLE
+                          : inPoints->GetDataType();
+  state.OutputPoints->SetDataType(precision);
+  state.OutputPoints->DeepCopy(inPoints);
+  if (state.OutputPoints->GetDataType() != precision)
+  {
+    auto converted = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
+    converted->SetDataType(precision);
+    converted->SetNumberOfPoints(n);
+    for (vtkIdType i = 0; i < n; ++i)
+      converted->SetPoint(i, xyz.data() + 3 * i);
+    state.OutputPoints = converted;
+  }
+  std::vector<std::int64_t> faceOffsets;
+  std::vector<geoshaping::index_t> faceVertices;
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  state.OutputNormals = nullptr;
+  state.Normals = geoshaping::SparseNormals();
+  if (normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n &&
+      vtkGeoShapingAdapter::BuildFaces(input, faceOffsets, faceVertices))
+  {
+    state.Normals.set_mesh(std::move(faceOffsets), std::move(faceVertices), geoshaping::index_t(n));
+    const double* rest = xyz.data();
+    state.Normals.set_positions(
+      [rest](geoshaping::index_t v) { return Eigen::Vector3d(rest + 3 * v); });
+    state.OutputNormals = vtk::TakeSmartPointer(normals->NewInstance());
+    state.OutputNormals->DeepCopy(normals);
+  }
 }
 
 void vtkChainMailDeformationFilter::WarnOnce(const std::string& message)
@@ -267,7 +275,7 @@ std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& st
     Eigen::Vector3d x;
     const auto fits = [&state, &x](geoshaping::index_t v)
     { return state.Fits(v, state.Deformer.committed_offset(v), x); };
-    if (!state.Edits.synchronize(state.Deformer, error, fits))
+    if (!state.Edits.synchronize(state.Deformer, error, fits, state.Placement()))
     {
       vtkErrorMacro("EditHistory: " << error << "; the edits before it are applied.");
     }
@@ -321,12 +329,15 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
         state.Locator->SetDataSet(input);
         state.Locator->BuildLocator();
       }
-      grasp = state.Locator->FindClosestPoint(this->GraspPosition);
+      double dist2;
+      grasp = NearestPoint(
+        state.Locator, input->GetPoints(), this->GraspPosition,
+        [&state](vtkIdType v) { return state.Deformer.global_id(geoshaping::index_t(v)); }, dist2);
     }
-    if (grasp >= 0 && this->GraspMode == GRASP_POINT_ID && !state.LocalOfGlobal.empty())
+    if (grasp >= 0 && this->GraspMode == GRASP_POINT_ID && !state.Ids.empty())
     {
-      const auto it = state.LocalOfGlobal.find(grasp); // GraspPointId is a global id
-      grasp = it == state.LocalOfGlobal.end() ? n : vtkIdType(it->second);
+      const geoshaping::index_t local = state.Ids.find(grasp); // GraspPointId is a global id
+      grasp = local < 0 ? n : vtkIdType(local);
     }
     if (grasp < 0 && this->GraspMode == GRASP_POINT_ID)
     {
@@ -355,7 +366,9 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
       this->Statistics.LastGraspMalleability = r.ok ? double(state.Deformer.malleability(grasp))
                                                     : std::numeric_limits<double>::quiet_NaN();
-      state.FrameRecipe = Recipe(this, grasp);
+      state.FrameRecipe =
+        Recipe(this, state.Ids.empty() ? std::int64_t(grasp)
+                                       : state.Deformer.global_id(geoshaping::index_t(grasp)));
       if (r.ok && this->RefinementIterations > 0)
       {
         this->Refine(grasp);
@@ -470,9 +483,14 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
     sponsor->SetName("ChainMailSponsor");
     sponsor->SetNumberOfTuples(n);
     sponsor->Fill(-1);
+    // The sponsor's global id where points have ids (point GlobalIds, or several
+    // processes: the same for any partition; -1 on a ghost copy, whose owner examined it),
+    // else its point index.
+    const bool byId = state.Partition || !state.Ids.empty();
     for (geoshaping::index_t v : state.Deformer.moved())
     {
-      sponsor->SetValue(v, state.Deformer.sponsor(v));
+      const geoshaping::index_t s = state.Deformer.sponsor(v);
+      sponsor->SetValue(v, s < 0 ? -1 : byId ? state.Deformer.global_id(s) : s);
     }
     for (const IdList* write : IdLists{ &state.Deformer.moved(), &state.PassesWritten })
       for (geoshaping::index_t v : *write)

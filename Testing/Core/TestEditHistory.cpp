@@ -169,11 +169,23 @@ TEST(EditHistory, MalformedRecordsAreRefusedWithAReason)
   const std::string good = s.history.record(0);
   Edit e;
   std::string error;
-  EXPECT_TRUE(decode_edit(good, s.deformer.size(), e, error));
-  EXPECT_FALSE(decode_edit("GSE1 1 2", s.deformer.size(), e, error));
-  EXPECT_FALSE(decode_edit(good.substr(0, good.size() - 4), s.deformer.size(), e, error));
-  EXPECT_FALSE(decode_edit(good, 10, e, error)) << "vertex ids beyond a smaller mesh";
-  EXPECT_NE(error.find("outside"), std::string::npos);
+  EXPECT_TRUE(decode_edit(good, e, error));
+  EXPECT_FALSE(decode_edit("GSE2 1 2", e, error));
+  EXPECT_FALSE(decode_edit(good.substr(0, good.size() - 4), e, error));
+  // Ids beyond a smaller mesh: refused when replayed, the edit undone.
+  Scene small;
+  small.mesh = geoshaping::testing::triangle_grid(3, 3, 1.0);
+  small.deformer.set_mesh(small.mesh.xyz.data(), small.mesh.size(), small.mesh.adjacency);
+  EXPECT_FALSE(small.history.synchronize(small.deformer, { good }, error));
+  EXPECT_NE(error.find("not in the mesh"), std::string::npos) << error;
+  EXPECT_EQ(small.history.applied(), 0u);
+  for (index_t v = 0; v < small.deformer.size(); ++v)
+    ASSERT_EQ(small.deformer.committed_offset(v), Eigen::Vector3d::Zero());
+  // Ids must increase.
+  Edit swapped = e;
+  std::swap(swapped.ids[0], swapped.ids[1]);
+  EXPECT_FALSE(decode_edit(encode_edit(swapped), e, error));
+  EXPECT_NE(error.find("not increasing"), std::string::npos) << error;
   Scene fresh;
   EXPECT_FALSE(fresh.history.synchronize(fresh.deformer, { good, "junk" }, error));
   EXPECT_EQ(fresh.history.applied(), 1u) << "the edits before the bad one stay applied";

@@ -159,7 +159,7 @@ TEST(ChainMailDeformationBadInput, EditRecordBeyondFloatPointsIsRefused)
 {
   auto grid = Grid(VTK_FLOAT);
   geoshaping::Edit good, huge;
-  good.vertices = huge.vertices = { 14, 15 };
+  good.ids = huge.ids = { 14, 15 };
   good.displacements = { { 0, 0, 1 }, { 0, 0, 1 } };
   huge.displacements = { { 0, 0, 1 }, { 0, 0, 1e39 } };
   Watched w(grid);

@@ -15,6 +15,12 @@
 // displacement belong to the caller, who releases them after a commit (or the next frame
 // applies the grasp again, to the new rest shape). Every operation costs time in
 // proportion to the edits' vertices (EditHistory), never the mesh size.
+//
+// On a partitioned mesh (`place.exchange`, docs/mpi.md) every piece holds the same list
+// and runs the same commands: undo, redo and reset only change the list (no
+// communication); commit and synchronize are collective (EditHistory), and the records
+// name global ids, so every piece's list is the same text and a record made on N pieces
+// replays on M.
 #include "geoshaping/edit_history.h"
 
 #include <functional>
@@ -35,7 +41,8 @@ public:
   // rest shape. False, and nothing changes, while a change of the list is not yet
   // synchronized (the frame was computed on another rest shape).
   bool commit(ChainMailDeformer& deformer, const EditRecipe& recipe,
-    const std::vector<index_t>& vertices, const std::vector<Eigen::Vector3d>& displacements);
+    const std::vector<index_t>& vertices, const std::vector<Eigen::Vector3d>& displacements,
+    const EditPlace& place = {});
   bool undo();  // false when the list is empty
   bool redo();  // false when nothing is redoable
   bool reset(); // false when the list is empty
@@ -50,8 +57,8 @@ public:
   void forget_applied();
   // Brings the deformer to records() with the least work (EditHistory::synchronize): false
   // with `error` at the first bad record, the edits before it applied.
-  bool synchronize(
-    ChainMailDeformer& deformer, std::string& error, const std::function<bool(index_t)>& fits = {});
+  bool synchronize(ChainMailDeformer& deformer, std::string& error,
+    const std::function<bool(index_t)>& fits = {}, const EditPlace& place = {});
   // Vertices whose rest position changed since the last call (EditHistory::take_touched).
   std::vector<index_t> take_touched() { return history_.take_touched(); }
 

@@ -134,6 +134,9 @@ public:
   // Rounds (synchronisations) of the last frame, after the grasp's (the same on every
   // piece): what a frame's latency grows with.
   std::size_t rounds() const { return rounds_; }
+  // Appends the local vertices holding global id `gid` (none when this piece does not
+  // hold it; a point held twice, all its copies): EditPlace::holders for edits.
+  void holders(std::int64_t gid, std::vector<index_t>& out) const;
 
 private:
   // Fills the outboxes with this superstep's owned moved vertices that other pieces hold;
