@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace geoshaping
@@ -246,6 +247,16 @@ private:
   void envelope_cone(int axis, double sign, const std::vector<index_t>& fixed);
   double envelope_value(index_t v, int axis, double sign) const;
   void envelope_touch(index_t v, double value);
+  std::int32_t envelope_links(index_t v);
+  struct RadixEntry
+  {
+    std::uint64_t key; // the label's bits, order-preserving
+    double value;
+    index_t vertex;
+  };
+  void envelope_push(double y, index_t v);
+  RadixEntry envelope_pop();
+  void envelope_reset_queue();
   bool factorise(double rho);
 
   const LinkMesh& mesh_;
@@ -270,6 +281,18 @@ private:
   std::vector<std::uint32_t> env_cone_stamp_;
   std::uint32_t env_cone_pass_ = 0;
   std::vector<index_t> env_cone_touched_;
+  // The link cache of one call (envelope_links): per vertex reached its first slot (-1:
+  // none yet) and slot count (dense), and per slot the neighbour, whether it is fixed and,
+  // per active axis, the slab bounds the passes relax with.
+  std::vector<std::int32_t> env_first_, env_count_;
+  std::vector<index_t> env_cached_, env_nbr_;
+  std::vector<std::uint8_t> env_fixed_;
+  std::vector<double> env_up_[3], env_dn_[3];
+  int env_axes_ = 0; // bit i: axis i runs in this call
+  // The passes' radix heap: 65 buckets, the last key popped, the entries queued.
+  std::vector<RadixEntry> env_buckets_[65];
+  std::uint64_t env_last_ = 0;
+  std::size_t env_queued_count_ = 0;
 
   // ADMM: free variables' columns, the factorisation and what it was built for.
   struct Factor;
