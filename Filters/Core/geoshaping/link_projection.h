@@ -146,7 +146,8 @@ struct ProjectionOptions
   int max_iterations = 1000000;
   double tolerance = 1e-9; // relative to the mean edge length
   ProjectionSolver solver = ProjectionSolver::admm;
-  double rho = 0.0; // ADMM penalty; 0: 10 sqrt(the largest weight, a rigid set's size)
+  double rho = 0.0;       // ADMM penalty; 0: 10 sqrt(the largest weight, a rigid set's size)
+  double rho_scale = 1.0; // multiplies the penalty (reference_configuration's Link finish: 100)
   // reference_configuration only: when the solver stops unconverged, project its result
   // (see there).
   bool finish = true;
@@ -315,14 +316,21 @@ ProjectionReport refine_links(LinkProjector& projector, const ChainMailDeformer&
 // ADMM's tail is linear and slow (the fault step stops at 2e-6 L Axes, 2e-5 L Link after
 // 5,000 iterations; residual balancing of rho, Boyd et al. 3.4.1, was measured worse:
 // 0.013 L in 5,000 on the same scene, so rho stays fixed). When the cap ends the run
-// unconverged and options.finish is set, the result x (within the solver's residual of
-// the projection P(z), links violated by about that much) is itself projected: the
-// envelope in the Axes frame (exactly feasible, one pass), Dykstra from x in the Link
-// frame (up to 4 max_iterations sweeps: a Dykstra sweep costs a fraction of an ADMM
-// iteration). The returned point is then feasible to the
-// tolerance and |result - P(z)| <= |result - x| + |x - P(z)|: the finish's own move
-// (about the residual it removed) plus ADMM's distance to P(z); report->converged
-// says whether E_link reached the tolerance, report->finish_iterations what it took.
+// unconverged and options.finish is set, the result x (within the solver's residual of the
+// projection P(z), links violated by about that much) is itself projected: the envelope in
+// the Axes frame (exactly feasible, one pass); in the Link frame ADMM again from x with
+// rho_scale 100 (up to max_iterations; a stiff penalty from a nearly feasible start takes
+// the violation down fast: equal malleability, Link, 1.26e-5 L after 5,000 iterations at
+// the default rho, then 4e-7 L after 90 at 100x, where the earlier finish, 20,000 Dykstra
+// sweeps, stopped at 1.66e-6 L), then Dykstra (up to 4 max_iterations sweeps) only if
+// that is capped too. Why the default rho is slow there: with most links on their
+// cylinder's surface the primal residual falls slowly at rho 10 (5,000 iterations:
+// rho 3 2.4e-4 L, 10 1.3e-5 L, 30 4e-6 L; rho 100 converges in 4,197, 300 in 3,666), while
+// the stiffer rho were slower on the rigid-set scenes it was chosen on. The returned point
+// is then feasible to the tolerance and |result - P(z)| <= |result - x| + |x - P(z)|: the
+// finish's own move (about the residual it removed) plus ADMM's distance to P(z);
+// report->converged says whether E_link reached the tolerance, report->finish_iterations
+// what it took (ADMM iterations plus Dykstra sweeps).
 Displacements reference_configuration(const LinkMesh& mesh, index_t grasp,
   const Displacements& start, ProjectionReport* report = nullptr,
   const ProjectionOptions& options = {});
