@@ -143,7 +143,7 @@ void LinkProjector::clear()
   links_.clear();
 }
 
-bool LinkProjector::is_fixed(index_t v) const
+inline bool LinkProjector::is_fixed(index_t v) const
 {
   return v == grasp_ || mesh_.is_pinned(v);
 }
@@ -622,12 +622,15 @@ void LinkProjector::envelope_min_pass(int axis, double sign, std::vector<index_t
     if (y != envelope_value(b, axis, sign))
       continue; // lowered again since it was pushed
     const std::int32_t first = envelope_links(b), last = first + env_count_[b];
+    const index_t* nbr = env_nbr_.data(); // stable until the next envelope_links()
+    const std::uint8_t* pinned = env_fixed_.data();
+    const double* w = ub.data();
     for (std::int32_t k = first; k < last; ++k)
     {
-      const index_t a = env_nbr_[std::size_t(k)];
-      if (env_fixed_[std::size_t(k)] || a == grasp_)
+      const index_t a = nbr[k];
+      if (pinned[k] || a == grasp_)
         continue;
-      const double cap = y + ub[std::size_t(k)];
+      const double cap = y + w[k];
       if (cap < envelope_value(a, axis, sign))
       {
         envelope_touch(a, sign * cap);
@@ -677,12 +680,15 @@ void LinkProjector::envelope_cone(int axis, double sign, const std::vector<index
     if (c != cone(b))
       continue;
     const std::int32_t first = envelope_links(b), last = first + env_count_[b];
+    const index_t* nbr = env_nbr_.data(); // stable until the next envelope_links()
+    const std::uint8_t* pinned = env_fixed_.data();
+    const double* w = ub.data();
     for (std::int32_t k = first; k < last; ++k)
     {
-      const index_t a = env_nbr_[std::size_t(k)];
-      if (env_fixed_[std::size_t(k)] || a == grasp_)
+      const index_t a = nbr[k];
+      if (pinned[k] || a == grasp_)
         continue;
-      const double cap = c + ub[std::size_t(k)];
+      const double cap = c + w[k];
       if (cap < cone(a) && cap < top)
         set(a, cap);
     }
@@ -770,12 +776,13 @@ void LinkProjector::run_envelope(
     for (index_t v : region_)
     {
       const std::int32_t first = envelope_links(v), last = first + env_count_[v];
+      const double uv = u_[v][axis];
       for (std::int32_t k = first; k < last; ++k)
       {
         const index_t m = env_nbr_[std::size_t(k)];
         if (expanded_[m] && m < v)
           continue;
-        const double w = u_[v][axis] - u_[m][axis];
+        const double w = uv - u_[m][axis];
         const index_t high = w > dn[std::size_t(k)] ? v : (w < -up[std::size_t(k)] ? m : -1);
         if (high < 0)
           continue;
@@ -801,14 +808,18 @@ void LinkProjector::run_envelope(
     {
       const index_t v = env_touched_[i];
       const std::int32_t first = envelope_links(v), last = first + env_count_[v];
+      const double yv = envelope_value(v, axis, sign);
+      const bool v_fixed = is_fixed(v);
+      const std::vector<double>& ub_out = sign > 0.0 ? dn : up; // ub(v, m) per slot
+      const std::vector<double>& ub_in = sign > 0.0 ? up : dn;  // ub(m, v)
       for (std::int32_t k = first; k < last; ++k)
       {
         const index_t m = env_nbr_[std::size_t(k)];
-        const double yv = envelope_value(v, axis, sign), ym = envelope_value(m, axis, sign);
+        const double ym = envelope_value(m, axis, sign);
         // v - m in [lo, hi] = [-up, dn]: y_v <= y_m + ub(v, m) and y_m <= y_v + ub(m, v).
-        const double ub_vm = sign > 0.0 ? dn[std::size_t(k)] : up[std::size_t(k)];
-        const double ub_mv = sign > 0.0 ? up[std::size_t(k)] : dn[std::size_t(k)];
-        if (yv > ym + ub_vm && !is_fixed(v))
+        const double ub_vm = ub_out[std::size_t(k)];
+        const double ub_mv = ub_in[std::size_t(k)];
+        if (yv > ym + ub_vm && !v_fixed)
           from.push_back(m);
         if (ym > yv + ub_mv && !env_fixed_[std::size_t(k)] && m != grasp_)
           from.push_back(v);
@@ -860,12 +871,14 @@ void LinkProjector::run_envelope(
     for (index_t v : region_)
     {
       const std::int32_t first = envelope_links(v), last = first + env_count_[v];
+      const double uv = u_[v][axis];
+      const bool v_fixed = is_fixed(v);
       for (std::int32_t k = first; k < last; ++k)
       {
         const index_t m = env_nbr_[std::size_t(k)];
-        if ((expanded_[m] && m < v) || (is_fixed(v) && (env_fixed_[std::size_t(k)] || m == grasp_)))
+        if ((expanded_[m] && m < v) || (v_fixed && (env_fixed_[std::size_t(k)] || m == grasp_)))
           continue;
-        const double w = u_[v][axis] - u_[m][axis];
+        const double w = uv - u_[m][axis];
         worst = std::max(worst, std::max(-up[std::size_t(k)] - w, w - dn[std::size_t(k)]));
       }
     }
