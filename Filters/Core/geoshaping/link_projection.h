@@ -97,14 +97,33 @@ const char* solver_name(ProjectionSolver solver);
 // exact on fixed vertices (v + v) / 2 = v, and rigid sets (w = 0 both ways) get one
 // value bit for bit. Both are label-correcting Dijkstra runs seeded only by the vertices
 // with a violated link (or by the fixed vertices for the cones): a vertex's value
-// changes only when a neighbour forces it, so the cost is O(r log r) for the r vertices
-// that change and their neighbours, never O(mesh). It is not the projection (E_ref
-// measures how far it lies from it, docs/report.md); with inconsistent fixed values
-// (F empty) the conflicting links stay violated and `converged` is false.
-// Measured (docs/error-metrics.md): at the paper's scale (29,236 displaced, ChainMail's
-// E_link 16.4 L) E_link 0 in 8.9-13.5x the ChainMail frame (thread CPU time; 10.1x in
-// the report's wall clock), where Dykstra and ADMM stall at ~0.9 L because their grown region is
-// smaller than the feasible configurations' support (47,439 vertices).
+// changes only when a neighbour forces it, so the cost is O(r) for the r vertices that
+// change and their neighbours (a radix heap on the labels' bits: Dijkstra pops labels in
+// increasing order, so each entry only moves down its 65 buckets), never O(mesh).
+// The order of the relaxations does not change the result, bit for bit: a pass ends at
+// the greatest y <= its start with y_a <= fl(y_b + ub(a, b)) for every link out of a seed
+// or a lowered vertex b (by induction over the assignments, any order's labels stay
+// above every such y, and the end state is one), so Dijkstra's order is only a matter
+// of speed (a FIFO order popped 4x and 10.6x more vertices in the two large passes at the
+// paper's scale, and was slower).
+// Each link's slab on each axis is computed once (axis_slab, cached per vertex in flat
+// arrays and kept across calls: the mesh is constant for the projector's life; the cache
+// is dropped past 8x the start + 65,536 vertices, so its memory stays O(displaced)).
+// It is not the projection (E_ref measures how far it lies from it, docs/report.md); with
+// inconsistent fixed values (F empty) the conflicting links stay violated and
+// `converged` is false.
+// Measured (docs/error-metrics.md, "Where the envelope's time goes"): at the paper's scale
+// (29,236 displaced, ChainMail's E_link 16.4 L) E_link 0; thread CPU time, interleaved,
+// load 5-9: the first implementation 55-66 ms (frame + envelope 20-22x the frame), this
+// one 31-34 ms (11.3-11.8x). Dykstra and ADMM stall at ~0.9 L there because their grown
+// region is smaller than the feasible configurations' support (47,439 vertices).
+// A Link-frame envelope: a difference constraint bounds u_a - u_b on one world axis, so
+// the only inner approximations of a link's cylinder that keep the lattice are boxes
+// aligned with the world axes (the largest cube around 0: half-side
+// min(r / sqrt(3), min(along_hi, -along_lo) / |e|_1)); a box aligned with the link is
+// not (its faces mix the axes). Such an envelope is feasible for the cylinders but
+// depends on how each link sits against the world axes: not rotation invariant, which
+// is what the Link frame is for, and tighter than the cylinder. Not implemented.
 
 // ADMM. With x the free variables (weights m: 1, or the size of a rigid set), z their
 // start, and for link k the difference w_k = D_k x + c_k (c_k: the fixed end's value),
