@@ -212,11 +212,21 @@ void write_results(const Options& o, const Results& r)
        << row.ms[2] << ',' << row.ms[3] << ',' << row.bfs_ms << ',' << row.paper_ms[0] << ','
        << row.paper_ms[1] << ',' << row.paper_ms[2] << '\n';
 
+  // The load average when the run ends (1, 5, 15 minutes): other work on the machine slows
+  // every timing, the ChainMail frame more than the refinement (docs/error-metrics.md).
+  std::string load = "unknown";
+  {
+    std::ifstream in("/proc/loadavg");
+    double l1 = 0.0, l5 = 0.0, l15 = 0.0;
+    if (in >> l1 >> l5 >> l15)
+      load = fmt("%.2f", l1) + " / " + fmt("%.2f", l5) + " / " + fmt("%.2f", l15);
+  }
   std::ofstream md(o.out + "/report.md");
   md << "# Error against run time\n\nWritten by `Testing/Report/run-report.sh` (this file is "
         "generated; edit report_write.cxx) in "
      << fmt("%.0f", r.seconds) << " s. Machine: " << std::thread::hardware_concurrency()
-     << " hardware threads; all variants timed in the same run, median of 9 frames (one "
+     << " hardware threads, load average at the end of the run " << load
+     << " (1 / 5 / 15 min); all variants timed in the same run, median of 9 frames (one "
         "frame = ChainMail + the refinement pass; an ADMM frame never reuses the previous "
         "frame's factorisation). Errors are divided by the mean edge "
         "length (DESIGN.md section 6, docs/error-metrics.md); `E_temporal` is over a drag "
@@ -245,7 +255,10 @@ void write_results(const Options& o, const Results& r)
        << " vertices (Axes frame): the ChainMail frame takes **"
        << fmt("%.2f", r.scale.chainmail_ms) << " ms** (E_link " << g(r.scale.e_link)
        << " L); each refinement is timed with that frame, median of the run's repetitions, "
-          "interleaved, the factorisation never reused.\n\n"
+          "interleaved, the factorisation never reused. The envelope keeps each link's slab "
+          "bounds across calls (one projector per session, as the filter has): `Envelope` is "
+          "a frame after earlier frames, `Envelope, first call` a fresh projector (every "
+          "bound computed in the frame).\n\n"
        << "| refinement | ms (ChainMail + refinement) | x ChainMail frame | E_link | iterations | "
           "factorisations | region |\n"
        << "|---|---:|---:|---:|---:|---:|---:|\n";
@@ -290,7 +303,9 @@ void write_results(const Options& o, const Results& r)
          << (ref.converged
                 ? (ref.finish_iterations > 0
                       ? "converged after the finish (" + std::to_string(ref.finish_iterations) +
-                          (f == ValidRegionFrame::axes ? " envelope pass" : " Dykstra sweeps") +
+                          (f == ValidRegionFrame::axes
+                              ? " envelope pass"
+                              : " iterations of ADMM at 100x rho, then Dykstra if capped,") +
                           " from ADMM's capped result: E_link reaches the tolerance, but the "
                           "distance to "
                           "the exact projection stays ADMM's, which E_link does not bound, "

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace geoshaping
@@ -96,14 +97,33 @@ const char* solver_name(ProjectionSolver solver);
 // exact on fixed vertices (v + v) / 2 = v, and rigid sets (w = 0 both ways) get one
 // value bit for bit. Both are label-correcting Dijkstra runs seeded only by the vertices
 // with a violated link (or by the fixed vertices for the cones): a vertex's value
-// changes only when a neighbour forces it, so the cost is O(r log r) for the r vertices
-// that change and their neighbours, never O(mesh). It is not the projection (E_ref
-// measures how far it lies from it, docs/report.md); with inconsistent fixed values
-// (F empty) the conflicting links stay violated and `converged` is false.
-// Measured (docs/error-metrics.md): at the paper's scale (29,236 displaced, ChainMail's
-// E_link 16.4 L) E_link 0 in 8.9-13.5x the ChainMail frame (thread CPU time; 10.1x in
-// the report's wall clock), where Dykstra and ADMM stall at ~0.9 L because their grown region is
-// smaller than the feasible configurations' support (47,439 vertices).
+// changes only when a neighbour forces it, so the cost is O(r) for the r vertices that
+// change and their neighbours (a radix heap on the labels' bits: Dijkstra pops labels in
+// increasing order, so each entry only moves down its 65 buckets), never O(mesh).
+// The order of the relaxations does not change the result, bit for bit: a pass ends at
+// the greatest y <= its start with y_a <= fl(y_b + ub(a, b)) for every link out of a seed
+// or a lowered vertex b (by induction over the assignments, any order's labels stay
+// above every such y, and the end state is one), so Dijkstra's order is only a matter
+// of speed (a FIFO order popped 4x and 10.6x more vertices in the two large passes at the
+// paper's scale, and was slower).
+// Each link's slab on each axis is computed once (axis_slab, cached per vertex in flat
+// arrays and kept across calls: the mesh is constant for the projector's life; the cache
+// is dropped past 8x the start + 65,536 vertices, so its memory stays O(displaced)).
+// It is not the projection (E_ref measures how far it lies from it, docs/report.md); with
+// inconsistent fixed values (F empty) the conflicting links stay violated and
+// `converged` is false.
+// Measured (docs/error-metrics.md, "Where the envelope's time goes"): at the paper's scale
+// (29,236 displaced, ChainMail's E_link 16.4 L) E_link 0; thread CPU time, interleaved,
+// load 5-9: the first implementation 55-66 ms (frame + envelope 20-22x the frame), this
+// one 31-34 ms (11.3-11.8x). Dykstra and ADMM stall at ~0.9 L there because their grown
+// region is smaller than the feasible configurations' support (47,439 vertices).
+// A Link-frame envelope: a difference constraint bounds u_a - u_b on one world axis, so
+// the only inner approximations of a link's cylinder that keep the lattice are boxes
+// aligned with the world axes (the largest cube around 0: half-side
+// min(r / sqrt(3), min(along_hi, -along_lo) / |e|_1)); a box aligned with the link is
+// not (its faces mix the axes). Such an envelope is feasible for the cylinders but
+// depends on how each link sits against the world axes: not rotation invariant, which
+// is what the Link frame is for, and tighter than the cylinder. Not implemented.
 
 // ADMM. With x the free variables (weights m: 1, or the size of a rigid set), z their
 // start, and for link k the difference w_k = D_k x + c_k (c_k: the fixed end's value),
@@ -135,8 +155,9 @@ const char* solver_name(ProjectionSolver solver);
 // vertices, plus one factorisation (~O(r^1.5)) per growth of the region.
 // Measured (docs/report.md, docs/error-metrics.md): ADMM converges where Dykstra stalls
 // (fault step: 1e-4 L in ~1,000 iterations against Dykstra's 0.05 L after 20,000 sweeps)
-// but its tail is linear and slow: 1e-6 L is not reached on every scene within the
-// report's caps, and an ADMM iteration costs several Dykstra sweeps, so the filter keeps
+// but its tail is linear and slow: alone it does not reach 1e-6 L on every scene within
+// the report's cap of 5,000 (reference_configuration's finish does, below; all eight report
+// references converge), and an ADMM iteration costs several Dykstra sweeps, so the filter keeps
 // Dykstra for its (interactive) refinement and ADMM computes the references. Polishing
 // (an exact solve on the guessed active set, as OSQP does) was tried and rejected: the
 // guessed sets gave inconsistent or wrong-signed multipliers on the test and report scenes.
@@ -145,7 +166,8 @@ struct ProjectionOptions
   int max_iterations = 1000000;
   double tolerance = 1e-9; // relative to the mean edge length
   ProjectionSolver solver = ProjectionSolver::admm;
-  double rho = 0.0; // ADMM penalty; 0: 10 sqrt(the largest weight, a rigid set's size)
+  double rho = 0.0;       // ADMM penalty; 0: 10 sqrt(the largest weight, a rigid set's size)
+  double rho_scale = 1.0; // multiplies the penalty (reference_configuration's Link finish: 100)
   // reference_configuration only: when the solver stops unconverged, project its result
   // (see there).
   bool finish = true;
@@ -252,6 +274,16 @@ private:
   void envelope_cone(int axis, double sign, const std::vector<index_t>& fixed);
   double envelope_value(index_t v, int axis, double sign) const;
   void envelope_touch(index_t v, double value);
+  std::int32_t envelope_links(index_t v);
+  struct RadixEntry
+  {
+    std::uint64_t key; // the label's bits, order-preserving
+    double value;
+    index_t vertex;
+  };
+  void envelope_push(double y, index_t v);
+  RadixEntry envelope_pop();
+  void envelope_reset_queue();
   bool factorise(double rho);
 
   const LinkMesh& mesh_;
@@ -276,6 +308,18 @@ private:
   std::vector<std::uint32_t> env_cone_stamp_;
   std::uint32_t env_cone_pass_ = 0;
   std::vector<index_t> env_cone_touched_;
+  // The link cache of one call (envelope_links): per vertex reached its first slot (-1:
+  // none yet) and slot count (dense), and per slot the neighbour, whether it is fixed and,
+  // per active axis, the slab bounds the passes relax with.
+  std::vector<std::int32_t> env_first_, env_count_;
+  std::vector<index_t> env_cached_, env_nbr_;
+  std::vector<std::uint8_t> env_fixed_;
+  std::vector<double> env_up_[3], env_dn_[3];
+  int env_axes_ = 0; // bit i: axis i runs in this call
+  // The passes' radix heap: 65 buckets, the last key popped, the entries queued.
+  std::vector<RadixEntry> env_buckets_[65];
+  std::uint64_t env_last_ = 0;
+  std::size_t env_queued_count_ = 0;
 
   // ADMM: free variables' columns, the factorisation and what it was built for.
   struct Factor;
@@ -303,14 +347,21 @@ ProjectionReport refine_links(LinkProjector& projector, const ChainMailDeformer&
 // ADMM's tail is linear and slow (the fault step stops at 2e-6 L Axes, 2e-5 L Link after
 // 5,000 iterations; residual balancing of rho, Boyd et al. 3.4.1, was measured worse:
 // 0.013 L in 5,000 on the same scene, so rho stays fixed). When the cap ends the run
-// unconverged and options.finish is set, the result x (within the solver's residual of
-// the projection P(z), links violated by about that much) is itself projected: the
-// envelope in the Axes frame (exactly feasible, one pass), Dykstra from x in the Link
-// frame (up to 4 max_iterations sweeps: a Dykstra sweep costs a fraction of an ADMM
-// iteration). The returned point is then feasible to the
-// tolerance and |result - P(z)| <= |result - x| + |x - P(z)|: the finish's own move
-// (about the residual it removed) plus ADMM's distance to P(z); report->converged
-// says whether E_link reached the tolerance, report->finish_iterations what it took.
+// unconverged and options.finish is set, the result x (within the solver's residual of the
+// projection P(z), links violated by about that much) is itself projected: the envelope in
+// the Axes frame (exactly feasible, one pass); in the Link frame ADMM again from x with
+// rho_scale 100 (up to max_iterations; a stiff penalty from a nearly feasible start takes
+// the violation down fast: equal malleability, Link, 1.26e-5 L after 5,000 iterations at
+// the default rho, then 4e-7 L after 90 at 100x, where the earlier finish, 20,000 Dykstra
+// sweeps, stopped at 1.66e-6 L), then Dykstra (up to 4 max_iterations sweeps) only if
+// that is capped too. Why the default rho is slow there: with most links on their
+// cylinder's surface the primal residual falls slowly at rho 10 (5,000 iterations:
+// rho 3 2.4e-4 L, 10 1.3e-5 L, 30 4e-6 L; rho 100 converges in 4,197, 300 in 3,666), while
+// the stiffer rho were slower on the rigid-set scenes it was chosen on. The returned point
+// is then feasible to the tolerance and |result - P(z)| <= |result - x| + |x - P(z)|: the
+// finish's own move (about the residual it removed) plus ADMM's distance to P(z);
+// report->converged says whether E_link reached the tolerance, report->finish_iterations
+// what it took (ADMM iterations plus Dykstra sweeps).
 Displacements reference_configuration(const LinkMesh& mesh, index_t grasp,
   const Displacements& start, ProjectionReport* report = nullptr,
   const ProjectionOptions& options = {});
