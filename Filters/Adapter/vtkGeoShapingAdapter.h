@@ -20,6 +20,7 @@
 class vtkCellArray;
 class vtkDataArray;
 class vtkDataSet;
+class vtkInformationVector;
 class vtkPointSet;
 class vtkPoints;
 
@@ -53,6 +54,11 @@ public:
   /// Modification time of the geometry and connectivity (points and cells), ignoring
   /// point and cell data so that repainting an array does not rebuild adjacency.
   static vtkMTimeType GeometryTime(vtkPointSet* input);
+
+  // A distributed path's request (docs/mpi.md): at least one ghost level from the first
+  // input (every neighbour of an owned point on this process), more if downstream asked.
+  static void RequestGhostRing(
+    vtkInformationVector** inputVector, vtkInformationVector* outputVector);
 };
 
 #endif

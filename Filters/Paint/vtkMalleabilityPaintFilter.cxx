@@ -38,6 +38,9 @@ vtkStandardNewMacro(vtkMalleabilityPaintFilter);
 
 namespace
 {
+// The message tags of this filter's exchange (not the deformation filter's, 914300).
+constexpr int PaintTag = 914400;
+
 bool SameDab(const geoshaping::Dab& a, const geoshaping::Dab& b)
 {
   return a.center == b.center && a.radius == b.radius && a.value == b.value &&
@@ -284,14 +287,7 @@ int vtkMalleabilityPaintFilter::ComputeInputUpdateExtent(
   if (this->Distributed())
   {
     // One ring of ghosts: every neighbour of an owned point is on this process.
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-    vtkInformation* outInfo = outputVector->GetInformationObject(0);
-    const int levels =
-      outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
-        ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
-        : 0;
-    inInfo->Set(
-      vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(levels, 1));
+    vtkGeoShapingAdapter::RequestGhostRing(inputVector, outputVector);
   }
   return 1;
 }
@@ -347,7 +343,7 @@ int vtkMalleabilityPaintFilter::RequestData(
   }
   if (distributed)
   {
-    vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController());
+    vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController(), PaintTag);
     bool all = true;
     for (const auto& v : ex.all_gather({ badData ? 0 : 1 }))
       all = all && v[0] != 0;
@@ -590,7 +586,7 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
   vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched)
 {
   vtkInternals& in = *this->Internals;
-  vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController());
+  vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController(), PaintTag);
   const vtkIdType n = input->GetNumberOfPoints();
 
   // Local checks and whether the piece changed, agreed on by every process.

@@ -1,8 +1,6 @@
-// Private to GeoShaping::FiltersPaint: geoshaping::Exchange (partitioned_chainmail.h) over
-// a vtkMultiProcessController, as the ChainMailDeformation filter's distributed path has
-// it (vtkChainMailDeformationFilterParallel.cxx): collectives by AllGather, neighbour
-// messages by Send/Receive in an order every pair of processes agrees on (the lower
-// process sends first), so blocking sends cannot deadlock.
+// geoshaping::Exchange (partitioned_chainmail.h) over a vtkMultiProcessController, for
+// the GeoShaping filters' distributed paths (ChainMailDeformation, MalleabilityPaint):
+// header-only; a filter that includes it depends on VTK::ParallelCore.
 #ifndef vtkGeoShapingControllerExchange_h
 #define vtkGeoShapingControllerExchange_h
 
@@ -14,15 +12,34 @@
 #include <algorithm>
 #include <vector>
 
+// geoshaping::Exchange over a vtkMultiProcessController: collectives by AllGather, the
+// moved frontier by Send/Receive to neighbour processes only (all_to_all, at setup, to
+// every process), in an order every pair of processes agrees on (pairs in increasing
+// (lower, higher) order, the lower sends first), so blocking sends cannot deadlock.
 class vtkGeoShapingControllerExchange : public geoshaping::Exchange
 {
 public:
-  explicit vtkGeoShapingControllerExchange(vtkMultiProcessController* c)
+  // `tag`: the first of the two message tags this exchange uses (one per filter, so two
+  // filters' messages never mix).
+  vtkGeoShapingControllerExchange(vtkMultiProcessController* c, int tag)
     : Controller(c)
+    , Tag(tag)
   {
   }
   int pieces() const override { return this->Controller->GetNumberOfProcesses(); }
   int piece() const override { return this->Controller->GetLocalProcessId(); }
+
+  std::vector<geoshaping::RoundState> all_round_states(const geoshaping::RoundState& state) override
+  {
+    std::vector<unsigned long long> all(4 * std::size_t(this->pieces()));
+    const unsigned long long mine[4] = { state.pending[0], state.pending[1], state.pending[2],
+      state.superstep };
+    this->Controller->AllGather(mine, all.data(), 4);
+    std::vector<geoshaping::RoundState> out;
+    for (std::size_t p = 0; p < all.size(); p += 4)
+      out.push_back({ { all[p], all[p + 1], all[p + 2] }, all[p + 3] });
+    return out;
+  }
 
   geoshaping::SuperstepKey all_min(const geoshaping::SuperstepKey& value) override
   {
@@ -89,6 +106,8 @@ public:
   }
 
 private:
+  // Sends `send` to and receives `receive` from process q (either may be null), the lower
+  // process sending first: a count (tag) then the values as bytes (tag + 1).
   template<class T>
   void Pair(int q, const std::vector<T>* send, std::vector<T>* receive, int tag)
   {
@@ -125,8 +144,8 @@ private:
     }
   }
 
-  static constexpr int Tag = 914400; // not the deformation filter's
   vtkMultiProcessController* Controller;
+  const int Tag;
 };
 
 #endif
