@@ -21,6 +21,8 @@ noids = sys.argv[3:] == ["noids"]
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mpi_pipeline import POINT_INDEX_IDS  # noqa: E402
 
 if scene == "surface":
     source = FaultStepHorizon()  # noqa: F405 (painted: a rigid fault block in soft beds)
@@ -58,17 +60,7 @@ if out.GetNumberOfPoints():
     gids.SetName("GlobalIds")
     out.GetPointData().SetGlobalIds(gids)
 """
-ids.Script = COORDINATE_RANKS if noids else """
-from vtkmodules.vtkCommonCore import vtkIdTypeArray
-out = self.GetOutput()
-out.ShallowCopy(self.GetInput())
-gids = vtkIdTypeArray()
-gids.SetName("GlobalIds")
-gids.SetNumberOfTuples(out.GetNumberOfPoints())
-for i in range(out.GetNumberOfPoints()):
-    gids.SetValue(i, i)
-out.GetPointData().SetGlobalIds(gids)
-"""
+ids.Script = COORDINATE_RANKS if noids else POINT_INDEX_IDS
 spread = RedistributeDataSet(Input=source if noids and nranks > 1 else ids)  # noqa: F405
 ghosts = GhostCellsGenerator(Input=spread)  # noqa: F405
 chain = ChainMailDeformation(Input=ghosts)  # noqa: F405

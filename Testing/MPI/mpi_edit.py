@@ -22,6 +22,8 @@ scene, out, mode = sys.argv[1], sys.argv[2], sys.argv[3]
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mpi_pipeline import distributed  # noqa: E402
 os.makedirs(out, exist_ok=True)
 
 if scene == "surface":
@@ -35,20 +37,7 @@ else:  # plane: 31 x 31 points, spacing 1, uniform malleability 0.7
     drags = [([0.5, 0.5], [1.0, 0.0, 4.0]), ([0.35, 0.5], [0.0, 0.0, 3.0]),
              ([0.6, 0.3], [0.0, 1.0, -2.0])]
 # Global ids = the point ids of the undistributed data (mpi_deform.py).
-ids = ProgrammableFilter(Input=source)  # noqa: F405
-ids.Script = """
-from vtkmodules.vtkCommonCore import vtkIdTypeArray
-out = self.GetOutput()
-out.ShallowCopy(self.GetInput())
-gids = vtkIdTypeArray()
-gids.SetName("GlobalIds")
-gids.SetNumberOfTuples(out.GetNumberOfPoints())
-for i in range(out.GetNumberOfPoints()):
-    gids.SetValue(i, i)
-out.GetPointData().SetGlobalIds(gids)
-"""
-spread = RedistributeDataSet(Input=ids)  # noqa: F405
-ghosts = GhostCellsGenerator(Input=spread)  # noqa: F405
+ids, ghosts = distributed(source)
 chain = ChainMailDeformation(Input=ghosts)  # noqa: F405
 chain.CandidateQueue = "FIFO Priority"
 chain.OutputPointsPrecision = "Double"

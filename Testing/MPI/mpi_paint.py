@@ -17,22 +17,11 @@ out = sys.argv[1]
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mpi_pipeline import distributed  # noqa: E402
 
 source = FaultStepHorizon(Length=40.0, Width=20.0, Throw=8.0, StepRun=2.0, Spacing=0.5)  # noqa: F405
-ids = ProgrammableFilter(Input=source)  # noqa: F405
-ids.Script = """
-from vtkmodules.vtkCommonCore import vtkIdTypeArray
-out = self.GetOutput()
-out.ShallowCopy(self.GetInput())
-gids = vtkIdTypeArray()
-gids.SetName("GlobalIds")
-gids.SetNumberOfTuples(out.GetNumberOfPoints())
-for i in range(out.GetNumberOfPoints()):
-    gids.SetValue(i, i)
-out.GetPointData().SetGlobalIds(gids)
-"""
-spread = RedistributeDataSet(Input=ids)  # noqa: F405
-ghosts = GhostCellsGenerator(Input=spread)  # noqa: F405
+ids, ghosts = distributed(source)
 paint = MalleabilityPaint(Input=ghosts)  # noqa: F405
 paint.InitialMalleability = 0.4
 paint.Falloff = "Smooth"

@@ -22,6 +22,8 @@ solver = sys.argv[3] if len(sys.argv) > 3 else "Envelope"
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mpi_pipeline import distributed  # noqa: E402
 
 if scene == "surface":
     # Painted (Figure 5C): a rigid fault step in soft beds.
@@ -35,20 +37,7 @@ elif scene == "slab":
 else:
     raise SystemExit("unknown scene " + scene)
 # Global ids = the point ids of the undistributed data (as mpi_deform.py).
-ids = ProgrammableFilter(Input=source)  # noqa: F405
-ids.Script = """
-from vtkmodules.vtkCommonCore import vtkIdTypeArray
-out = self.GetOutput()
-out.ShallowCopy(self.GetInput())
-gids = vtkIdTypeArray()
-gids.SetName("GlobalIds")
-gids.SetNumberOfTuples(out.GetNumberOfPoints())
-for i in range(out.GetNumberOfPoints()):
-    gids.SetValue(i, i)
-out.GetPointData().SetGlobalIds(gids)
-"""
-spread = RedistributeDataSet(Input=ids)  # noqa: F405
-ghosts = GhostCellsGenerator(Input=spread)  # noqa: F405
+ids, ghosts = distributed(source)
 chain = ChainMailDeformation(Input=ghosts)  # noqa: F405
 chain.CandidateQueue = "FIFO Priority"
 chain.OutputPointsPrecision = "Double"
