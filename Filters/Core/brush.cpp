@@ -14,17 +14,8 @@ namespace
 {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-double distance(const double* xyz, index_t v, const Eigen::Vector3d& p)
-{
-  const double* q = xyz + 3 * std::size_t(v);
-  return (Eigen::Vector3d(q[0], q[1], q[2]) - p).norm();
-}
-
-double edge_length(const double* xyz, index_t a, index_t b)
-{
-  const double* p = xyz + 3 * std::size_t(a);
-  return distance(xyz, b, Eigen::Vector3d(p[0], p[1], p[2]));
-}
+constexpr auto distance = brush_distance;
+constexpr auto edge_length = brush_edge_length;
 
 struct Name
 {

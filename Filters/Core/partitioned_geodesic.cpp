@@ -9,18 +9,8 @@ namespace geoshaping
 
 namespace
 {
-// The same arithmetic as brush.cpp's distance() and edge_length().
-double distance(const double* xyz, index_t v, const Eigen::Vector3d& p)
-{
-  const double* q = xyz + 3 * std::size_t(v);
-  return (Eigen::Vector3d(q[0], q[1], q[2]) - p).norm();
-}
-
-double edge_length(const double* xyz, index_t a, index_t b)
-{
-  const double* p = xyz + 3 * std::size_t(a);
-  return distance(xyz, b, Eigen::Vector3d(p[0], p[1], p[2]));
-}
+constexpr auto distance = brush_distance; // brush.h: the same bits as the brush
+constexpr auto edge_length = brush_edge_length;
 } // namespace
 
 void PartitionedGeodesic::set_piece(const double* xyz, index_t n, const Adjacency* adjacency,

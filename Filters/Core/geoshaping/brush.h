@@ -12,6 +12,20 @@
 namespace geoshaping
 {
 
+// The brush's distances, one definition (the partitioned geodesic, partitioned_geodesic.h,
+// must compute the same bits): from vertex v to p, and the length of the edge (a, b).
+inline double brush_distance(const double* xyz, index_t v, const Eigen::Vector3d& p)
+{
+  const double* q = xyz + 3 * std::size_t(v);
+  return (Eigen::Vector3d(q[0], q[1], q[2]) - p).norm();
+}
+
+inline double brush_edge_length(const double* xyz, index_t a, index_t b)
+{
+  const double* p = xyz + 3 * std::size_t(a);
+  return brush_distance(xyz, b, Eigen::Vector3d(p[0], p[1], p[2]));
+}
+
 // Weight of a dab at normalised distance r = distance / radius, 1 at the centre and 0
 // at and beyond r = 1 (except `constant`, which is 1 up to and including r = 1):
 //
