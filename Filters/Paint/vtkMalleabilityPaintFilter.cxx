@@ -20,6 +20,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "geoshaping/brush.h"
+#include "geoshaping/coordinate_ids.h"
 #include "geoshaping/partitioned_geodesic.h"
 #include "geoshaping/transfer_function.h"
 
@@ -593,8 +594,8 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
   std::string problem;
   vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
   vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
-  if (n > 0 && (!gids || gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
-    problem = "no point GlobalIds array (one value per point)";
+  if (n > 0 && gids && (gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
+    problem = "a point GlobalIds array that is not one value per point";
   else if (n > 0 && (!ghosts || ghosts->GetNumberOfTuples() != n))
     problem = "no vtkGhostType point array (ownership of the points)";
   const bool stale = !in.Geodesic || in.GeometryPoints != input->GetPoints() ||
@@ -610,11 +611,23 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
     in.GeometrySize = 0;
     in.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
   }
-  bool ok = true, anyStale = false;
-  for (const auto& v : ex.all_gather({ problem.empty() ? 1 : 0, stale ? 1 : 0 }))
+  bool ok = true, anyStale = false, withIds = false, withoutIds = false;
+  for (const auto& v : ex.all_gather({ problem.empty() ? 1 : 0, stale ? 1 : 0,
+         n == 0 ? 0
+         : gids ? 1
+                : 2 }))
   {
     ok = ok && v[0] != 0;
     anyStale = anyStale || v[1] != 0;
+    withIds = withIds || v[2] == 1;
+    withoutIds = withoutIds || v[2] == 2;
+  }
+  if (ok && withIds && withoutIds)
+  {
+    vtkErrorMacro("Point GlobalIds on some processes and not on others; no geodesic dab is "
+                  "applied on any process.");
+    in.Geodesic.reset();
+    return true;
   }
   if (!ok)
   {
@@ -628,10 +641,22 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
   }
   if (anyStale)
   {
-    in.UpdateIds(input);
     std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
     for (vtkIdType i = 0; i < n; ++i)
       owned[std::size_t(i)] = (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
+    if (withIds)
+      in.UpdateIds(input);
+    else
+    {
+      // None anywhere: numbered by coordinates, whatever the partition, a seam point that
+      // several processes claim owned by the lowest (coordinate_ids.h, as the deformation
+      // filter does).
+      const std::vector<std::uint8_t> claimed = std::move(owned);
+      in.Ids = geoshaping::coordinate_ids(
+        in.Xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex);
+      in.IdSource = nullptr;
+      in.IdTime = 0;
+    }
     in.Adjacency = {};
     in.Adjacency.offsets.assign(1, 0);
     if (n > 0)

@@ -3,7 +3,9 @@ step: a geodesic brush on one side must not paint the other) given point GlobalI
 distributed by RedistributeDataSet + GhostCellsGenerator, painted by MalleabilityPaint
 with Geodesic distance (dabs spread over the surface, some across the rank borders);
 writes every owned point's (global id, malleability) to OUT/result.npy on rank 0 and the
-filter's figures to OUT/stats.json. Arguments: OUT."""
+filter's figures to OUT/stats.json. Arguments: OUT [noids]: with `noids` the data has
+no GlobalIds (the filter numbers the points by coordinates) and the rows are keyed by
+(x, y, z, malleability) instead."""
 import json
 import os
 import sys
@@ -14,6 +16,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 out = sys.argv[1]
+noids = "noids" in sys.argv[2:]
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
@@ -21,7 +24,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from mpi_pipeline import distributed  # noqa: E402
 
 source = FaultStepHorizon(Length=40.0, Width=20.0, Throw=8.0, StepRun=2.0, Spacing=0.5)  # noqa: F405
-ids, ghosts = distributed(source)
+if noids:
+    ghosts = GhostCellsGenerator(Input=RedistributeDataSet(Input=source))  # noqa: F405
+else:
+    ids, ghosts = distributed(source)
 paint = MalleabilityPaint(Input=ghosts)  # noqa: F405
 paint.InitialMalleability = 0.4
 paint.Falloff = "Smooth"
@@ -38,13 +44,17 @@ paint.UpdatePipeline()
 
 data = paint.GetClientSideObject().GetOutputDataObject(0)
 n = data.GetNumberOfPoints()
-rows = np.zeros((0, 2))
+rows = np.zeros((0, 4 if noids else 2))
 if n:
     ghost = vtk_to_numpy(data.GetPointData().GetArray("vtkGhostType")) if nranks > 1 else np.zeros(n)
     owned = (ghost.astype(int) & 1) == 0
-    gid = vtk_to_numpy(data.GetPointData().GetGlobalIds())[owned]
     m = vtk_to_numpy(data.GetPointData().GetArray("Malleability"))[owned]
-    rows = np.column_stack([gid.astype(float), m.astype(float)])
+    if noids:
+        xyz = vtk_to_numpy(data.GetPoints().GetData())[owned]
+        rows = np.column_stack([xyz.astype(float), m.astype(float)])
+    else:
+        gid = vtk_to_numpy(data.GetPointData().GetGlobalIds())[owned]
+        rows = np.column_stack([gid.astype(float), m.astype(float)])
 np.save(os.path.join(out, "rank%d.npy" % rank), rows)
 paint.UpdatePropertyInformation()
 stats = {key: paint.GetProperty(name).GetData() for key, name in (
@@ -53,7 +63,7 @@ stats = {key: paint.GetProperty(name).GetData() for key, name in (
 controller.Barrier()
 if rank == 0:
     rows = np.concatenate([np.load(os.path.join(out, "rank%d.npy" % r)) for r in range(nranks)])
-    rows = rows[np.argsort(rows[:, 0], kind="stable")]
+    rows = rows[np.lexsort(rows.T[::-1])]  # by the first column, then the next ...
     np.save(os.path.join(out, "result.npy"), rows)
     with open(os.path.join(out, "stats.json"), "w") as text:
         json.dump(stats, text)
