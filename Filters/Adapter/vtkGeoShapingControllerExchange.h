@@ -41,17 +41,6 @@ public:
     return out;
   }
 
-  geoshaping::SuperstepKey all_min(const geoshaping::SuperstepKey& value) override
-  {
-    std::vector<unsigned long long> all(3 * std::size_t(this->pieces()));
-    const unsigned long long mine[3] = { value[0], value[1], value[2] };
-    this->Controller->AllGather(mine, all.data(), 3);
-    geoshaping::SuperstepKey m = value;
-    for (std::size_t p = 0; p < all.size(); p += 3)
-      m = std::min(m, geoshaping::SuperstepKey{ all[p], all[p + 1], all[p + 2] });
-    return m;
-  }
-
   std::vector<std::vector<std::int64_t>> all_gather(
     const std::vector<std::int64_t>& values) override
   {

@@ -7,7 +7,6 @@ namespace geoshaping
 
 InProcessHub::InProcessHub(int pieces)
   : pieces_(pieces)
-  , values_(std::size_t(pieces))
   , gathered_(std::size_t(pieces))
   , mail_(std::size_t(pieces), std::vector<std::vector<MovedVertex>>(std::size_t(pieces)))
 {
@@ -29,15 +28,6 @@ void InProcessHub::barrier()
 
 // Each collective: write this piece's slot, meet, read every slot, meet again (so no
 // piece overwrites a slot before all have read it).
-SuperstepKey InProcessExchange::all_min(const SuperstepKey& value)
-{
-  hub_.values_[std::size_t(piece_)] = value;
-  hub_.barrier();
-  const SuperstepKey m = *std::min_element(hub_.values_.begin(), hub_.values_.end());
-  hub_.barrier();
-  return m;
-}
-
 std::vector<std::vector<std::int64_t>> InProcessExchange::all_gather(
   const std::vector<std::int64_t>& values)
 {

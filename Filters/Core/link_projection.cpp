@@ -1034,15 +1034,20 @@ Displacements reference_configuration(const LinkMesh& mesh, index_t grasp,
     // and violates its links by little; project x itself (the envelope in the Axes frame,
     // exact in one pass; in the Link frame ADMM at 100x rho from a start that is nearly
     // feasible, then Dykstra if that is capped too).
-    vertices.clear();
-    values.clear();
-    const Displacements x = projector.displacements();
-    for (index_t v : projector.region())
-      if (!x[std::size_t(v)].isZero(0.0))
-      {
-        vertices.push_back(v);
-        values.push_back(x[std::size_t(v)]);
-      }
+    // The start of a finish: the projector's last result, its non-zero displacements.
+    const auto restart_from_result = [&]
+    {
+      vertices.clear();
+      values.clear();
+      const Displacements x = projector.displacements();
+      for (index_t v : projector.region())
+        if (!x[std::size_t(v)].isZero(0.0))
+        {
+          vertices.push_back(v);
+          values.push_back(x[std::size_t(v)]);
+        }
+    };
+    restart_from_result();
     ProjectionOptions finish = options;
     ProjectionReport f;
     if (mesh.frame != ValidRegionFrame::link)
@@ -1063,15 +1068,7 @@ Displacements reference_configuration(const LinkMesh& mesh, index_t grasp,
       r.factorisations += f.factorisations;
       if (!f.converged)
       {
-        vertices.clear();
-        values.clear();
-        const Displacements y = projector.displacements();
-        for (index_t v : projector.region())
-          if (!y[std::size_t(v)].isZero(0.0))
-          {
-            vertices.push_back(v);
-            values.push_back(y[std::size_t(v)]);
-          }
+        restart_from_result();
         ProjectionOptions last = options;
         last.solver = ProjectionSolver::dykstra;
         // Dykstra's tail is linear too (fault step, Link: 1.7e-5 -> 2.1e-6 L in 5,000 sweeps).

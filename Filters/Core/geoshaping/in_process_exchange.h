@@ -25,7 +25,6 @@ private:
   std::condition_variable cv_;
   int waiting_ = 0;
   std::uint64_t generation_ = 0;
-  std::vector<SuperstepKey> values_;
   std::vector<std::vector<std::int64_t>> gathered_;
   std::vector<std::vector<std::vector<MovedVertex>>> mail_; // [from][to]
 };
@@ -40,7 +39,6 @@ public:
   }
   int pieces() const override { return hub_.pieces(); }
   int piece() const override { return piece_; }
-  SuperstepKey all_min(const SuperstepKey& value) override;
   std::vector<std::vector<std::int64_t>> all_gather(
     const std::vector<std::int64_t>& values) override;
   std::vector<std::vector<MovedVertex>> exchange(const std::vector<int>& to,

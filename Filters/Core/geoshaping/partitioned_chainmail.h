@@ -80,8 +80,6 @@ public:
   virtual ~Exchange() = default;
   virtual int pieces() const = 0;
   virtual int piece() const = 0;
-  // The lexicographic minimum of `value` over all pieces.
-  virtual SuperstepKey all_min(const SuperstepKey& value) = 0;
   // Every piece's `values`, by piece.
   virtual std::vector<std::vector<std::int64_t>> all_gather(
     const std::vector<std::int64_t>& values) = 0;
