@@ -5,6 +5,8 @@
 # (Testing/run-sanitizer-tests.sh; GEOSHAPING_SANITIZERS=0 skips it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# The commit-msg hook (CONTRIBUTING.md); harmless outside a git checkout.
+git config core.hooksPath .githooks 2>/dev/null || true
 build="${GEOSHAPING_BUILD_DIR:-build}"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j2
