@@ -36,8 +36,8 @@
  * costs the same on a mesh of millions of vertices as on a small one.
  *
  * Editing (docs/editing.md): CommitEdit() makes the shape of the last update the rest
- * shape for the next grasp and releases the grasp (GraspPointId -1, Displacement 0);
- * the edit's record (GetLastEdit(), a lossless line of text) is appended to the edit
+ * shape for the next grasp; GraspPointId and Displacement are the client's and stay as
+ * they are (the client releases the grasp: the ParaView proxy's command does); the edit's record (GetLastEdit(), a lossless line of text) is appended to the edit
  * list, which is also the `EditHistory` property (AddEdit / RemoveAllEdits): the output
  * is the input with every listed edit applied, replayed once when the list or the
  * geometry changes, with the least work (only the edits that differ are undone or
@@ -61,10 +61,11 @@
  * result equals the one-process result bit for bit. GraspPointId is then a global id,
  * as it is in one process whenever the input carries point GlobalIds. Refinement runs
  * there with RefinementSolver REFINEMENT_ENVELOPE in the AXES frame (the core's
- * partitioned_envelope.h, the same bits as one process). Not distributed yet, refused
- * with the same error on every process (output = input): the other refinement solvers
- * or the LINK frame, relaxation, edits, grasp nearest to a position, the Priority and
- * Max Violation queues.
+ * partitioned_envelope.h, the same bits as one process). Edits (commit, undo, redo,
+ * EditHistory) and a grasp nearest to GraspPosition work there too. Not distributed
+ * yet, refused with the same error on every process (output = input): the other
+ * refinement solvers or the LINK frame, relaxation, the Priority and Max Violation
+ * queues.
  */
 #ifndef vtkChainMailDeformationFilter_h
 #define vtkChainMailDeformationFilter_h

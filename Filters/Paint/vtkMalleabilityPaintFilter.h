@@ -41,12 +41,12 @@
  * is skipped with an error naming it; the other dabs are applied as if it were absent.
  * In parallel (an MPI server or pvbatch with more than one process) each process paints
  * its own points and their ghost copies. Euclidean painting is exact. Geodesic painting
- * asks for one ghost level and needs point GlobalIds and vtkGhostType on every process:
- * the source of a dab is the vertex nearest its centre over all processes (ties to the
- * lowest global id, the rule on one process too) and the distances are found by a
- * distributed label-correcting run (geoshaping/partitioned_geodesic.h), equal bit for bit
- * to one process's; without GlobalIds every process reports an error and applies no
- * geodesic dab. Updates there always repaint every dab (never incrementally) and cannot
+ * asks for one ghost level and takes point identity from the point GlobalIds (numbered
+ * by coordinates, geoshaping/coordinate_ids.h, when the input has none; an input with
+ * them on some processes and not on others is refused): the source of a dab is the
+ * vertex nearest its centre over all processes (ties to the lowest global id, the rule
+ * on one process too) and the distances are found by a distributed label-correcting run
+ * (geoshaping/partitioned_geodesic.h), equal bit for bit to one process's. Updates there always repaint every dab (never incrementally) and cannot
  * be aborted midway (an abort on one process would leave the others waiting).
  */
 #ifndef vtkMalleabilityPaintFilter_h
