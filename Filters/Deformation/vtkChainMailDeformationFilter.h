@@ -37,12 +37,13 @@
  *
  * Editing (docs/editing.md): CommitEdit() makes the shape of the last update the rest
  * shape for the next grasp; GraspPointId and Displacement are the client's and stay as
- * they are (the client releases the grasp: the ParaView proxy's command does); the edit's record (GetLastEdit(), a lossless line of text) is appended to the edit
- * list, which is also the `EditHistory` property (AddEdit / RemoveAllEdits): the output
- * is the input with every listed edit applied, replayed once when the list or the
- * geometry changes, with the least work (only the edits that differ are undone or
- * applied, each in time proportional to the vertices it moved). UndoEdit, RedoEdit and
- * ResetEdits edit that list; undo restores the previous points bit-exactly.
+ * they are (the ParaView proxy's command releases the grasp). The edit's record
+ * (GetLastEdit(), a lossless line of text) is appended to the edit list, which is also
+ * the `EditHistory` property (AddEdit / RemoveAllEdits): the output is the input with
+ * every listed edit applied, replayed once when the list or the geometry changes, with
+ * the least work (only the edits that differ are undone or applied, each in time
+ * proportional to the vertices it moved). UndoEdit, RedoEdit and ResetEdits edit that
+ * list; undo restores the previous points bit-exactly.
  *
  * Input: any vtkPointSet (vtkPolyData, vtkUnstructuredGrid, ...). Output: the same
  * type, topology and attribute data passed, new points whose precision follows

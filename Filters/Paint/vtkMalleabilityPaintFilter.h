@@ -46,8 +46,9 @@
  * them on some processes and not on others is refused): the source of a dab is the
  * vertex nearest its centre over all processes (ties to the lowest global id, the rule
  * on one process too) and the distances are found by a distributed label-correcting run
- * (geoshaping/partitioned_geodesic.h), equal bit for bit to one process's. Updates there always repaint every dab (never incrementally) and cannot
- * be aborted midway (an abort on one process would leave the others waiting).
+ * (geoshaping/partitioned_geodesic.h), equal bit for bit to one process's. Updates there always
+ * repaint every dab (never incrementally) and cannot be aborted midway (an abort on one process
+ * would leave the others waiting).
  */
 #ifndef vtkMalleabilityPaintFilter_h
 #define vtkMalleabilityPaintFilter_h
