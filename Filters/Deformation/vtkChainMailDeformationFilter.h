@@ -225,10 +225,11 @@ public:
 
   ///@{
   /// The refinement's solver (the core's ProjectionSolver, link_projection.h).
-  /// REFINEMENT_DYKSTRA (the default): RefinementIterations sweeps of Dykstra's
-  /// projection. REFINEMENT_ENVELOPE: in the Axes frame one exact pass (every link
+  /// REFINEMENT_ENVELOPE (the default): in the Axes frame one exact pass (every link
   /// satisfied, grasp and pins fixed, rigid sets moved as one; not the nearest such shape),
-  /// in the Link frame Dykstra. REFINEMENT_ADMM: ADMM on the region's link graph (a sparse
+  /// in the Link frame (which has no envelope) Dykstra. REFINEMENT_DYKSTRA:
+  /// RefinementIterations sweeps of Dykstra's projection, each lowering the link error
+  /// without reaching zero in general. REFINEMENT_ADMM: ADMM on the region's link graph (a sparse
   /// factorisation per region), the report's reference solver. The pass runs only when
   /// RefinementIterations > 0.
   vtkSetClampMacro(RefinementSolver, int, REFINEMENT_ADMM, REFINEMENT_ENVELOPE);
@@ -364,7 +365,7 @@ protected:
   bool GenerateDiagnostics = false;
   int RefinementIterations = 0;
   double RefinementTolerance = 1e-6;
-  int RefinementSolver = REFINEMENT_DYKSTRA;
+  int RefinementSolver = REFINEMENT_ENVELOPE;
   int RelaxationIterations = 0;
 
   // What the last update did (the information properties above), in one place: every

@@ -27,6 +27,8 @@ check(chain.ValidRegionFrame == "Axes", "default valid region frame is Axes")
 chain.ValidRegionFrame = "Link"
 check(chain.ValidRegionFrame == "Link", "valid region frame Link accepted")
 chain.ValidRegionFrame = "Axes"
+# The refinement's default solver is the one that satisfies every link (Axes frame).
+check(chain.RefinementSolver == "Envelope", "default refinement solver is Envelope")
 
 # A script creates the filter before its input has run: ParaView knows no arrays yet, and
 # the array domain would pick None (uniform 0.5). The default stays Malleability, and the
