@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <limits>
 
@@ -37,17 +36,6 @@ const char* name_of(const Name (&names)[N], int value)
   return "";
 }
 
-template<std::size_t N>
-bool parse(const Name (&names)[N], const char* text, int& value)
-{
-  for (const Name& n : names)
-    if (text && std::strcmp(n.text, text) == 0)
-    {
-      value = n.value;
-      return true;
-    }
-  return false;
-}
 } // namespace
 
 const char* falloff_name(Falloff f)
@@ -57,24 +45,6 @@ const char* falloff_name(Falloff f)
 const char* distance_mode_name(DistanceMode m)
 {
   return name_of(mode_names, int(m));
-}
-
-bool parse_falloff_name(const char* name, Falloff& f)
-{
-  int v;
-  if (!parse(falloff_names, name, v))
-    return false;
-  f = Falloff(v);
-  return true;
-}
-
-bool parse_distance_mode_name(const char* name, DistanceMode& m)
-{
-  int v;
-  if (!parse(mode_names, name, v))
-    return false;
-  m = DistanceMode(v);
-  return true;
 }
 
 double falloff_weight(Falloff f, double r)

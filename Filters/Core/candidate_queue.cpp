@@ -1,7 +1,6 @@
 #include "geoshaping/candidate_queue.h"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <tuple>
@@ -24,20 +23,6 @@ const char* queue_name(QueueKind kind)
       return "Max Violation";
   }
   return "";
-}
-
-bool parse_queue_name(const char* name, QueueKind& kind)
-{
-  for (QueueKind k :
-    { QueueKind::fifo, QueueKind::priority, QueueKind::fifo_priority, QueueKind::max_violation })
-  {
-    if (name && std::strcmp(name, queue_name(k)) == 0)
-    {
-      kind = k;
-      return true;
-    }
-  }
-  return false;
 }
 
 namespace

@@ -90,24 +90,6 @@ TEST(Brush, FalloffsAreOneAtTheCentreAndZeroAtTheRim)
     falloff_weight(Falloff::gaussian, 1.0 / 3.0), (std::exp(-0.5) - rim) / (1 - rim), 1e-15);
 }
 
-TEST(Brush, NamesRoundTrip)
-{
-  for (Falloff f : all_falloffs)
-  {
-    Falloff parsed;
-    ASSERT_TRUE(parse_falloff_name(falloff_name(f), parsed));
-    EXPECT_EQ(parsed, f);
-  }
-  DistanceMode m;
-  ASSERT_TRUE(parse_distance_mode_name("Geodesic", m));
-  EXPECT_EQ(m, DistanceMode::geodesic);
-  ASSERT_TRUE(parse_distance_mode_name(distance_mode_name(DistanceMode::euclidean), m));
-  EXPECT_EQ(m, DistanceMode::euclidean);
-  Falloff f;
-  EXPECT_FALSE(parse_falloff_name("Cubic", f));
-  EXPECT_FALSE(parse_distance_mode_name(nullptr, m));
-}
-
 TEST(Brush, DabMovesEachValueTowardItsValueByStrengthTimesFalloff)
 {
   const Scene s = scene(geoshaping::testing::chain(11, 1.0));

@@ -158,17 +158,3 @@ TEST(CandidateQueue, MaxViolationIsLargestFirst)
   q.push({ 3, 0 }, 0, 1.0);
   EXPECT_EQ(drain(q), (std::vector<index_t>{ 2, 3, 1 }));
 }
-
-TEST(CandidateQueue, NamesRoundTrip)
-{
-  for (QueueKind k :
-    { QueueKind::fifo, QueueKind::priority, QueueKind::fifo_priority, QueueKind::max_violation })
-  {
-    QueueKind parsed;
-    ASSERT_TRUE(parse_queue_name(queue_name(k), parsed));
-    EXPECT_EQ(parsed, k);
-  }
-  QueueKind dummy;
-  EXPECT_FALSE(parse_queue_name("Tree", dummy));
-  EXPECT_FALSE(parse_queue_name(nullptr, dummy));
-}

@@ -50,9 +50,7 @@ enum class DistanceMode
 };
 
 const char* falloff_name(Falloff f);
-bool parse_falloff_name(const char* name, Falloff& f); // "Constant", "Linear", ...
 const char* distance_mode_name(DistanceMode m);
-bool parse_distance_mode_name(const char* name, DistanceMode& m); // "Euclidean", "Geodesic"
 
 double falloff_weight(Falloff f, double r);
 

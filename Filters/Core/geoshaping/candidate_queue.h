@@ -23,8 +23,6 @@ enum class QueueKind
 };
 
 const char* queue_name(QueueKind kind);
-// Parses "FIFO", "Priority", "FIFO Priority", "Max Violation"; returns false if unknown.
-bool parse_queue_name(const char* name, QueueKind& kind);
 
 struct Candidate
 {
