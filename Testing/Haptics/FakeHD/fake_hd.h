@@ -59,10 +59,9 @@ extern "C"
   // The device works again (the application must not trust it without reopening).
   void fakehd_clear_fault();
 
-  // The force (N) the application set with hdSetDoublev(HD_CURRENT_FORCE) in the last
-  // frame, whether or not the device could render it; frames counted since reset.
+  // The force (N) the application last set with hdSetDoublev(HD_CURRENT_FORCE), whether
+  // or not the device could render it.
   void fakehd_last_force(double* out3);
-  std::uint64_t fakehd_force_frames();
 
   // Park the scheduler thread between ticks (1) or let it run at its rate (0); returns
   // when the thread is parked (or at once if the scheduler is not running).
