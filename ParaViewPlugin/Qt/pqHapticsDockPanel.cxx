@@ -1,6 +1,7 @@
 #include "pqHapticsDockPanel.h"
 
 #include "geoshaping/brush.h"
+#include "geoshaping/haptics/openhaptics_device.h"
 
 #include <pqCoreUtilities.h>
 
@@ -21,24 +22,11 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include <dlfcn.h>
-
 namespace interactor = geoshaping::interactor;
 using Kind = pqHapticsInteractor::DeviceKind;
 
 namespace
 {
-// OpenHaptics is offered only where its runtime library loads.
-bool openHapticsPresent()
-{
-  void* library = dlopen("libHD.so", RTLD_LAZY | RTLD_LOCAL);
-  if (library)
-  {
-    dlclose(library);
-  }
-  return library != nullptr;
-}
-
 QString swatchStyle(double value, bool selected)
 {
   const Eigen::Vector3d c = geoshaping::malleability_color(value) * 255.0;
@@ -152,7 +140,7 @@ QWidget* pqHapticsDockPanel::buildHand(int hand)
   w.device->addItem("None", Kind::NoDevice);
   w.device->addItem("Replay file", Kind::ReplayFile);
   w.device->addItem("Simulated", Kind::Simulated);
-  if (openHapticsPresent())
+  if (geoshaping::haptics::openhaptics_loads()) // GEOSHAPING_LIBHD or libHD.so
   {
     w.device->addItem("OpenHaptics", Kind::OpenHaptics);
   }
@@ -400,6 +388,10 @@ void pqHapticsDockPanel::onFrame()
     if (kind == Kind::Mouse)
     {
       hands << QString("hand %1: mouse, no force feedback").arg(i + 1);
+    }
+    else if (!f.deviceError[i].isEmpty())
+    {
+      hands << QString("hand %1: %2").arg(i + 1).arg(f.deviceError[i]);
     }
     else if (kind != Kind::NoDevice)
     {

@@ -486,6 +486,12 @@ void pqHapticsInteractor::updateFigures()
   this->LastFrameEnd = frameEnd;
   ++this->Stats.frames;
   ++this->FramesSince;
+  for (std::size_t i = 0; i < this->Hands.size(); ++i)
+  {
+    const Hand* hand = this->Hands[i].get();
+    const bool failed = hand && hand->device && hand->device->has_error();
+    this->Stats.deviceError[i] = failed ? QString::fromStdString(hand->device->error()) : QString();
+  }
   const auto now = std::chrono::steady_clock::now();
   const double seconds = std::chrono::duration<double>(now - this->FpsSince).count();
   if (seconds < 0.5)

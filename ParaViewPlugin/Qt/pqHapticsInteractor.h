@@ -42,6 +42,8 @@ public:
   struct Figures
   {
     std::array<double, 2> servoHz{ { 0.0, 0.0 } };
+    // The device's error while running (a fault mid-run: its force is zero), or empty.
+    std::array<QString, 2> deviceError;
     double framesPerSecond = 0.0;
     double deformationMilliseconds = 0.0;
     long long displacedPoints = 0;

@@ -15,7 +15,8 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_setup_camera import CAMERA  # noqa: E402
 # Mode "replay": GEOSHAPING_HAPTICS_REPLAY is the trace; mode "mouse": the plugin's test
-# hook drags the mouse itself (GEOSHAPING_HAPTICS_REPLAY=mouse).
+# hook drags the mouse itself (GEOSHAPING_HAPTICS_REPLAY=mouse); mode "openhaptics": hand 1
+# is OpenHaptics on the fake HD library, which the hook faults.
 
 WORKSPACE_RADIUS = 0.08  # m, the default DeviceLimits of the replay device
 
@@ -280,6 +281,18 @@ def check_sparse_frames(results):
     assert int(results["NumberOfSparseBuilds"]) >= 3, results
 
 
+def check_openhaptics_fault(results):
+    """Hand 1 ran OpenHaptics on the fake HD library (the dock offered it because
+    GEOSHAPING_LIBHD names that file); after the injected HD_DEVICE_FAULT the dock's
+    figures say so for hand 1, the device was last sent exactly zero force, and paraview
+    carried on (the hook wrote its results and quit normally)."""
+    figures = results["label_Figures"]
+    print("figures:", figures, "fake force:", results.get("fake_last_force"))
+    assert "hand 1: OpenHaptics: HD_DEVICE_FAULT (0x0300" in figures, figures
+    assert "force output stopped" in figures, figures
+    assert results.get("fake_last_force") == "0 0 0", results
+
+
 def main():
     mode = sys.argv[1] if len(sys.argv) > 1 else "replay"
     out = os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_" + mode)
@@ -308,6 +321,11 @@ def main():
     assert results["started"] == "1" and results["timed_out"] == "0", results
     assert results["dock_visible"] == "1" and results["dock_title"] == "Haptics", results
     assert int(results["frames"]) >= 5, "too few interactor frames"
+    if mode == "openhaptics":
+        check_openhaptics_fault(results)
+        check_recording(results, out, None)
+        print("GUI OpenHaptics fault test passed")
+        return
     if mode == "turn":
         check_turn(results)
         check_recording(results, out, None)

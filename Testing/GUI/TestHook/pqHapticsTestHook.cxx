@@ -30,6 +30,8 @@
 #include <QTextStream>
 #include <QTimer>
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <vector>
 
@@ -79,8 +81,11 @@ void pqHapticsTestHook::poll()
       return;
     }
     const bool mouse = this->Trace == "mouse";
-    this->Dock->setHand(0, mouse ? pqHapticsInteractor::Mouse : pqHapticsInteractor::ReplayFile,
-      mouse ? QString() : this->Trace,
+    const bool openHaptics = this->Trace == "openhaptics";
+    this->Dock->setHand(0,
+      openHaptics ? pqHapticsInteractor::OpenHaptics
+                  : (mouse ? pqHapticsInteractor::Mouse : pqHapticsInteractor::ReplayFile),
+      mouse || openHaptics ? QString() : this->Trace,
       qEnvironmentVariable("GEOSHAPING_HAPTICS_TOOL1") == "hold_and_turn"
         ? geoshaping::interactor::Tool::hold_and_turn
         : geoshaping::interactor::Tool::deform);
@@ -108,6 +113,11 @@ void pqHapticsTestHook::poll()
   if (this->Trace == "mouse")
   {
     this->dragMouse();
+    return;
+  }
+  if (this->Trace == "openhaptics")
+  {
+    this->faultOpenHaptics();
     return;
   }
   // A few frames after the trace is over, so the last sample has been rendered.
@@ -151,6 +161,29 @@ void pqHapticsTestHook::dragMouse()
   else if (step == 14 && !this->Output.isEmpty())
   {
     this->writeResults();
+  }
+}
+
+void pqHapticsTestHook::faultOpenHaptics()
+{
+  // Hand 1 runs on the fake HD library (GEOSHAPING_LIBHD): one second healthy, then a
+  // device fault through the fake's test control, then one second for the dock to say so.
+  void* fake = dlopen(qgetenv("GEOSHAPING_LIBHD").constData(), RTLD_NOW | RTLD_NOLOAD);
+  const int step = this->FaultSteps++;
+  if (step == 10 && fake)
+  {
+    reinterpret_cast<void (*)()>(dlsym(fake, "fakehd_inject_fault"))();
+  }
+  else if (step == 20 && fake)
+  {
+    double f[3];
+    reinterpret_cast<void (*)(double*)>(dlsym(fake, "fakehd_last_force"))(f);
+    this->FakeForce = QString("%1 %2 %3").arg(f[0]).arg(f[1]).arg(f[2]);
+    this->writeResults();
+  }
+  if (fake)
+  {
+    dlclose(fake);
   }
 }
 
@@ -275,6 +308,10 @@ void pqHapticsTestHook::writeResults()
   out << "max_contact_triangles = " << f.maxContactTriangles << "\n";
   out << "contact_ticks = " << f.contactTicks << "\n";
   out << "recorded_samples = " << f.recordedSamples[0] << "\n";
+  if (!this->FakeForce.isEmpty())
+  {
+    out << "fake_last_force = " << this->FakeForce << "\n"; // N, after the fault
+  }
   out << "brush_value = " << interactor->brush().value << "\n";
   out << "brush_radius = " << interactor->brush().radius << "\n";
   {

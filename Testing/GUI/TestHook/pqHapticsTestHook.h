@@ -4,6 +4,9 @@
 //                                           started once a ChainMailDeformation exists;
 //                                           "mouse": hand 1 is the mouse, and the hook
 //                                           drags it up on the surface (Deform);
+//                                           "openhaptics": hand 1 is OpenHaptics on the
+//                                           fake HD library GEOSHAPING_LIBHD names, which
+//                                           the hook faults after 1 s (fakehd_inject_fault);
 //   GEOSHAPING_HAPTICS_TOOL1=hold_and_turn  hand 1 holds and turns the object instead;
 //   GEOSHAPING_HAPTICS_REPLAY2=<trace>      hand 2 replays this trace with the Paint tool
 //                                           (two hands at once);
@@ -30,6 +33,7 @@ private Q_SLOTS:
 private:
   pqHapticsTestHook(pqHapticsDockPanel* dock, const QString& trace, const QString& output);
   void dragMouse();
+  void faultOpenHaptics();
   void writeResults();
   void writePaint(QTextStream& out);
   void checkEdits(QTextStream& out, vtkPointSet* input, vtkPointSet* output);
@@ -38,10 +42,12 @@ private:
   QString Trace;
   QString Trace2;
   QString Output;
+  QString FakeForce; // the fake device's last force after the fault, "x y z" N
   bool Started = false;
   bool TimedOut = false;
   int FinishedPolls = 0;
   int Polls = 0;
   int ReadyPolls = 0;
   int MouseSteps = 0;
+  int FaultSteps = 0;
 };
