@@ -23,6 +23,30 @@ bool unit_normal(const std::vector<Eigen::Vector3d>& soup, std::size_t i, Eigen:
   n /= area2;
   return true;
 }
+// The point of the soup nearest to x within `reach` (q) and its triangle's unit normal
+// (n, either sign); false if no triangle is that near.
+bool nearest_within(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup,
+  double reach, Eigen::Vector3d& q, Eigen::Vector3d& n)
+{
+  double best = reach * reach;
+  bool found = false;
+  for (std::size_t i = 0; i + 2 < soup.size(); i += 3)
+  {
+    Eigen::Vector3d normal;
+    if (!unit_normal(soup, i, normal))
+      continue;
+    const Eigen::Vector3d c = closest_point_on_triangle(x, soup[i], soup[i + 1], soup[i + 2]);
+    const double d2 = (x - c).squaredNorm();
+    if (d2 <= best)
+    {
+      best = d2;
+      q = c;
+      n = normal;
+      found = true;
+    }
+  }
+  return found;
+}
 } // namespace
 
 SegmentHit first_hit(
@@ -142,24 +166,10 @@ void ContactProxy::update(const Eigen::Vector3d& x, const std::vector<Eigen::Vec
 
 void ContactProxy::remember_foot(const std::vector<Eigen::Vector3d>& soup, double reach)
 {
-  this->has_foot_ = false;
-  double best = reach * reach;
-  for (std::size_t i = 0; i + 2 < soup.size(); i += 3)
-  {
-    Eigen::Vector3d n;
-    if (!unit_normal(soup, i, n))
-      continue;
-    const Eigen::Vector3d q =
-      closest_point_on_triangle(this->p_, soup[i], soup[i + 1], soup[i + 2]);
-    const double d2 = (this->p_ - q).squaredNorm();
-    if (d2 <= best)
-    {
-      best = d2;
-      this->foot_ = q;
-      this->foot_normal_ = n.dot(this->p_ - q) < 0.0 ? Eigen::Vector3d(-n) : n;
-      this->has_foot_ = true;
-    }
-  }
+  Eigen::Vector3d n;
+  this->has_foot_ = nearest_within(this->p_, soup, reach, this->foot_, n);
+  if (this->has_foot_)
+    this->foot_normal_ = n.dot(this->p_ - this->foot_) < 0.0 ? Eigen::Vector3d(-n) : n;
 }
 
 void ContactProxy::carry_over(
@@ -170,27 +180,11 @@ void ContactProxy::carry_over(
   this->sequence_ = sequence;
   if (!this->placed_ || !this->has_foot_)
     return;
-  double best = reach * reach;
-  Eigen::Vector3d f = Eigen::Vector3d::Zero(), m = Eigen::Vector3d::Zero();
-  bool found = false;
-  for (std::size_t i = 0; i + 2 < soup.size(); i += 3)
-  {
-    Eigen::Vector3d n;
-    if (!unit_normal(soup, i, n))
-      continue;
-    const Eigen::Vector3d q =
-      closest_point_on_triangle(this->foot_, soup[i], soup[i + 1], soup[i + 2]);
-    const double d2 = (this->foot_ - q).squaredNorm();
-    if (d2 <= best)
-    {
-      best = d2;
-      f = q;
-      m = n.dot(this->foot_normal_) < 0.0 ? Eigen::Vector3d(-n) : n;
-      found = true;
-    }
-  }
-  if (!found)
+  Eigen::Vector3d f, m;
+  if (!nearest_within(this->foot_, soup, reach, f, m))
     return;
+  if (m.dot(this->foot_normal_) < 0.0)
+    m = -m;
   this->p_ += f - this->foot_;
   const double h = (this->p_ - f).dot(m);
   if (h < clearance)
