@@ -9,20 +9,6 @@
 namespace geoshaping::haptics
 {
 
-void orient_toward(std::vector<Eigen::Vector3d>& triangles, const Eigen::Vector3d& free_point)
-{
-  triangles.resize(triangles.size() - triangles.size() % 3);
-  for (std::size_t i = 0; i < triangles.size(); i += 3)
-  {
-    const Eigen::Vector3d& a = triangles[i];
-    const Eigen::Vector3d n = (triangles[i + 1] - a).cross(triangles[i + 2] - a);
-    if ((free_point - a).dot(n) < 0.0)
-    {
-      std::swap(triangles[i + 1], triangles[i + 2]);
-    }
-  }
-}
-
 void keep_nearest(
   std::vector<Eigen::Vector3d>& triangles, const Eigen::Vector3d& p, std::size_t max_triangles)
 {
@@ -47,20 +33,6 @@ void keep_nearest(
       triangles.begin() + std::ptrdiff_t(3 * t + 3));
   }
   triangles = std::move(kept);
-}
-
-void FreeSide::update(
-  const Eigen::Vector3d& stylus, const std::vector<Eigen::Vector3d>& previous_patch, double shell)
-{
-  if (!stylus.allFinite())
-  {
-    return;
-  }
-  if (!this->known_ || !nearest_contact(stylus, previous_patch, shell).found)
-  {
-    this->point_ = stylus;
-    this->known_ = true;
-  }
 }
 
 } // namespace geoshaping::haptics

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace geoshaping::haptics
 {
@@ -72,64 +71,37 @@ ForceResult zero(ForceStatus why)
 
 } // namespace
 
-Contact nearest_contact(
-  const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup, double shell)
-{
-  Contact c;
-  double best = std::numeric_limits<double>::infinity();
-  Eigen::Vector3d best_q = Eigen::Vector3d::Zero(), best_n = Eigen::Vector3d::Zero();
-  for (std::size_t i = 0; i + 2 < soup.size(); i += 3)
-  {
-    const Eigen::Vector3d& a = soup[i];
-    const Eigen::Vector3d& b = soup[i + 1];
-    const Eigen::Vector3d& v = soup[i + 2];
-    const Eigen::Vector3d n = (b - a).cross(v - a);
-    const double area2 = n.norm();
-    if (!(area2 > 0.0) || !std::isfinite(area2))
-      continue;
-    const Eigen::Vector3d q = closest_point_on_triangle(x, a, b, v);
-    const double d2 = (x - q).squaredNorm();
-    if (d2 < best)
-    {
-      best = d2;
-      best_q = q;
-      best_n = n / area2;
-    }
-  }
-  if (!std::isfinite(best))
-    return c;
-  const double depth = -(x - best_q).dot(best_n);
-  if (depth > 0.0 && depth <= shell)
-  {
-    c.found = true;
-    c.depth = depth;
-    c.normal = best_n;
-  }
-  return c;
-}
-
 ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
-  const ForceParams& params, const DeviceLimits& limits)
+  const ForceParams& params, const DeviceLimits& limits, ContactProxy& proxy)
 {
   if (!in.device_ok)
+  {
+    proxy.reset();
     return zero(ForceStatus::device_error);
+  }
   const auto stale_after =
     std::max(params.stale_after, std::min(scene.valid_for, params.stale_after_max));
   if (scene.stamp == Clock::time_point() || in.now - scene.stamp > stale_after)
+  {
+    proxy.reset();
     return zero(ForceStatus::stale_scene);
+  }
   if (!in.position.allFinite() || !in.velocity.allFinite() ||
       (scene.grasping &&
         (!scene.grasp_anchor.allFinite() || !std::isfinite(scene.grasp_stiffness))))
+  {
+    proxy.reset();
     return zero(ForceStatus::non_finite);
+  }
 
   const double k_max = std::max(0.0, limits.max_stiffness);
   const double b_max = std::max(0.0, limits.max_damping);
   double k_g = scene.grasping ? std::clamp(scene.grasp_stiffness, 0.0, k_max) : 0.0;
-  const Contact contact =
-    scene.contact_triangles.empty()
-      ? Contact()
-      : nearest_contact(in.position, scene.contact_triangles, params.contact_shell);
-  double k_c = contact.found ? std::clamp(params.contact_stiffness, 0.0, k_max) : 0.0;
+  proxy.carry_over(
+    scene.sequence, scene.contact_triangles, params.proxy_reach, params.proxy_clearance);
+  proxy.update(in.position, scene.contact_triangles, params.proxy_clearance, params.proxy_reach);
+  const bool contact = proxy.in_contact();
+  double k_c = contact ? std::clamp(params.contact_stiffness, 0.0, k_max) : 0.0;
   // Springs acting together add up: keep their sum within the stable stiffness.
   if (k_g + k_c > k_max)
   {
@@ -139,21 +111,25 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   }
 
   ForceResult r;
-  r.in_contact = contact.found;
+  r.in_contact = contact;
+  r.proxy = proxy.position();
   if (scene.grasping)
     r.force += k_g * (scene.grasp_anchor - in.position) -
                std::clamp(params.coupling_damping, 0.0, b_max) * in.velocity;
-  if (contact.found)
-    r.force += (k_c * contact.depth -
-                 std::clamp(params.contact_damping, 0.0, b_max) * in.velocity.dot(contact.normal)) *
-               contact.normal;
+  if (contact)
+  {
+    const Eigen::Vector3d n = proxy.normal();
+    r.force += k_c * (proxy.position() - in.position) -
+               std::clamp(params.contact_damping, 0.0, b_max) * in.velocity.dot(n) * n;
+  }
 
-  if (!r.force.allFinite())
-    return zero(ForceStatus::non_finite);
   const double f_max = std::max(0.0, limits.max_force);
-  const double n = r.force.stableNorm();
-  if (!std::isfinite(n))
+  const double n = r.force.allFinite() ? r.force.stableNorm() : HUGE_VAL;
+  if (!std::isfinite(n) || !proxy.position().allFinite())
+  {
+    proxy.reset();
     return zero(ForceStatus::non_finite);
+  }
   if (n > f_max)
     r.force *= f_max / n;
   return r;

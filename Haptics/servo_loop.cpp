@@ -13,6 +13,7 @@ ServoLoop::ServoLoop(HapticDevice& device, ServoConfig config)
   : device_(device)
   , config_(config)
   , periods_(config.period)
+  , tick_(config.force, config.velocity_filter_s)
 {
 }
 
@@ -74,10 +75,7 @@ void ServoLoop::run()
 #endif
   const Clock::duration period = config_.period;
   DeviceSample sample;
-  Eigen::Vector3d last_position = Eigen::Vector3d::Zero();
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
-  bool have_last = false;
-  double last_t = 0.0;
+  tick_.reset();
   std::uint64_t ticks = 0, zero_ticks = 0;
   Clock::time_point last_start{};
   Clock::time_point deadline = Clock::now();
@@ -91,37 +89,9 @@ void ServoLoop::run()
 
     const bool read_ok = device_.read(sample);
     const bool device_ok = read_ok && !device_.has_error();
-    if (device_ok && sample.position.allFinite())
-    {
-      // Velocity from the device's own time stamps, so a late tick does not read as a
-      // fast stylus; an exponential filter with time constant velocity_filter_s.
-      const double dt = sample.t - last_t;
-      if (have_last && dt > 0.0)
-      {
-        const Eigen::Vector3d raw = (sample.position - last_position) / dt;
-        const double alpha = dt / (dt + config_.velocity_filter_s);
-        velocity += alpha * (raw - velocity);
-      }
-      if (!velocity.allFinite())
-        velocity.setZero();
-      last_position = sample.position;
-      last_t = sample.t;
-      have_last = true;
-    }
-    else
-    {
-      have_last = false;
-      velocity.setZero();
-    }
-
     scene_.update();
     const SceneSnapshot& scene = scene_.front();
-    ForceInput in;
-    in.position = sample.position;
-    in.velocity = velocity;
-    in.device_ok = device_ok;
-    in.now = start;
-    const ForceResult f = compute_force(in, scene, config_.force, device_.limits());
+    const ForceResult f = tick_.tick(sample, device_ok, start, scene, device_.limits());
     device_.set_force(f.force);
     ++ticks;
     zero_ticks += f.status != ForceStatus::ok;
@@ -134,6 +104,7 @@ void ServoLoop::run()
     out.force = f.force;
     out.status = f.status;
     out.in_contact = f.in_contact;
+    out.proxy = f.proxy;
     out.ticks = ticks;
     out.zero_ticks = zero_ticks;
     out.scene_sequence = scene.sequence;

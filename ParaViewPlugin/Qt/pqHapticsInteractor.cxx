@@ -35,7 +35,6 @@ struct pqHapticsInteractor::Hand
   interactor::HandController controller;
   haptics::DeviceSnapshot latest;
   interactor::WorkspaceMapping mapping; // frozen while the button is held
-  haptics::FreeSide freeSide;           // where the stylus was last out of contact (device frame)
   haptics::SceneSnapshot sent;          // a copy of the last scene published to the servo loop
   bool stiffnessPending = false;        // the grasp's malleability still to read from the server
   haptics::TraceRecorder recorder;      // open when the hand records its stylus
@@ -294,7 +293,11 @@ bool pqHapticsInteractor::forceFromLastScene(int index, haptics::ForceResult& re
   in.position = hand->latest.sample.position;
   in.device_ok = hand->latest.device_ok;
   in.now = hand->sent.stamp;
-  result = haptics::compute_force(in, hand->sent, haptics::ForceParams(), hand->device->limits());
+  // The servo's proxy as its last snapshot left it, moved on once against the last scene.
+  haptics::ContactProxy proxy;
+  proxy.place(hand->latest.in_contact ? hand->latest.proxy : in.position);
+  result =
+    haptics::compute_force(in, hand->sent, haptics::ForceParams(), hand->device->limits(), proxy);
   return true;
 }
 
@@ -374,15 +377,14 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   }
   scene.grasp_anchor = hand.anchor;
   scene.grasp_stiffness = hand.stiffness;
-  // Contact: the surfaces near the stylus, in the device frame, each triangle facing the
-  // side the stylus came from. The shape being dragged is left out while any hand drags
-  // it (the stylus would fight its own grasp, and its locator would be rebuilt every
-  // frame); otherwise the stylus feels it too, e.g. while painting or before a grasp.
+  // Contact: the surfaces near the stylus, in the device frame, in any winding (the
+  // servo's proxy keeps the side the stylus came from). The shape being dragged is left
+  // out while any hand drags it (the stylus would fight its own grasp, and its locator
+  // would be rebuilt every frame); otherwise the stylus feels it too, e.g. while
+  // painting or before a grasp.
   scene.contact_triangles.clear();
   const haptics::DeviceSample& sample = hand.latest.sample;
-  hand.freeSide.update(
-    sample.position, hand.sent.contact_triangles, haptics::ForceParams().contact_shell);
-  if (hand.latest.device_ok && hand.freeSide.known())
+  if (hand.latest.device_ok)
   {
     this->Proxies.contactTriangles(
       stylus, ContactReachMetres * hand.mapping.scale(), !anyDragging, scene.contact_triangles);
@@ -390,7 +392,6 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
     {
       p = hand.mapping.to_device(p);
     }
-    haptics::orient_toward(scene.contact_triangles, hand.freeSide.point());
     haptics::keep_nearest(scene.contact_triangles, sample.position, MaxContactTriangles);
   }
   this->Stats.contactTriangles += (long long)(scene.contact_triangles.size() / 3);

@@ -90,8 +90,8 @@ public:
   pqHapticsProxies& proxies() { return this->Proxies; }
   // The force the servo loop renders from the scene last published for device hand
   // `hand` (0 or 1) at the stylus position of that frame, at rest, as if fresh: what
-  // the graphics side asks the servo to render, independent of its timing. False for a
-  // hand without a device.
+  // the graphics side asks the servo to render, independent of its timing, from the
+  // proxy of the servo's last snapshot. False for a hand without a device.
   bool forceFromLastScene(int hand, geoshaping::haptics::ForceResult& result) const;
 
 Q_SIGNALS:

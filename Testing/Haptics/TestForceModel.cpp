@@ -41,6 +41,14 @@ SceneSnapshot floor_scene()
   return s;
 }
 
+// The force of one tick with a proxy that starts at the stylus (no history).
+ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
+  const ForceParams& params, const DeviceLimits& limits)
+{
+  ContactProxy proxy;
+  return geoshaping::haptics::compute_force(in, scene, params, limits, proxy);
+}
+
 ForceInput at(const Eigen::Vector3d& x)
 {
   ForceInput in;
@@ -99,31 +107,61 @@ TEST(ForceModel, ForceIsScaledDownToTheDeviceMaximumKeepingItsDirection)
   EXPECT_NEAR(r.force.x() / r.force.y(), 0.75, 1e-12);
 }
 
-TEST(ForceModel, ContactPushesOutAlongTheNormalInsideTheShell)
+TEST(ForceModel, ContactIsASpringFromTheStylusToTheProxy)
 {
   const DeviceLimits limits;
   ForceParams params;
   params.contact_stiffness = 600.0;
-  const ForceResult r = compute_force(at({ 0.01, 0.02, -0.002 }), floor_scene(), params, limits);
+  const SceneSnapshot scene = floor_scene();
+  ContactProxy proxy;
+  ForceResult r =
+    geoshaping::haptics::compute_force(at({ 0.01, 0.02, 0.003 }), scene, params, limits, proxy);
+  EXPECT_FALSE(r.in_contact);
+  EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
+  EXPECT_EQ(r.proxy, Eigen::Vector3d(0.01, 0.02, 0.003));
+  r = geoshaping::haptics::compute_force(at({ 0.01, 0.02, -0.002 }), scene, params, limits, proxy);
   EXPECT_EQ(r.status, ForceStatus::ok);
   EXPECT_TRUE(r.in_contact);
-  EXPECT_NEAR(r.force.z(), 600.0 * 0.002, 1e-12);
-  EXPECT_NEAR(r.force.x(), 0.0, 1e-15);
-  EXPECT_NEAR(r.force.y(), 0.0, 1e-15);
+  // The proxy stopped on the sheet (clearance 1 um above it), straight above the stylus.
+  EXPECT_NEAR(r.proxy.z(), params.proxy_clearance, 1e-12);
+  EXPECT_NEAR(r.force.z(), 600.0 * (0.002 + params.proxy_clearance), 1e-9);
+  EXPECT_NEAR(r.force.head<2>().norm(), 0.0, 1e-12);
 }
 
-TEST(ForceModel, NoContactAboveTheSurfaceOrBelowTheShell)
+TEST(ForceModel, ADeepStylusIsHeldOnTheSideItCameFromWithASaturatedForce)
 {
   const DeviceLimits limits;
   const ForceParams params;
   const SceneSnapshot scene = floor_scene();
-  const ForceResult above = compute_force(at({ 0, 0, 0.001 }), scene, params, limits);
-  EXPECT_FALSE(above.in_contact);
-  EXPECT_EQ(above.force, Eigen::Vector3d::Zero());
-  const ForceResult deep =
-    compute_force(at({ 0, 0, -2 * params.contact_shell }), scene, params, limits);
-  EXPECT_FALSE(deep.in_contact);
-  EXPECT_EQ(deep.force, Eigen::Vector3d::Zero());
+  for (const double side : { 1.0, -1.0 })
+  {
+    ContactProxy proxy;
+    geoshaping::haptics::compute_force(at({ 0, 0, side * 0.01 }), scene, params, limits, proxy);
+    // 3 cm through the sheet (the old penalty shell was 5 mm): still pushed back, at
+    // max force, along the normal of the side the stylus came from.
+    const ForceResult r =
+      geoshaping::haptics::compute_force(at({ 0, 0, -side * 0.03 }), scene, params, limits, proxy);
+    EXPECT_TRUE(r.in_contact);
+    EXPECT_NEAR(r.force.z(), side * limits.max_force, 1e-12);
+    EXPECT_NEAR(r.proxy.z(), side * params.proxy_clearance, 1e-12);
+  }
+}
+
+TEST(ForceModel, AFaultResetsTheProxy)
+{
+  const DeviceLimits limits;
+  const ForceParams params;
+  SceneSnapshot scene = floor_scene();
+  ContactProxy proxy;
+  geoshaping::haptics::compute_force(at({ 0, 0, 0.01 }), scene, params, limits, proxy);
+  geoshaping::haptics::compute_force(at({ 0, 0, -0.002 }), scene, params, limits, proxy);
+  EXPECT_TRUE(proxy.in_contact());
+  scene.stamp = Clock::time_point();
+  const ForceResult r =
+    geoshaping::haptics::compute_force(at({ 0, 0, -0.002 }), scene, params, limits, proxy);
+  EXPECT_EQ(r.status, ForceStatus::stale_scene);
+  EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
+  EXPECT_FALSE(proxy.placed());
 }
 
 TEST(ForceModel, ClosestPointOnTriangleCoversFaceEdgeAndVertex)

@@ -1,6 +1,8 @@
 #pragma once
-// The force rendered each servo tick: virtual coupling to the grasped vertex plus
-// penalty contact with the scene's triangles, clamped to what the device renders stably.
+// @brief The force rendered each servo tick: virtual coupling to the grasped vertex plus
+// contact with the scene's triangles through a proxy (proxy.h), clamped to what the
+// device renders stably.
+#include "geoshaping/haptics/proxy.h"
 #include "geoshaping/haptics/snapshots.h"
 
 #include <chrono>
@@ -14,11 +16,17 @@ struct ForceParams
   // and a soft (m = 1) grasped region: rigid rock pulls back harder.
   double rigid_fraction = 0.8;
   double soft_fraction = 0.15;
-  double coupling_damping = 1.0; // N s/m, while grasping
+  // N s/m, while grasping; small so that the passivity condition (below) holds at the
+  // device's max stiffness: b > K T / 2 + |B| leaves 0.1 N s/m on a Touch-like device.
+  double coupling_damping = 0.05;
 
-  double contact_stiffness = 800.0; // N/m
-  double contact_damping = 1.0;     // N s/m, along the normal, while in contact
-  double contact_shell = 0.005;     // m: penetration depth below which contact acts
+  double contact_stiffness = 800.0; // N/m, the spring from the stylus to the proxy
+  // N s/m, along the contact normal. Zero: by the passivity condition (below) virtual
+  // damping costs stiffness one for one, and the device's own damping is what passivates.
+  double contact_damping = 0.0;
+  double proxy_clearance = 1e-7; // m the proxy keeps off a triangle, on its side
+  double proxy_reach = 0.005;    // m: how far a new patch's surface may have moved and
+                                 // still carry the proxy with it (ContactProxy::carry_over)
 
   // A scene snapshot older than this renders zero force, unless the snapshot says it
   // stays valid longer (SceneSnapshot::valid_for, a slow renderer), up to
@@ -38,19 +46,6 @@ double coupling_stiffness(
 Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
   const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
-// Penalty contact with a triangle soup (counter-clockwise seen from the free side): the
-// triangle nearest to x decides (summing over all would push twice at a shared edge);
-// with its unit normal n and nearest point q the depth is d = -(x - q).n, and contact
-// holds when 0 < d <= shell. Degenerate and non-finite triangles are skipped.
-struct Contact
-{
-  bool found = false;
-  double depth = 0.0;
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-};
-Contact nearest_contact(
-  const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup, double shell);
-
 struct ForceInput
 {
   Eigen::Vector3d position = Eigen::Vector3d::Zero(); // m, device frame
@@ -64,26 +59,34 @@ struct ForceResult
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   ForceStatus status = ForceStatus::ok;
   bool in_contact = false;
+  Eigen::Vector3d proxy = Eigen::Vector3d::Zero(); // the proxy after this tick
 };
 
-// With x the stylus position, v its velocity:
+// With x the stylus position, v its velocity, p the proxy after proxy.update(x) on the
+// scene's patch (first proxy.carry_over() if the patch is a new one), n its first
+// contact normal:
 //
 //   coupling (while grasping):  F_g = k_g (anchor - x) - b_g v
-//   contact (nearest triangle, normal n, nearest point q, depth d = -(x - q).n):
-//                               F_c = (k_c d - b_c (v.n)) n   if 0 < d <= shell
+//   contact:                    F_c = k_c (p - x) - b_c (v.n) n      (p = x out of contact)
 //
-// The shell keeps contact to a thin layer under the surface: a stylus that is deeper
-// has come round the edge of a sheet or through it and is not pushed back through it.
-//
-// Stability: k_g and k_c are each clamped to the device's max stiffness, and scaled
+// Stability: k_g and k_c are each clamped to the device's max stiffness K, and scaled
 // down together if their sum exceeds it; b_g, b_c to its max damping. The total force
-// is scaled down to max force (direction kept, norm computed without overflow).
+// is scaled down to max force (direction kept, norm computed without overflow): a
+// projection onto a ball, so saturation never makes a step larger than the unsaturated
+// force's. Passivity (Colgate & Schenkel 1997, a spring K and a virtual damper B behind
+// a zero-order hold of period T, on a device of physical damping b): the display is
+// passive if
 //
-// Faults give exactly zero (never NaN), with the reason in `status`: device error,
+//   b > K T / 2 + |B|,
+//
+// with K = k_g + k_c <= K_max and B = b_g + b_c; docs/haptics.md gives the numbers.
+//
+// Faults give exactly zero (never NaN), with the reason in `status`, and reset the proxy
+// (nothing is known of the side the stylus is on when rendering resumes): device error,
 // a scene older than max(stale_after, min(scene.valid_for, stale_after_max)) (or never
-// published), any non-finite input, or a
-// non-finite result (e.g. overflow from an absurd position).
+// published), any non-finite input, or a non-finite result (e.g. overflow from an absurd
+// position).
 ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
-  const ForceParams& params, const DeviceLimits& limits);
+  const ForceParams& params, const DeviceLimits& limits, ContactProxy& proxy);
 
 } // namespace geoshaping::haptics

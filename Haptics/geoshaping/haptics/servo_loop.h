@@ -1,7 +1,7 @@
 #pragma once
 // The 1 kHz servo loop: read the device, compute the force, send it, on its own thread.
-#include "geoshaping/haptics/force_model.h"
 #include "geoshaping/haptics/period_stats.h"
+#include "geoshaping/haptics/servo_tick.h"
 #include "geoshaping/haptics/triple_buffer.h"
 
 #include <atomic>
@@ -15,8 +15,7 @@ struct ServoConfig
 {
   std::chrono::nanoseconds period = std::chrono::milliseconds(1);
   ForceParams force;
-  // Velocity for damping: finite difference of positions, low-passed with this
-  // time constant (s) because encoder quantisation makes the raw difference noisy.
+  // Time constant (s) of the velocity filter (ServoTick).
   double velocity_filter_s = 0.005;
   // Linux: ask for 1 ns timer slack on the servo thread so sleep_until wakes on time
   // (the default 50 us slack is half the jitter budget). No privileges needed.
@@ -29,8 +28,9 @@ struct ServoConfig
 
 // One tick, every `period`, on steady_clock deadlines (sleep_until, not sleep_for, so
 // the work time does not accumulate as drift):
-//   read the device -> take the newest scene snapshot (if any) -> compute_force ->
-//   set_force -> publish a device snapshot -> record the period since the last tick.
+//   read the device -> take the newest scene snapshot (if any) -> ServoTick (velocity,
+//   proxy, compute_force) -> set_force -> publish a device snapshot -> record the period since the
+//   last tick.
 // A tick that finds itself more than a whole period late does not try to catch up with
 // a burst of ticks; it rebases the deadline on now (the long period shows in the jitter).
 //
@@ -82,6 +82,7 @@ private:
   std::atomic<bool> realtime_{ false };
   std::atomic<std::uint64_t> ticks_{ 0 };
   PeriodStats periods_;
+  ServoTick tick_; // the servo thread's own state, allocated here, not per tick
   TripleBuffer<SceneSnapshot> scene_;
   TripleBuffer<DeviceSnapshot> device_state_;
 };

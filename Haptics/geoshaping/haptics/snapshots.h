@@ -33,9 +33,9 @@ struct SceneSnapshot
   Eigen::Vector3d grasp_anchor = Eigen::Vector3d::Zero();
   double grasp_stiffness = 0.0;
 
-  // Surfaces to touch, as a triangle soup: triangle i is vertices 3i, 3i+1, 3i+2,
-  // counter-clockwise seen from the free side (the side contact pushes toward). Send
-  // only the triangles near the stylus: the servo thread tests every one each tick.
+  // Surfaces to touch, as a triangle soup: triangle i is vertices 3i, 3i+1, 3i+2, in any
+  // winding (two-sided: the proxy stays on the side it is on). Send only the triangles
+  // near the stylus: the servo thread tests every one each tick.
   std::vector<Eigen::Vector3d> contact_triangles;
 };
 
@@ -59,9 +59,10 @@ struct DeviceSnapshot
   Eigen::Vector3d force = Eigen::Vector3d::Zero(); // N, as sent
   ForceStatus status = ForceStatus::stale_scene;
   bool in_contact = false;
-  std::uint64_t ticks = 0;          // servo ticks so far
-  std::uint64_t zero_ticks = 0;     // ticks that rendered zero because of a fault
-  std::uint64_t scene_sequence = 0; // sequence of the scene snapshot used
+  Eigen::Vector3d proxy = Eigen::Vector3d::Zero(); // the contact proxy, device frame
+  std::uint64_t ticks = 0;                         // servo ticks so far
+  std::uint64_t zero_ticks = 0;                    // ticks that rendered zero because of a fault
+  std::uint64_t scene_sequence = 0;                // sequence of the scene snapshot used
 };
 
 } // namespace geoshaping::haptics

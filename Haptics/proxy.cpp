@@ -1,0 +1,196 @@
+#include "geoshaping/haptics/proxy.h"
+
+#include "geoshaping/haptics/force_model.h" // closest_point_on_triangle
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace geoshaping::haptics
+{
+
+namespace
+{
+constexpr double edge_slack = 1e-9;
+
+// Unit normal of triangle i of the soup, or false if it is degenerate or not finite.
+bool unit_normal(const std::vector<Eigen::Vector3d>& soup, std::size_t i, Eigen::Vector3d& n)
+{
+  n = (soup[i + 1] - soup[i]).cross(soup[i + 2] - soup[i]);
+  const double area2 = n.norm();
+  if (!(area2 > 0.0) || !std::isfinite(area2))
+    return false;
+  n /= area2;
+  return true;
+}
+// The point of the soup nearest to x within `reach` (q) and its triangle's unit normal
+// (n, either sign); false if no triangle is that near.
+bool nearest_within(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup,
+  double reach, Eigen::Vector3d& q, Eigen::Vector3d& n)
+{
+  double best = reach * reach;
+  bool found = false;
+  for (std::size_t i = 0; i + 2 < soup.size(); i += 3)
+  {
+    Eigen::Vector3d normal;
+    if (!unit_normal(soup, i, normal))
+      continue;
+    const Eigen::Vector3d c = closest_point_on_triangle(x, soup[i], soup[i + 1], soup[i + 2]);
+    const double d2 = (x - c).squaredNorm();
+    if (d2 <= best)
+    {
+      best = d2;
+      q = c;
+      n = normal;
+      found = true;
+    }
+  }
+  return found;
+}
+} // namespace
+
+SegmentHit first_hit(
+  const Eigen::Vector3d& o, const Eigen::Vector3d& d, const std::vector<Eigen::Vector3d>& soup)
+{
+  SegmentHit best;
+  for (std::size_t i = 0; i + 2 < soup.size(); i += 3)
+  {
+    const Eigen::Vector3d& a = soup[i];
+    const Eigen::Vector3d e1 = soup[i + 1] - a, e2 = soup[i + 2] - a;
+    const Eigen::Vector3d pvec = d.cross(e2);
+    const double det = e1.dot(pvec);
+    // Parallel to the plane (or degenerate): a sweep along a plane never crosses it.
+    if (!(std::abs(det) > 1e-30) || !std::isfinite(det))
+      continue;
+    const double inv = 1.0 / det;
+    const Eigen::Vector3d s = o - a;
+    const double u = s.dot(pvec) * inv;
+    if (u < -edge_slack || u > 1.0 + edge_slack)
+      continue;
+    const Eigen::Vector3d q = s.cross(e1);
+    const double v = d.dot(q) * inv;
+    if (v < -edge_slack || u + v > 1.0 + edge_slack)
+      continue;
+    const double t = e2.dot(q) * inv;
+    if (t < 0.0 || t > best.t || (best.hit && t == best.t))
+      continue;
+    Eigen::Vector3d n;
+    if (!unit_normal(soup, i, n))
+      continue;
+    best.hit = true;
+    best.t = t;
+    best.normal = n.dot(d) > 0.0 ? Eigen::Vector3d(-n) : n;
+  }
+  return best;
+}
+
+void ContactProxy::reset()
+{
+  this->placed_ = false;
+  this->planes_ = 0;
+  this->has_foot_ = false;
+}
+
+void ContactProxy::place(const Eigen::Vector3d& p)
+{
+  this->reset();
+  this->p_ = p;
+  this->placed_ = true;
+}
+
+Eigen::Vector3d ContactProxy::target(const Eigen::Vector3d& x) const
+{
+  const Eigen::Vector3d& p = this->p_;
+  switch (this->planes_)
+  {
+    case 0:
+      return x;
+    case 1:
+      return x - (x - p).dot(this->normals_[0]) * this->normals_[0];
+    case 2:
+    {
+      const Eigen::Vector3d u = this->normals_[0].cross(this->normals_[1]).normalized();
+      return p + (x - p).dot(u) * u;
+    }
+    default:
+      return p;
+  }
+}
+
+void ContactProxy::add_plane(const Eigen::Vector3d& n)
+{
+  for (int i = 0; i < this->planes_; ++i)
+  {
+    if (n.cross(this->normals_[i]).squaredNorm() < 1e-12 && n.dot(this->normals_[i]) > 0.0)
+    {
+      this->normals_[i] = n;
+      return;
+    }
+  }
+  if (this->planes_ < max_planes)
+    this->normals_[this->planes_++] = n;
+}
+
+void ContactProxy::update(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup,
+  double clearance, double reach)
+{
+  if (!this->placed_)
+    this->place(x);
+  this->planes_ = 0;
+  for (int pass = 0; pass < max_passes; ++pass)
+  {
+    const Eigen::Vector3d goal = this->target(x);
+    const Eigen::Vector3d d = goal - this->p_;
+    if (d.squaredNorm() <= clearance * clearance * 1e-6)
+      break;
+    const SegmentHit hit = first_hit(this->p_, d, soup);
+    if (!hit.hit)
+    {
+      this->p_ = goal;
+      if (this->planes_ == 0)
+        break;
+      this->planes_ = 0;
+      continue;
+    }
+    // Stop on the triangle, `clearance` off it on the proxy's side; never behind the start.
+    const Eigen::Vector3d on = this->p_ + hit.t * d;
+    const Eigen::Vector3d stop = on + clearance * hit.normal;
+    if ((stop - this->p_).dot(d) > 0.0)
+      this->p_ = stop;
+    this->add_plane(hit.normal);
+    if (this->planes_ == max_planes)
+      break;
+  }
+  this->remember_foot(soup, reach);
+}
+
+void ContactProxy::remember_foot(const std::vector<Eigen::Vector3d>& soup, double reach)
+{
+  Eigen::Vector3d n;
+  this->has_foot_ = nearest_within(this->p_, soup, reach, this->foot_, n);
+  if (this->has_foot_)
+    this->foot_normal_ = n.dot(this->p_ - this->foot_) < 0.0 ? Eigen::Vector3d(-n) : n;
+}
+
+void ContactProxy::carry_over(
+  std::uint64_t sequence, const std::vector<Eigen::Vector3d>& soup, double reach, double clearance)
+{
+  if (sequence == this->sequence_)
+    return;
+  this->sequence_ = sequence;
+  if (!this->placed_ || !this->has_foot_)
+    return;
+  Eigen::Vector3d f, m;
+  if (!nearest_within(this->foot_, soup, reach, f, m))
+    return;
+  if (m.dot(this->foot_normal_) < 0.0)
+    m = -m;
+  this->p_ += f - this->foot_;
+  const double h = (this->p_ - f).dot(m);
+  if (h < clearance)
+    this->p_ += (clearance - h) * m;
+  this->foot_ = f;
+  this->foot_normal_ = m;
+}
+
+} // namespace geoshaping::haptics

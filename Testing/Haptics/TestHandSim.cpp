@@ -1,0 +1,260 @@
+#include "geoshaping/haptics/hand_sim.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+using namespace geoshaping::haptics;
+
+namespace
+{
+using Soup = std::vector<Eigen::Vector3d>;
+
+// The 10 cm open sheet z = 0, centred on the origin, in 2 x 10 x 10 triangles.
+Soup sheet(double z = 0.0)
+{
+  Soup s;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j)
+    {
+      const double x0 = -0.05 + 0.01 * i, y0 = -0.05 + 0.01 * j;
+      const Eigen::Vector3d a(x0, y0, z), b(x0 + 0.01, y0, z), c(x0 + 0.01, y0 + 0.01, z),
+        d(x0, y0 + 0.01, z);
+      s.insert(s.end(), { a, b, c, a, c, d });
+    }
+  return s;
+}
+
+SceneAt still(const Soup& soup)
+{
+  return [soup](double, Soup& out) { out = soup; };
+}
+
+std::vector<HandKey> push(const Eigen::Vector3d& f, double seconds)
+{
+  return { { 0.0, Eigen::Vector3d::Zero() }, { 0.2, f }, { seconds, f } };
+}
+
+struct SimRun
+{
+  std::vector<TrajectoryRow> rows;
+  RunFigures figures;
+  double energy = 0.0; // injected (hand_sim.h)
+};
+
+SimRun run(const SceneAt& scene, const std::vector<HandKey>& hand, const Eigen::Vector3d& start,
+  const HandSimOptions& options = {})
+{
+  SimRun r;
+  const DeviceModel model;
+  r.rows = simulate_hand(scene, hand, start, model, options, &r.energy);
+  r.figures = run_figures(r.rows, model, options);
+  return r;
+}
+
+// Largest force step a stylus moving by one position quantum per tick may cause.
+double quantum_step()
+{
+  return ForceParams().contact_stiffness * DeviceModel().resolution;
+}
+} // namespace
+
+TEST(HandSim, HandCsvIsReadStrictly)
+{
+  std::vector<HandKey> keys;
+  std::string error;
+  std::istringstream good("t,fx,fy,fz\n0,0,0,0\n\n0.5, 1, 2, -3\n1,0,0,0\n");
+  ASSERT_TRUE(read_hand_csv(good, keys, error)) << error;
+  ASSERT_EQ(keys.size(), 3u);
+  EXPECT_EQ(hand_force_at(keys, 0.25), Eigen::Vector3d(0.5, 1, -1.5));
+  EXPECT_EQ(hand_force_at(keys, 7.0), Eigen::Vector3d::Zero());
+  for (const char* bad : { "", "t,x,y,z\n0,0,0,0\n", "t,fx,fy,fz\n", "t,fx,fy,fz\n0,0,0\n",
+         "t,fx,fy,fz\n0,0,0,0,0\n", "t,fx,fy,fz\n0,0,0,nan\n", "t,fx,fy,fz\n0,0,0,1N\n",
+         "t,fx,fy,fz\n0,0,0,0\n0,1,1,1\n", "t,fx,fy,fz\n-1,0,0,0\n", "t,fx,fy,fz\n0,0,0,0,\n" })
+  {
+    std::istringstream in(bad);
+    EXPECT_FALSE(read_hand_csv(in, keys, error)) << bad;
+    EXPECT_FALSE(error.empty());
+  }
+}
+
+TEST(HandSim, AFreeStylusAcceleratesAsTheDeviceModelSays)
+{
+  // No scene, 0.15 N along x for 0.2 s after a 0.2 s ramp: v = impulse / m less damping and
+  // friction; checked against the closed form of m v' = F(t) - b v - F_c within 2 %.
+  DeviceModel model;
+  const std::vector<HandKey> hand = { { 0.0, { 0, 0, 0 } }, { 0.2, { 0.15, 0, 0 } },
+    { 0.4, { 0.15, 0, 0 } } };
+  const auto rows =
+    simulate_hand([](double, Soup& s) { s.clear(); }, hand, Eigen::Vector3d::Zero(), model, {});
+  ASSERT_EQ(rows.size(), 401u);
+  // Closed form by fine integration of the same ODE (independent of the substeps).
+  double v = 0.0, x = 0.0;
+  const double h = 1e-6;
+  for (double t = 0.0; t < 0.4; t += h)
+  {
+    const double f = hand_force_at(hand, t).x() - model.damping * v;
+    v =
+      std::max(0.0, v + h * (f - (v > 0 || f > model.friction ? model.friction : f)) / model.mass);
+    x += h * v;
+  }
+  EXPECT_NEAR(rows.back().x.x(), x, 0.02 * x);
+  EXPECT_EQ(rows.back().force, Eigen::Vector3d::Zero());
+}
+
+TEST(HandSim, PressingWithTwoNewtonsRestsOnTheSheet)
+{
+  const SimRun r = run(still(sheet()), push({ 0, 0, -2 }, 2.0), { 0.0, 0.0, 0.01 });
+  const TrajectoryRow& last = r.rows.back();
+  EXPECT_TRUE(last.contact);
+  // At rest the spring balances the hand: 2 N / 800 N/m = 2.5 mm, within a quantum.
+  EXPECT_NEAR(last.x.z(), -2.0 / ForceParams().contact_stiffness, DeviceModel().resolution);
+  EXPECT_NEAR(last.force.z(), 2.0, quantum_step() + 0.06);
+  EXPECT_GT(last.proxy.z(), 0.0);
+  EXPECT_LT(r.figures.max_step_excess, 1e-9);
+}
+
+TEST(HandSim, PressingHarderThanTheDeviceIsASteadySaturatedForceNotAFallThrough)
+{
+  // 5 N against a 3.3 N device: the stylus sinks, the force stays at 3.3 N upward, the
+  // proxy stays on the sheet; no step beyond what the motion gives.
+  const SimRun r = run(still(sheet()), push({ 0, 0, -5 }, 1.0), { 0.0, 0.0, 0.01 });
+  const double f_max = DeviceModel().limits.max_force;
+  int saturated = 0;
+  for (const TrajectoryRow& row : r.rows)
+  {
+    ASSERT_GT(row.proxy.z(), 0.0);
+    ASSERT_GE(row.force.z(), 0.0);
+    saturated += std::abs(row.force.z() - f_max) < 1e-9;
+  }
+  EXPECT_GT(saturated, 500);
+  EXPECT_NEAR(r.rows.back().force.z(), f_max, 1e-9);
+  EXPECT_LT(r.figures.max_step_excess, 1e-9);
+  EXPECT_LE(r.energy, 0.0);
+}
+
+TEST(HandSim, ComingFromTheBackSideIsFeltOnTheBackSide)
+{
+  const SimRun r = run(still(sheet()), push({ 0, 0, 0.5 }, 1.5), { 0.0, 0.0, -0.01 });
+  for (const TrajectoryRow& row : r.rows)
+  {
+    // The stylus arrives at speed and may overshoot the sheet; the proxy holds.
+    ASSERT_LT(row.proxy.z(), 0.0);
+    ASSERT_LE(row.force.z(), 1e-12);
+  }
+  EXPECT_NEAR(r.rows.back().x.z(), 0.5 / ForceParams().contact_stiffness, DeviceModel().resolution);
+  EXPECT_NEAR(r.rows.back().force.z(), -0.5, quantum_step() + 0.06);
+  EXPECT_LT(r.figures.max_step_excess, 1e-9);
+}
+
+TEST(HandSim, SlidingAcrossAPatchReplacedEvery16msGivesNoStep)
+{
+  // 1 N down and 0.1 N sideways (about 8 cm/s) over the 200 triangles, a patch of the
+  // 12 nearest re-sent every 16 ms (so triangles enter and leave the patch under the
+  // stylus).
+  HandSimOptions options;
+  options.max_triangles = 12;
+  const std::vector<HandKey> hand = { { 0.0, { 0, 0, -1 } }, { 0.3, { 0, 0, -1 } },
+    { 0.5, { 0.08, 0.06, -1 } }, { 1.2, { 0.08, 0.06, -1 } } };
+  const SimRun r = run(still(sheet()), hand, { -0.03, -0.03, 0.002 }, options);
+  EXPECT_GT(r.rows.back().x.x(), 0.0); // it did slide across triangles
+  for (const TrajectoryRow& row : r.rows)
+    ASSERT_GT(row.proxy.z(), 0.0);
+  EXPECT_LT(r.figures.max_step_excess, 1e-9);
+  EXPECT_LE(r.energy, 0.0);
+}
+
+TEST(HandSim, ASurfaceRisingUnderTheStylusPushesItWithoutAStep)
+{
+  // The sheet rises 3 cm/s (0.48 mm per 16 ms patch) under a stylus pressing 1 N: it is
+  // carried up, on top, and each patch changes the force by at most k times the
+  // surface's motion in that patch plus the stylus's own motion.
+  const double speed = 0.03;
+  const SceneAt rising = [speed](double t, Soup& out) { out = sheet(speed * t); };
+  const SimRun r = run(rising, push({ 0, 0, -1 }, 1.0), { 0.0, 0.0, 0.003 });
+  const double k = ForceParams().contact_stiffness;
+  for (std::size_t i = 1; i < r.rows.size(); ++i)
+  {
+    const TrajectoryRow& row = r.rows[i];
+    ASSERT_GT(row.proxy.z(), speed * row.t - 0.016 * speed);
+    const double step = (row.force - r.rows[i - 1].force).norm();
+    const double motion = (row.x - r.rows[i - 1].x).norm() + 2 * DeviceModel().resolution;
+    ASSERT_LE(step, k * (motion + 0.016 * speed) + 1e-9) << row.t;
+  }
+  EXPECT_NEAR(r.rows.back().x.z(), speed * 1.0 - 1.0 / k, 0.001);
+}
+
+TEST(HandSim, TheDefaultsMeetThePassivityCondition)
+{
+  // Colgate & Schenkel: b > K T / 2 + |B|, K the largest stiffness rendered (contact and
+  // grasp together are scaled to the device's max), B the virtual damping.
+  const DeviceModel device;
+  const ForceParams params;
+  const double K = device.limits.max_stiffness;
+  EXPECT_GT(device.damping, K * device.period / 2 + params.contact_damping);
+  EXPECT_GT(device.damping, K * device.period / 2 + params.coupling_damping);
+}
+
+namespace
+{
+// Hold, tap, release: 1.5 N onto the sheet, held; five 20 ms taps of 3 N; held again;
+// then the hand lifts (0.5 N up for 0.1 s) and lets go.
+std::vector<HandKey> hold_tap_release()
+{
+  std::vector<HandKey> h = { { 0.0, { 0, 0, -1.5 } }, { 0.8, { 0, 0, -1.5 } } };
+  for (int i = 0; i < 5; ++i)
+  {
+    const double t = 0.8 + 0.1 * i;
+    h.push_back({ t + 0.001, { 0, 0, -3 } });
+    h.push_back({ t + 0.02, { 0, 0, -3 } });
+    h.push_back({ t + 0.021, { 0, 0, -1.5 } });
+    h.push_back({ t + 0.1, { 0, 0, -1.5 } });
+  }
+  h.push_back({ 1.8, { 0, 0, -1.5 } });
+  h.push_back({ 1.81, { 0, 0, 0.5 } });
+  h.push_back({ 1.91, { 0, 0, 0.5 } });
+  h.push_back({ 1.92, { 0, 0, 0 } });
+  h.push_back({ 3.0, { 0, 0, 0 } });
+  return h;
+}
+} // namespace
+
+TEST(HandSim, HoldTapReleaseAtMaxStiffnessInjectsNoEnergyAndSettles)
+{
+  HandSimOptions options;
+  options.force.contact_stiffness = DeviceModel().limits.max_stiffness;
+  const SimRun r = run(still(sheet()), hold_tap_release(), { 0.0, 0.0, 0.002 }, options);
+  std::cout << "hold-tap-release: injected " << r.energy << " J\n";
+  EXPECT_LE(r.energy, 0.0);
+  // No limit cycle while held: over the last 0.2 s of the hold the force stays within
+  // two position quanta of stiffness.
+  double lo = 1e9, hi = -1e9;
+  for (const TrajectoryRow& row : r.rows)
+    if (row.t > 0.6 && row.t < 0.8)
+    {
+      lo = std::min(lo, row.force.z());
+      hi = std::max(hi, row.force.z());
+    }
+  EXPECT_LE(hi - lo, 2 * options.force.contact_stiffness * DeviceModel().resolution + 1e-9);
+  // Released: off the sheet and at rest by the end.
+  for (const TrajectoryRow& row : r.rows)
+    if (row.t > 2.5)
+      ASSERT_FALSE(row.contact) << row.t;
+  EXPECT_LT((r.rows.back().x - r.rows[r.rows.size() - 2].x).norm(), 1e-9);
+}
+
+TEST(HandSim, AGraspHeldTappedAndReleasedInjectsNoEnergy)
+{
+  // The coupling at its stiffest (rigid rock: 0.8 of the device's max) with the default
+  // coupling damping; the hand pulls 1.5 N, taps, lets go; no scene.
+  HandSimOptions options;
+  options.grasping = true;
+  options.grasp_stiffness = coupling_stiffness(0.0, options.force, DeviceModel().limits);
+  const SimRun r =
+    run([](double, Soup& s) { s.clear(); }, hold_tap_release(), Eigen::Vector3d::Zero(), options);
+  std::cout << "grasp hold-tap-release: injected " << r.energy << " J\n";
+  EXPECT_LE(r.energy, 0.0);
+  EXPECT_LT(r.rows.back().x.norm(), 2 * DeviceModel().resolution);
+}
