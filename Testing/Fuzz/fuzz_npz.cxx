@@ -1,6 +1,7 @@
 // libFuzzer target: the .npz DEM reading of vtkNpzDEMReader (Filters/IO) on any bytes:
 // the zip archive, its inflated .npy entries, the grid check and, for a grid that passes
 // it, the surface the reader builds (geoshaping::dem_surface).
+#include "fuzz_require.h"
 #include "vtkDEMProjection.h"
 #include "vtkNpzDEMParser.h"
 
@@ -8,19 +9,9 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <exception>
 #include <string>
 #include <vector>
-
-namespace
-{
-void Require(bool condition)
-{
-  if (!condition)
-    std::abort();
-}
-}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -8,24 +8,15 @@
 // rows (2 + byte % 15 each), stride (1 + byte % 3), flags (bit 0 point data, bit 1 use
 // hidden marks), origin and spacing (4 signed bytes, scaled), then one signed byte per
 // sample (127: NaN; a byte's low bit is its hidden mark when bit 1 is set), cycled.
+#include "fuzz_require.h"
 #include "vtkDEMProjection.h"
 
 #include "geoshaping/dem_surface.h"
 
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <exception>
 #include <string>
-
-namespace
-{
-void Require(bool condition)
-{
-  if (!condition)
-    std::abort();
-}
-}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -8,7 +8,7 @@ import subprocess
 import sys
 
 import numpy as np
-from geoshaping_testing import check, load
+from geoshaping_testing import check, check_same_dem_surface, load
 from paraview import servermanager as sm
 from paraview.simple import *  # noqa: F401,F403
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -54,18 +54,7 @@ tif = jacksboro.write_geotiff(os.path.join(tmp, "jacksboro_4326.tif"))
 for stride in (1, 3):
     ours = surface(tif, stride)
     npz = sm.Fetch(JacksboroFaultDEM(Stride=stride))  # noqa: F405
-    p = vtk_to_numpy(ours.GetPoints().GetData())
-    q = vtk_to_numpy(npz.GetPoints().GetData())
-    check(ours.GetPoints().GetDataType() == 11, "stride %d: double-precision points" % stride)
-    check(p.shape == q.shape, "stride %d: %d points, as the .npz source" % (stride, len(q)))
-    diff = float(np.abs(p - q).max())
-    check(diff < 1e-6, "stride %d: every point within 1e-6 m of the .npz source (%.2g m)"
-          % (stride, diff))
-    check(np.array_equal(vtk_to_numpy(ours.GetPolys().GetConnectivityArray()),
-                         vtk_to_numpy(npz.GetPolys().GetConnectivityArray())),
-          "stride %d: the same %d triangles" % (stride, npz.GetNumberOfCells()))
-    check(np.array_equal(vtk_to_numpy(ours.GetPointData().GetArray("Elevation")), p[:, 2]),
-          "stride %d: Elevation is z" % stride)
+    check_same_dem_surface(ours, npz, "stride %d" % stride, ".npz source")
     about = field(ours, "Projection")
     check(about.startswith("UTM zone 16N (WGS84, PROJ ") and
           "reprojected from longitude/latitude" in about, "Projection says " + about)
