@@ -32,7 +32,8 @@ cmake -S . -B "$build" "${compilers[@]}" -DCMAKE_BUILD_TYPE=Debug \
   "-DCMAKE_SHARED_LINKER_FLAGS=-fsanitize=address,undefined" \
   -DGEOSHAPING_FUZZ_SECONDS="${GEOSHAPING_FUZZ_SECONDS:-20}"
 targets=(geoshaping_core_tests geoshaping_haptics_tests geoshaping_io_tests
-  geoshaping_fuzz_tsurf geoshaping_fuzz_npz geoshaping_fuzz_npy geoshaping_fuzz_trace)
+  geoshaping_fuzz_tsurf geoshaping_fuzz_npz geoshaping_fuzz_npy geoshaping_fuzz_trace
+  geoshaping_fuzz_raster)
 cmake --build "$build" -j2 --target "${targets[@]}"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"

@@ -267,7 +267,7 @@ vtkNpyArray vtkNpyParse(const std::vector<char>& bytes, const std::string& name)
   return array;
 }
 
-geoshaping::GeographicGrid vtkNpzDEMParse(const vtkNpzArchive& npz)
+geoshaping::ElevationGrid vtkNpzDEMParse(const vtkNpzArchive& npz)
 {
   vtkNpyArray elevation = vtkNpyParse(npz.Read("elevation.npy"), "elevation.npy");
   if (elevation.Shape.size() != 2)
@@ -277,62 +277,15 @@ geoshaping::GeographicGrid vtkNpzDEMParse(const vtkNpzArchive& npz)
     throw std::runtime_error("elevation.npy: " + std::to_string(elevation.Shape[0]) + " x " +
                              std::to_string(elevation.Shape[1]) + " is too large a grid (at most " +
                              std::to_string(INT_MAX) + " rows and columns)");
-  geoshaping::GeographicGrid grid;
+  geoshaping::ElevationGrid grid;
   grid.rows = geoshaping::index_t(elevation.Shape[0]);
   grid.cols = geoshaping::index_t(elevation.Shape[1]);
   grid.elevation = std::move(elevation.Values);
   // matplotlib's naming: xmin/ymin are the first column/row, xmax/ymax the last ones
   // (its Jacksboro DEM has ymin > ymax: the rows run north to south).
-  grid.lon_first = Scalar(npz, "xmin");
-  grid.lon_last = Scalar(npz, "xmax");
-  grid.lat_first = Scalar(npz, "ymin");
-  grid.lat_last = Scalar(npz, "ymax");
+  grid.x_first = Scalar(npz, "xmin");
+  grid.x_last = Scalar(npz, "xmax");
+  grid.y_first = Scalar(npz, "ymin");
+  grid.y_last = Scalar(npz, "ymax");
   return grid;
-}
-
-vtkNpzUtmProjection::vtkNpzUtmProjection(const geoshaping::GeographicGrid& grid)
-{
-  const double lon0 = 0.5 * (grid.lon_first + grid.lon_last);
-  const double lat0 = 0.5 * (grid.lat_first + grid.lat_last);
-  if (!std::isfinite(lon0) || !std::isfinite(lat0))
-    throw std::runtime_error("the grid's centre is not finite: no UTM zone");
-  const double zone = std::floor((lon0 + 180.0) / 6.0) + 1.0;
-  this->Zone = int(std::min(60.0, std::max(1.0, zone)));
-  this->South = lat0 < 0.0;
-  this->Definition = "+proj=utm +zone=" + std::to_string(this->Zone) +
-                     (this->South ? " +south" : "") + " +ellps=WGS84";
-  this->Context = proj_context_create();
-  this->Projection = this->Context ? proj_create(this->Context, this->Definition.c_str()) : nullptr;
-  if (!this->Projection)
-  {
-    const std::string why =
-      this->Context ? proj_context_errno_string(this->Context, proj_context_errno(this->Context))
-                    : "no context";
-    proj_context_destroy(this->Context);
-    throw std::runtime_error("PROJ cannot make " + this->Definition + ": " + why);
-  }
-}
-
-vtkNpzUtmProjection::~vtkNpzUtmProjection()
-{
-  proj_destroy(this->Projection);
-  proj_context_destroy(this->Context);
-}
-
-bool vtkNpzUtmProjection::operator()(std::size_t count, double* x, double* y) const
-{
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    x[i] = proj_torad(x[i]);
-    y[i] = proj_torad(y[i]);
-  }
-  return proj_trans_generic(this->Projection, PJ_FWD, x, sizeof(double), count, y, sizeof(double),
-           count, nullptr, 0, 0, nullptr, 0, 0) == count;
-}
-
-std::string vtkNpzUtmProjection::GetDescription() const
-{
-  const PJ_INFO info = proj_info();
-  return "UTM zone " + std::to_string(this->Zone) + (this->South ? "S" : "N") + " (WGS84, PROJ " +
-         info.version + ": " + this->Definition + ")";
 }

@@ -13,8 +13,7 @@
 
 #include "geoshaping/dem_surface.h"
 
-#include <proj.h> // PROJ
-#include <zip.h>  // libzip
+#include <zip.h> // libzip
 
 #include <cstddef>
 #include <cstdint>
@@ -57,41 +56,10 @@ std::vector<char> vtkNpzReadFile(const std::string& path);
 /// (shape tuple, True/False, supported dtype) and the data exactly shape x item size.
 vtkNpyArray vtkNpyParse(const std::vector<char>& bytes, const std::string& name);
 
-/// The map projection of a DEM: the UTM zone (WGS84 ellipsoid) of the grid's centre,
-/// through PROJ (`+proj=utm +zone=Z [+south] +ellps=WGS84`: no database needed). Zone
-/// floor((lon0 + 180) / 6) + 1 of the centre longitude lon0, clamped to 1 ... 60; south
-/// when the centre latitude is below 0. Usable as a geoshaping::Projector.
-class vtkNpzUtmProjection
-{
-public:
-  /// Throws when PROJ cannot make the projection.
-  explicit vtkNpzUtmProjection(const geoshaping::GeographicGrid& grid);
-  ~vtkNpzUtmProjection();
-  vtkNpzUtmProjection(const vtkNpzUtmProjection&) = delete;
-  vtkNpzUtmProjection& operator=(const vtkNpzUtmProjection&) = delete;
-
-  /// Longitudes in x and latitudes in y (degrees) to easting and northing (m), in place.
-  /// False when PROJ transforms fewer than `count` points; a point PROJ cannot project
-  /// comes back infinite (HUGE_VAL).
-  bool operator()(std::size_t count, double* x, double* y) const;
-
-  int GetZone() const { return this->Zone; }
-  bool GetSouth() const { return this->South; }
-  /// "UTM zone 16N (WGS84, PROJ 9.1.1: +proj=utm +zone=16 +ellps=WGS84)".
-  std::string GetDescription() const;
-
-private:
-  int Zone = 0;
-  bool South = false;
-  std::string Definition;
-  PJ_CONTEXT* Context = nullptr;
-  PJ* Projection = nullptr;
-};
-
 /// The DEM of an archive: the 2D `elevation` (rows and columns at most INT_MAX) and the
 /// scalars `xmin xmax ymin ymax` (matplotlib's layout). Not yet validated: see
 /// geoshaping::validate.
-geoshaping::GeographicGrid vtkNpzDEMParse(const vtkNpzArchive& npz);
+geoshaping::ElevationGrid vtkNpzDEMParse(const vtkNpzArchive& npz);
 
 #endif
 // VTK-HeaderTest-Exclude: vtkNpzDEMParser.h

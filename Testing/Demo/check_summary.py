@@ -15,7 +15,7 @@ def check(condition, message):
         failures.append(message)
 
 
-for name, vertices in (("jacksboro", 172 * 202), ("fault_step", None)):
+for name, vertices in (("jacksboro", 172 * 202), ("jacksboro_geotiff", None), ("fault_step", None)):
     scene = summary[name]
     for suffix in ("_deformed.vtp", "_deformed.ts", "_painted.vtp", "_before.png", "_after.png"):
         path = os.path.join(out, name + suffix)

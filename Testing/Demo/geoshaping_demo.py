@@ -4,18 +4,23 @@ stylus and write the results, pictures and a timing/error report.
     pvbatch Testing/Demo/geoshaping_demo.py --plugin <GeoShaping.so> --out <dir> [--quick]
 
 Scenes (Data/Demo/demo_scene.json): the Jacksboro fault zone DEM (real topography,
-Debian's python-matplotlib-data) with a frozen fault scarp and a soft lowland, and the
-paper's Figure 5 horizon with its black fault step and white border. Both are painted
-from the stored dabs with MalleabilityPaint, then the stored stylus trace
+Debian's python-matplotlib-data) with a frozen fault scarp and a soft lowland; the same
+DEM as a GeoTIFF, written and warped to UTM 16N by GDAL at demo time, opened with
+ParaView's GDALRasterReader and made a surface by DEMSurface (the way a user's own DEM
+comes in), with the same paint; and the paper's Figure 5 horizon with its black fault
+step and white border. Each is painted from the stored dabs with MalleabilityPaint, then
+the stored stylus trace
 (Data/Demo/grasp_and_drag.trace, the Haptics trace format) is replayed: at the button
 press the stylus grasps the scene's grasp point, and while the button is held the
 device motion, scaled by `metres_per_device_metre`, is the ChainMailDeformation
-Displacement. The replay runs once per candidate queue; the FIFO Priority result is
-written (.vtp and GOCAD .ts) and pictured.
+Displacement. The replay runs once per candidate queue (FIFO Priority only for the
+GeoTIFF, whose other queues the .npz scene shows); the FIFO Priority result is written
+(.vtp and GOCAD .ts) and pictured.
 """
 import argparse
 import json
 import os
+import subprocess
 import sys
 import time
 
@@ -143,7 +148,7 @@ def picture(proxy, path, title, z_exaggeration, camera=None):
     return camera
 
 
-def run_scene(name, cfg, source, to_xyz, grasp, trace, args, out):
+def run_scene(name, cfg, source, to_xyz, grasp, trace, args, out, queues=QUEUES):
     print("[%s] %s" % (name, cfg["title"]), flush=True)
     paint, chain = painted_scene(source, cfg, to_xyz, name)
     rest_data = output_of(paint)
@@ -155,7 +160,7 @@ def run_scene(name, cfg, source, to_xyz, grasp, trace, args, out):
     edges = demo_metrics.edges(rest_data)
 
     results = {}
-    for queue in QUEUES:
+    for queue in queues:
         chain.CandidateQueue = queue
         core_ms, wall_ms, displaced, frames, drags = replay(
             chain, grasp, trace, cfg["metres_per_device_metre"], args.stride)
@@ -232,6 +237,23 @@ def main():
     jack_xyz = jacksboro_xyz(dem_data)
     scenes["jacksboro"] = run_scene("jacksboro", j, dem, jack_xyz, jack_xyz(j["grasp_lonlat"]),
                                     trace, args, out)
+
+    # A user's DEM: the Jacksboro grid written as a geographic GeoTIFF by GDAL, warped by
+    # gdalwarp to UTM 16N at 90 m (its tilted footprint leaves no-data corners: holes),
+    # opened with ParaView's GDALRasterReader, made a surface by DEMSurface. Same paint
+    # and grasp (lon/lat through the same UTM 16N).
+    geographic = jacksboro.write_geotiff(os.path.join(out, "jacksboro_4326.tif"))
+    warped = os.path.join(out, "jacksboro_utm16n.tif")
+    subprocess.run(["gdalwarp", "-q", "-overwrite", "-t_srs", "EPSG:32616", "-tr", "90", "90",
+                    "-r", "bilinear", "-dstnodata", "-32768", geographic, warped], check=True)
+    raster = GDALRasterReader(registrationName="Jacksboro GeoTIFF", FileName=warped)  # noqa: F405
+    surface = DEMSurface(registrationName="Jacksboro DEM surface", Input=raster,  # noqa: F405
+                         Stride=2 if args.quick else 1)
+    geotiff_xyz = jacksboro_xyz(output_of(surface))
+    g = dict(j, title="Jacksboro GeoTIFF (gdalwarp to UTM 16N, 90 m; DEMSurface)")
+    scenes["jacksboro_geotiff"] = run_scene("jacksboro_geotiff", g, surface, geotiff_xyz,
+                                            geotiff_xyz(j["grasp_lonlat"]), trace, args, out,
+                                            queues=["FIFO Priority"])
 
     f = config["fault_step"]
     step = FaultStepHorizon(**f["source"])  # noqa: F405

@@ -80,3 +80,32 @@ def jacksboro_polydata(path=None, stride=1):
     elevation.SetName("Elevation")
     out.GetPointData().AddArray(elevation)
     return out
+
+
+def write_geotiff(out_path, path=None, nodata_mask=None):
+    """Writes the DEM as a geographic GeoTIFF (EPSG:4326, int16) with GDAL (Debian's
+    python3-gdal), pixel centres at the samples the .npz reader uses (numpy.linspace of
+    xmin..xmax and ymin..ymax, northern row first), so DEMSurface of the file is the
+    Jacksboro Fault DEM source's surface. Pixels where ``nodata_mask`` is true get the
+    band's no-data value -32768."""
+    from osgeo import gdal, osr
+
+    path = path or find_dem()
+    dem = np.load(path)
+    z = dem["elevation"].astype(np.int16)
+    rows, cols = z.shape
+    dx = (float(dem["xmax"]) - float(dem["xmin"])) / (cols - 1)
+    dy = (float(dem["ymax"]) - float(dem["ymin"])) / (rows - 1)
+    out = gdal.GetDriverByName("GTiff").Create(out_path, cols, rows, 1, gdal.GDT_Int16)
+    out.SetGeoTransform([float(dem["xmin"]) - 0.5 * dx, dx, 0.0,
+                         float(dem["ymin"]) - 0.5 * dy, 0.0, dy])
+    srs = osr.SpatialReference()
+    srs.ImportFromEPSG(4326)
+    out.SetProjection(srs.ExportToWkt())
+    band = out.GetRasterBand(1)
+    if nodata_mask is not None:
+        z = np.where(nodata_mask, np.int16(-32768), z)
+        band.SetNoDataValue(-32768)
+    band.WriteArray(z)
+    out.FlushCache()
+    return out_path

@@ -1,21 +1,12 @@
 // libFuzzer target: the stylus trace parser of the Replay device (Haptics/trace.cpp) on
 // any bytes, then interpolation between the samples of an accepted trace (finite).
+#include "fuzz_require.h"
 #include "geoshaping/haptics/trace.h"
 
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <sstream>
 #include <string>
-
-namespace
-{
-void Require(bool condition)
-{
-  if (!condition)
-    std::abort();
-}
-}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -1,21 +1,12 @@
 // libFuzzer target: the GOCAD TSurf parser of vtkGocadTSurfReader (Filters/IO), on any
 // bytes. Besides "no crash, no sanitizer report", a file the parser accepts must be a
 // consistent mesh (every check below aborts, which the fuzzer reports as a crash).
+#include "fuzz_require.h"
 #include "vtkGocadTSurfParser.h"
 
 #include <cstdint>
-#include <cstdlib>
 #include <sstream>
 #include <string>
-
-namespace
-{
-void Require(bool condition)
-{
-  if (!condition)
-    std::abort();
-}
-}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

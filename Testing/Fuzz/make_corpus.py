@@ -229,6 +229,40 @@ def traces():
     write("trace", "regression_buttons_out_of_range.trace", "0 0 0 0 1 0 0 0 4294967296\n")
 
 
+# ---------------------------------------------------------------- raster metadata
+def raster_input(crs, nodata, header, samples):
+    """fuzz_raster's input: CRS line, no-data line, 8 header bytes, the samples."""
+    return crs.encode() + b"\n" + nodata.encode() + b"\n" + bytes(header) + bytes(
+        v & 0xFF for v in samples)
+
+
+def rasters():
+    # 5 x 4 pixels (bytes 3, 2), stride 1, cell data, origin (-84, 36) and 0.05 x -0.05
+    # pixels (bytes -56 x 1.5, 48 x 0.75, 5 x 0.01, -5 x 0.01); -9 and 127 (NaN) are holes.
+    wgs84 = "+proj=longlat +datum=WGS84 +no_defs"
+    samples = [10, 12, 14, -9, 18, 11, 13, 15, 17, 19, 127, 14, 16, 18, 20, 13, 15, 17, 19, 21]
+    write("raster", "seed_wgs84_nodata.bin", raster_input(wgs84, "-9", [3, 2, 0, 0, 200, 48, 5, 251], samples))
+    write("raster", "seed_utm_hidden_stride2.bin",
+          raster_input("+proj=utm +zone=16 +datum=WGS84 +units=m +no_defs", "nan",
+                       [3, 2, 1, 2, 10, 20, 100, 100], [10 + k % 3 for k in range(20)]))
+    write("raster", "seed_us_feet_point_data.bin",
+          raster_input("+proj=lcc +lat_0=34.3333333333333 +lon_0=-86 +lat_1=36.4166666666667 "
+                       "+lat_2=35.25 +x_0=600000 +y_0=0 +datum=NAD83 +units=us-ft +no_defs", "",
+                       [3, 2, 0, 1, 10, 20, 100, 156], samples))
+    write("raster", "seed_wkt_4326.bin", raster_input(
+        'GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563]],'
+        'PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433]]', "-3.4028234663852886e+38",
+        [3, 2, 0, 0, 200, 48, 5, 251], samples))
+    write("raster", "seed_nad27_south.bin", raster_input("+proj=longlat +datum=NAD27 +no_defs", "0",
+                                                          [14, 14, 0, 0, 120, 140, 3, 3], samples))
+    for name, crs in (("no_crs", ""), ("geocentric", "+proj=geocent +datum=WGS84"),
+                      ("paris_meridian", "+proj=longlat +ellps=clrk80ign +pm=paris"),
+                      ("not_a_crs", "+proj=nonsense +zone=99")):
+        write("raster", "seed_refused_%s.bin" % name, raster_input(crs, "", [3, 2, 0, 0, 200, 48, 5, 251], samples))
+    write("raster", "seed_epsg_code.bin", raster_input("EPSG:32616", "", [3, 2, 0, 0, 10, 20, 100, 156], samples))
+    write("raster", "seed_refused_nodata_text.bin", raster_input(wgs84, "1e999", [3, 2, 0, 0, 0, 0, 5, 5], samples))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cfm-dir", default=os.path.join(REPO, "..", "shared", "data", "crescent-cfm"))
@@ -238,6 +272,7 @@ def main():
     npz_and_npy(args.jacksboro)
     tsurf(args.cfm_dir)
     traces()
+    rasters()
 
 
 if __name__ == "__main__":

@@ -31,3 +31,21 @@ def check(condition, message):
         print("FAILED:", message)
         sys.exit(1)
     print("ok:", message)
+
+
+def check_same_dem_surface(ours, ref, label, ref_name):
+    """Checks that the DEM surface `ours` (vtkPolyData) has `ref`'s points within 1e-6 m, in
+    double precision, its triangles, and its Elevation equal to z; returns the points."""
+    import numpy as np
+    p = vtk_to_numpy(ours.GetPoints().GetData())
+    q = vtk_to_numpy(ref.GetPoints().GetData())
+    check(ours.GetPoints().GetDataType() == 11, "%s: double-precision points" % label)
+    check(p.shape == q.shape, "%s: %d points, as the %s" % (label, len(q), ref_name))
+    diff = float(np.abs(p - q).max())
+    check(diff < 1e-6, "%s: every point within 1e-6 m of the %s (%.2g m)" % (label, ref_name, diff))
+    a = vtk_to_numpy(ours.GetPolys().GetConnectivityArray())
+    b = vtk_to_numpy(ref.GetPolys().GetConnectivityArray())
+    check(np.array_equal(a, b), "%s: the same %d triangles" % (label, len(b) // 3))
+    e = vtk_to_numpy(ours.GetPointData().GetArray("Elevation"))
+    check(np.array_equal(e, p[:, 2]), "%s: Elevation is z" % label)
+    return p
