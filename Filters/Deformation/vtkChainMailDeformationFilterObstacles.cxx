@@ -39,7 +39,13 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
                   "output is the undeformed input.");
     return false;
   }
-  state.Deformer.set_obstacle_clearance(this->ObstacleClearance);
+  if (!state.Deformer.set_obstacle_clearance(this->ObstacleClearance))
+  {
+    vtkErrorMacro("ObstacleClearance " << this->ObstacleClearance
+                                       << " is not a finite distance >= 0; output is the "
+                                          "undeformed input.");
+    return false;
+  }
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> sources;
   for (int i = 0; i < count; ++i)
   {

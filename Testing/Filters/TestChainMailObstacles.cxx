@@ -181,18 +181,24 @@ TEST(ChainMailObstacles, BadObstaclesAreRefusedAndTheInputIsUntouched)
       ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << p;
     }
   }
-  // The passes do not know obstacles: refused.
-  vtkNew<vtkChainMailDeformationFilter> f;
-  vtkNew<vtkTest::ErrorObserver> errors;
-  f->AddObserver(vtkCommand::ErrorEvent, errors);
-  f->SetInputData(horizon);
-  f->AddObstacleData(good);
-  f->SetRefinementIterations(2);
-  f->SetGraspPointId(14);
-  f->SetDisplacement(0, 0, -3);
-  vtkPointSet* out = Update(f);
-  EXPECT_NE(errors->GetErrorMessage().find("RefinementIterations"), std::string::npos);
-  double x[3];
-  out->GetPoint(14, x);
-  EXPECT_EQ(x[2], 0.0);
+  // The passes do not know obstacles: refused; so is a NaN clearance.
+  for (const char* says : { "RefinementIterations", "ObstacleClearance" })
+  {
+    vtkNew<vtkChainMailDeformationFilter> f;
+    vtkNew<vtkTest::ErrorObserver> errors;
+    f->AddObserver(vtkCommand::ErrorEvent, errors);
+    f->SetInputData(horizon);
+    f->AddObstacleData(good);
+    if (std::string(says) == "RefinementIterations")
+      f->SetRefinementIterations(2);
+    else
+      f->SetObstacleClearance(std::numeric_limits<double>::quiet_NaN());
+    f->SetGraspPointId(14);
+    f->SetDisplacement(0, 0, -3);
+    vtkPointSet* out = Update(f);
+    EXPECT_NE(errors->GetErrorMessage().find(says), std::string::npos);
+    double x[3];
+    out->GetPoint(14, x);
+    EXPECT_EQ(x[2], 0.0);
+  }
 }
