@@ -154,6 +154,8 @@ void ChainMailDeformer::set_mesh(
   previously_moved_.clear();
   moved_rec_.clear();
   moved_root_.clear();
+  obstacles_.reset();
+  rigid_of_.clear();
   set_uniform_malleability(0.5);
 }
 
@@ -215,6 +217,7 @@ void ChainMailDeformer::rebuild_ranks(const std::vector<float>& values)
 void ChainMailDeformer::finish_ranks()
 {
   num_ranks_ = std::max<index_t>(1, index_t(distinct_.size()));
+  rigid_of_.clear(); // the ranks changed: the rigid components may have
   rebuild_rank_params();
 }
 
@@ -229,10 +232,16 @@ void ChainMailDeformer::rebuild_rank_params()
     std::memcpy(&rank_band_[r], &value, sizeof value);
     rank_params_[r] = region_params(transfer_(distinct_[r]));
   }
+  // The transfer function is set every frame: keep the components while the rigid ranks
+  // stay the same (O(ranks)).
+  for (std::size_t r = 0; r < rank_params_.size() && !rigid_of_.empty(); ++r)
+    if (r >= rank_rigid_.size() || rank_rigid_[r] != std::uint8_t(rank_params_[r].rigid()))
+      rigid_of_.clear();
 }
 
 void ChainMailDeformer::set_pinned(const std::uint8_t* mask)
 {
+  rigid_of_.clear(); // pins are left out of the rigid components
   if (!mask)
   {
     pinned_.clear();
@@ -267,6 +276,7 @@ void ChainMailDeformer::reset()
   {
     for (Node& node : nodes_)
       node.stamp = 0;
+    std::fill(rigid_stamp_.begin(), rigid_stamp_.end(), 0u);
     frame_ = 1;
   }
 }
@@ -320,6 +330,7 @@ FrameResult ChainMailDeformer::deform(index_t grasp, const Eigen::Vector3d& disp
   }
   const std::size_t g = inner(grasp);
   move(index_t(g), displacement, -1);
+  result.grasp_fraction = obstacles_ ? last_fraction_ : 1.0;
   switch (queue_kind_)
   {
     case QueueKind::fifo:
@@ -337,6 +348,7 @@ FrameResult ChainMailDeformer::deform(index_t grasp, const Eigen::Vector3d& disp
   }
   result.ok = true;
   result.moved = moved_.size();
+  result.blocked = blocked_;
   return result;
 }
 
@@ -346,6 +358,8 @@ void ChainMailDeformer::begin_frame()
   supersteps_.clear();
   superstep_ = 0;
   superstep_begin_ = 0;
+  blocked_ = 0;
+  last_fraction_ = 1.0;
 }
 
 void ChainMailDeformer::move(
@@ -357,7 +371,7 @@ void ChainMailDeformer::move(
   for (std::uint32_t e = offsets_[std::size_t(i)]; e < offsets_[std::size_t(i) + 1]; ++e)
     prefetch(&nodes_[std::size_t(neighbors_[e])]);
   slot_[std::size_t(i)] = index_t(moved_rec_.size());
-  moved_rec_.push_back({ d, i, sponsor_slot });
+  moved_rec_.push_back({ obstacles_ ? admissible(i, d) : d, i, sponsor_slot });
   moved_root_.push_back(root);
   moved_.push_back(outer_of_[std::size_t(i)]);
 }
@@ -504,6 +518,96 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
   result.examined = examined;
 }
 
+std::string ChainMailDeformer::set_obstacles(
+  const double* xyz, std::size_t n, const std::int64_t* triangles, std::size_t num_triangles)
+{
+  auto obstacles = std::make_shared<Obstacles>();
+  std::string error = obstacles->set(xyz, n, triangles, num_triangles, origin_);
+  obstacles_.reset();
+  if (error.empty())
+    obstacles_ = std::move(obstacles);
+  return error;
+}
+
+bool ChainMailDeformer::set_obstacle_clearance(double c)
+{
+  if (!(c >= 0.0) || !std::isfinite(c))
+    return false;
+  clearance_ = c;
+  return true;
+}
+
+void ChainMailDeformer::build_rigid_components()
+{
+  // Connected components of the rigid, unpinned vertices over the edges between them.
+  const std::size_t n = nodes_.size();
+  rank_rigid_.resize(rank_params_.size());
+  for (std::size_t r = 0; r < rank_params_.size(); ++r)
+    rank_rigid_[r] = std::uint8_t(rank_params_[r].rigid());
+  auto rigid = [&](std::size_t i)
+  {
+    return !rank_rigid_.empty() && rank_rigid_[std::size_t(nodes_[i].rank)] &&
+           (pinned_inner_.empty() || !pinned_inner_[i]);
+  };
+  rigid_of_.assign(n, -1);
+  rigid_first_.assign(1, 0);
+  rigid_members_.clear();
+  for (std::size_t seed = 0; seed < n; ++seed)
+  {
+    if (rigid_of_[seed] >= 0 || !rigid(seed))
+      continue;
+    const auto component = index_t(rigid_first_.size() - 1);
+    rigid_of_[seed] = component;
+    rigid_members_.push_back(index_t(seed));
+    for (std::size_t k = rigid_first_.back(); k < rigid_members_.size(); ++k)
+    {
+      const auto v = std::size_t(rigid_members_[k]);
+      for (std::uint32_t e = offsets_[v]; e < offsets_[v + 1]; ++e)
+      {
+        const auto c = std::size_t(neighbors_[e]);
+        if (rigid_of_[c] < 0 && rigid(c))
+        {
+          rigid_of_[c] = component;
+          rigid_members_.push_back(index_t(c));
+        }
+      }
+    }
+    rigid_first_.push_back(std::uint32_t(rigid_members_.size()));
+  }
+  rigid_stamp_.assign(rigid_first_.size() - 1, 0u);
+  rigid_disp_.assign(rigid_first_.size() - 1, Eigen::Vector3d::Zero());
+}
+
+Eigen::Vector3d ChainMailDeformer::admissible(index_t i, const Eigen::Vector3d& d)
+{
+  if (rigid_of_.empty())
+    build_rigid_components();
+  const index_t component = rigid_of_[std::size_t(i)];
+  double f = 1.0;
+  if (component < 0)
+    f = obstacles_->admissible_fraction(nodes_[std::size_t(i)].rest, d, clearance_);
+  else if (rigid_stamp_[std::size_t(component)] == frame_)
+  {
+    if (d == rigid_disp_[std::size_t(component)])
+      return d; // the component's displacement, admissible for every member
+    f = obstacles_->admissible_fraction(nodes_[std::size_t(i)].rest, d, clearance_);
+  }
+  else
+  {
+    for (std::uint32_t k = rigid_first_[std::size_t(component)];
+         k < rigid_first_[std::size_t(component) + 1]; ++k)
+      f = std::min(f, obstacles_->admissible_fraction(
+                        nodes_[std::size_t(rigid_members_[k])].rest, d, clearance_));
+    rigid_stamp_[std::size_t(component)] = frame_;
+    rigid_disp_[std::size_t(component)] = f == 1.0 ? d : Eigen::Vector3d(f * d);
+  }
+  last_fraction_ = f;
+  if (f == 1.0)
+    return d;
+  ++blocked_;
+  return f * d;
+}
+
 std::mutex& ChainMailDeformer::caller_adjacency_mutex()
 {
   static std::mutex m;
@@ -559,7 +663,11 @@ std::size_t ChainMailDeformer::memory_bytes() const
          caller_adjacency_bytes() + offsets_.capacity() * sizeof(std::uint32_t) +
          neighbors_.capacity() * sizeof(index_t) + supersteps_.memory_bytes() +
          rank_band_.capacity() * sizeof(std::uint32_t) + gid_.capacity() * sizeof(std::int64_t) +
-         ghost_.capacity();
+         ghost_.capacity() + (obstacles_ ? obstacles_->memory_bytes() : 0) +
+         rigid_of_.capacity() * sizeof(index_t) + rigid_first_.capacity() * sizeof(std::uint32_t) +
+         rigid_members_.capacity() * sizeof(index_t) +
+         rigid_stamp_.capacity() * sizeof(std::uint32_t) +
+         rigid_disp_.capacity() * sizeof(Eigen::Vector3d) + rank_rigid_.capacity();
 }
 
 } // namespace geoshaping

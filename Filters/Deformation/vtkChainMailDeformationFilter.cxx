@@ -7,6 +7,7 @@ vtkStandardNewMacro(vtkChainMailDeformationFilter);
 vtkChainMailDeformationFilter::vtkChainMailDeformationFilter()
   : Internals(new vtkInternals)
 {
+  this->SetNumberOfInputPorts(2);
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Malleability");
 }
 
@@ -106,6 +107,10 @@ int vtkChainMailDeformationFilter::RequestData(
   {
     return 1;
   }
+  if (!this->UpdateObstacles(inputVector))
+  {
+    return 1;
+  }
   std::vector<int> stale; // the last frame, shown until rewritten
   const std::vector<int> touched = this->UpdateEdits(stale);
   this->Deform(input, stale);
@@ -141,6 +146,8 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RefinementTolerance: " << this->RefinementTolerance << "\n";
   os << indent << "RefinementSolver: " << this->RefinementSolver << "\n";
   os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
+  os << indent << "ObstacleClearance: " << this->ObstacleClearance << "\n";
+  os << indent << "NumberOfObstacleConnections: " << this->GetNumberOfInputConnections(1) << "\n";
   os << indent << "NumberOfEdits: " << this->Internals->Edits.records().size() << "\n";
   os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";
 }

@@ -81,6 +81,7 @@
 #include <string>     // For std::string
 #include <vector>     // For std::vector
 
+class vtkAlgorithmOutput;
 class vtkIdTypeArray;
 class vtkPiecewiseFunction;
 
@@ -336,6 +337,39 @@ public:
   /// Undone edits that RedoEdit can re-append.
   int GetNumberOfRedoableEdits();
 
+  ///@{
+  /// Obstacles (docs/obstacles.md): surfaces on input port 1, optional, any number of
+  /// connections (polygons of polydata, or the boundary surface of any other dataset,
+  /// triangulated), open or closed. No vertex's straight path from its rest position to
+  /// its deformed position crosses an obstacle triangle, and a vertex that started at
+  /// least ObstacleClearance away ends at least that far: a vertex (the grasp included)
+  /// stops at the last admissible point of its path and its neighbours follow from there;
+  /// rigid regions stop as one; pins stay. The triangles' tree is built once per obstacle
+  /// geometry. Refused with an error (output = input): an obstacle with non-finite
+  /// points or no triangle, obstacles with RefinementIterations or RelaxationIterations
+  /// above 0, obstacles on more than one process.
+  void AddObstacleConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
+  void SetObstacleConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void AddObstacleData(vtkDataObject* data) { this->AddInputDataObject(1, data); }
+  void RemoveAllObstacleConnections() { this->SetInputConnection(1, nullptr); }
+  int GetNumberOfObstacleConnections() { return this->GetNumberOfInputConnections(1); }
+  vtkSetClampMacro(ObstacleClearance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ObstacleClearance, double);
+  ///@}
+
+  ///@{
+  /// Obstacle figures of the last update: the part of Displacement the grasp moved (1
+  /// when nothing stopped it or without obstacles, NaN without a grasp), whether an
+  /// obstacle stopped it (the stopped grasp is at rest + fraction * Displacement: where a
+  /// haptic coupling should pull), and the vertices an obstacle held back.
+  double GetLastGraspObstacleFraction() { return this->Statistics.LastGraspObstacleFraction; }
+  bool GetLastGraspBlocked() { return this->Statistics.LastGraspObstacleFraction < 1.0; }
+  vtkIdType GetNumberOfObstacleBlockedPoints()
+  {
+    return this->Statistics.NumberOfObstacleBlockedPoints;
+  }
+  ///@}
+
   /// Number of times the adjacency and rest state were (re)built: stays 1 while only
   /// the grasp, displacement, queue or curves change.
   vtkGetMacro(NumberOfRebuilds, int);
@@ -345,6 +379,7 @@ protected:
   ~vtkChainMailDeformationFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
   int ComputeInputUpdateExtent(
     vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -367,6 +402,7 @@ protected:
   double RefinementTolerance = 1e-6;
   int RefinementSolver = REFINEMENT_ENVELOPE;
   int RelaxationIterations = 0;
+  double ObstacleClearance = 0.0;
 
   // What the last update did (the information properties above), in one place: every
   // RequestData starts from FrameStatistics{} and each stage fills its part.
@@ -386,6 +422,8 @@ protected:
     vtkIdType NumberOfBytesExchanged = 0;
     vtkIdType NumberOfSupersteps = 0;
     vtkIdType NumberOfRounds = 0;
+    double LastGraspObstacleFraction = std::numeric_limits<double>::quiet_NaN();
+    vtkIdType NumberOfObstacleBlockedPoints = 0;
   };
   FrameStatistics Statistics;
   int NumberOfRebuilds = 0;
@@ -409,6 +447,9 @@ private:
   bool RequestDataParallel(
     vtkPointSet* input, vtkPointSet* output, vtkInformationVector** inputVector);
   bool UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
+  // The obstacles of port 1 into the deformer (vtkChainMailDeformationFilterObstacles.cxx);
+  // false (after an error) when they are refused.
+  bool UpdateObstacles(vtkInformationVector** inputVector);
   std::vector<int> UpdateEdits(std::vector<int>& stale);
   void Deform(vtkPointSet* input, std::vector<int>& stale);
   bool OutputFits();

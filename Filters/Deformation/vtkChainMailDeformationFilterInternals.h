@@ -57,6 +57,8 @@ struct vtkChainMailDeformationFilter::vtkInternals
   double MalleabilityDefault = -1.0;
   vtkDataArray* PinSource = nullptr;
   vtkMTimeType PinTime = 0;
+  // The obstacles the deformer holds were built from (data object, MTime per connection).
+  std::vector<std::pair<vtkDataObject*, vtkMTimeType>> ObstacleSources;
 
   // The passes after the frame (refinement, relaxation; geoshaping/frame_passes.h), and
   // the vertices they wrote beyond the frame's moved ones last update (restored to rest

@@ -87,6 +87,8 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       " (use RefinementSolver Envelope with ValidRegionFrame Axes)";
   else if (this->RelaxationIterations > 0)
     refused = "RelaxationIterations > 0 (relaxation)";
+  else if (this->GetNumberOfInputConnections(1) > 0)
+    refused = "Obstacles (obstacle surfaces are not distributed yet)";
   else if (this->CandidateQueue != FIFO && this->CandidateQueue != FIFO_PRIORITY)
     refused = std::string("the ") +
               geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) +

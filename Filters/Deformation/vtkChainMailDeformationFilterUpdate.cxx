@@ -363,6 +363,9 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       }
       this->Statistics.NumberOfDisplacedPoints = vtkIdType(r.moved);
       this->Statistics.NumberOfExaminedCandidates = vtkIdType(r.examined);
+      this->Statistics.NumberOfObstacleBlockedPoints = vtkIdType(r.blocked);
+      this->Statistics.LastGraspObstacleFraction =
+        r.ok ? r.grasp_fraction : std::numeric_limits<double>::quiet_NaN();
       this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
       this->Statistics.LastGraspMalleability = r.ok ? double(state.Deformer.malleability(grasp))
                                                     : std::numeric_limits<double>::quiet_NaN();

@@ -56,7 +56,10 @@ for i in range(sm_chain.GetNumberOfPropertyGroups()):
     groups[group.GetXMLLabel()] = [sm_chain.GetPropertyName(group.GetProperty(k))
                                    for k in range(group.GetNumberOfProperties())]
 check(list(groups) == ["Malleability", "Grasp", "Queue and transfer", "Pins", "Refinement",
-                       "Editing", "Diagnostics"], "ChainMailDeformation's groups: %s" % list(groups))
+                       "Obstacles", "Editing", "Diagnostics"],
+      "ChainMailDeformation's groups: %s" % list(groups))
+check(groups["Obstacles"] == ["Obstacles", "ObstacleClearance"],
+      "the obstacles group holds the surfaces and the clearance")
 check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displacement"] and
       groups["Editing"] == ["CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"],
       "the grasp and edit groups hold their properties")

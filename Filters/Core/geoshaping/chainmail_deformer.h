@@ -2,6 +2,7 @@
 // Generalized ChainMail extended to inhomogeneous meshes (Faeth, Oren, Harding).
 #include "geoshaping/adjacency.h"
 #include "geoshaping/candidate_queue.h"
+#include "geoshaping/obstacles.h"
 #include "geoshaping/transfer_function.h"
 #include "geoshaping/valid_region.h"
 
@@ -19,9 +20,11 @@ namespace geoshaping
 struct FrameResult
 {
   bool ok = false;
-  std::string message;      // why the frame did nothing (when !ok)
-  std::size_t moved = 0;    // vertices displaced this frame, grasp included
-  std::size_t examined = 0; // candidates popped from the queue
+  std::string message;         // why the frame did nothing (when !ok)
+  std::size_t moved = 0;       // vertices displaced this frame, grasp included
+  std::size_t examined = 0;    // candidates popped from the queue
+  std::size_t blocked = 0;     // vertices an obstacle held back short of their target
+  double grasp_fraction = 1.0; // the part of the displacement the grasp moved (< 1: stopped)
 };
 
 // Builds adjacency and rest state once; each frame starts from the rest state, moves
@@ -60,6 +63,20 @@ struct FrameResult
 // - A pinned vertex never moves and never sponsors: propagation stops at it as at the
 //   border of the mesh and flows around it. Grasping a pinned vertex is refused.
 // - The grasped vertex moves to x0[g] + d whatever its malleability.
+// - Obstacles (set_obstacles, obstacles.h). Every move, the grasp's included, goes
+//   through one gate: a vertex whose target u would take it across an obstacle (or
+//   within the clearance) moves by f u instead, f = Obstacles::admissible_fraction of
+//   its segment x0 -> x0 + u, and still counts as moved: its neighbours are examined
+//   against where it stopped. Rigid regions stop as one: when the first vertex of a
+//   rigid component (rigid vertices joined by edges, pins left out) moves by u in a
+//   frame, f is the smallest admissible fraction of u over the whole component, and the
+//   component's displacement f u is admissible for each member (the admissible part of
+//   a segment is a prefix); its other members, sponsored inside the component, receive
+//   f u bit for bit and pass the gate unchanged. (A member reached with another
+//   displacement, under a queue that does not keep rigid regions whole, is gated alone.)
+//   Cost: O(log T) per move for T obstacle triangles, O(component) once per frame for
+//   a rigid component it enters; the components are found once per malleability, pins
+//   and transfer function (O(mesh)). Without obstacles the gate is one pointer test.
 //
 // Arithmetic is double, on displacements u = x - x0 of rest positions stored relative
 // to a local origin, so UTM-sized coordinates lose nothing and a rigid region's
@@ -124,6 +141,18 @@ public:
   // Shape of the valid region (valid_region.h): axes (default) or link.
   void set_valid_region_frame(ValidRegionFrame f) { frame_kind_ = f; }
   ValidRegionFrame valid_region_frame() const { return frame_kind_; }
+
+  // Obstacle triangles (obstacles.h) in the caller's frame, as set_mesh's points; stored
+  // relative to origin(). Cleared by set_mesh. Returns "" or why they are refused (then
+  // there are none).
+  std::string set_obstacles(
+    const double* xyz, std::size_t n, const std::int64_t* triangles, std::size_t num_triangles);
+  void clear_obstacles() { obstacles_.reset(); }
+  // Clearance (scene units, >= 0; false and unchanged otherwise); kept across
+  // set_obstacles.
+  bool set_obstacle_clearance(double c);
+  double obstacle_clearance() const { return clearance_; }
+  const Obstacles* obstacles() const { return obstacles_.get(); }
 
   // One frame. Invalid grasp, non-finite displacement or pinned grasp: ok == false,
   // the shape returns to rest.
@@ -249,6 +278,9 @@ private:
     const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const;
   void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,
     const SuperstepRoot& root = {});
+  // The obstacle gate of move() (see the class comment): d or the admissible part of it.
+  Eigen::Vector3d admissible(index_t inner_vertex, const Eigen::Vector3d& d);
+  void build_rigid_components();
 
   mutable std::shared_ptr<const Adjacency> caller_adjacency_; // built by adjacency()
   std::vector<std::uint32_t> offsets_; // internal CSR: rows in internal order, each row's
@@ -279,6 +311,18 @@ private:
   HeapPriorityQueue heap_;
   MaxViolationQueue violation_;
   SuperstepQueue supersteps_;
+  // Obstacles and the rigid components their gate moves as one (empty rigid_of_: not
+  // built yet; built on the first gated move).
+  std::shared_ptr<const Obstacles> obstacles_; // immutable: copies of the deformer share it
+  double clearance_ = 0.0;
+  std::vector<index_t> rigid_of_;          // by internal id: component, -1 soft or pinned
+  std::vector<std::uint32_t> rigid_first_; // CSR of the components' members (internal)
+  std::vector<index_t> rigid_members_;
+  std::vector<std::uint32_t> rigid_stamp_;  // == frame_: the component moved this frame
+  std::vector<Eigen::Vector3d> rigid_disp_; // by rigid_disp_[component]
+  std::vector<std::uint8_t> rank_rigid_;    // rigid per rank when the components were built
+  double last_fraction_ = 1.0;              // of the last gated move
+  std::size_t blocked_ = 0;
   std::uint32_t superstep_ = 0;     // the current superstep of the frame
   std::size_t superstep_begin_ = 0; // slot of its first move
 };

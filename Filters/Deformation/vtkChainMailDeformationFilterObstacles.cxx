@@ -1,0 +1,131 @@
+// The obstacles of input port 1 (docs/obstacles.md): triangulated once per obstacle
+// geometry and handed to the core (geoshaping/obstacles.h), which holds the rule.
+#include "vtkChainMailDeformationFilterInternals.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkPolyData.h"
+#include "vtkTriangleFilter.h"
+
+#include <cmath>
+
+int vtkChainMailDeformationFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+    return this->Superclass::FillInputPortInformation(port, info);
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+  return 1;
+}
+
+bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** inputVector)
+{
+  vtkInternals& state = *this->Internals;
+  const int count = inputVector[1]->GetNumberOfInformationObjects();
+  if (count == 0)
+  {
+    state.Deformer.clear_obstacles();
+    state.ObstacleSources.clear();
+    return true;
+  }
+  if (this->RefinementIterations > 0 || this->RelaxationIterations > 0)
+  {
+    // The passes do not know the obstacles: they could move a vertex through one.
+    vtkErrorMacro("Obstacles with RefinementIterations or RelaxationIterations above 0 are "
+                  "not supported (the passes could move a vertex through an obstacle); "
+                  "output is the undeformed input.");
+    return false;
+  }
+  if (!state.Deformer.set_obstacle_clearance(this->ObstacleClearance))
+  {
+    vtkErrorMacro("ObstacleClearance " << this->ObstacleClearance
+                                       << " is not a finite distance >= 0; output is the "
+                                          "undeformed input.");
+    return false;
+  }
+  std::vector<std::pair<vtkDataObject*, vtkMTimeType>> sources;
+  for (int i = 0; i < count; ++i)
+  {
+    vtkDataObject* data = vtkDataObject::GetData(inputVector[1], i);
+    sources.emplace_back(data, data ? data->GetMTime() : 0);
+  }
+  if (sources == state.ObstacleSources && state.Deformer.obstacles())
+    return true;
+  state.ObstacleSources.clear();
+  state.Deformer.clear_obstacles();
+
+  std::vector<double> xyz;
+  std::vector<std::int64_t> triangles;
+  for (int i = 0; i < count; ++i)
+  {
+    vtkDataSet* data = vtkDataSet::SafeDownCast(sources[std::size_t(i)].first);
+    if (!data)
+    {
+      vtkErrorMacro("Obstacle " << i << " is not a vtkDataSet; output is the undeformed input.");
+      return false;
+    }
+    vtkSmartPointer<vtkPolyData> surface = vtkPolyData::SafeDownCast(data);
+    if (!surface)
+    {
+      vtkNew<vtkDataSetSurfaceFilter> boundary;
+      boundary->SetInputData(data);
+      boundary->Update();
+      surface = boundary->GetOutput();
+    }
+    vtkIdType bad = 0;
+    double x[3];
+    for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
+    {
+      surface->GetPoint(p, x);
+      bad += !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]));
+    }
+    if (bad > 0)
+    {
+      vtkErrorMacro("Obstacle " << i << " (" << data->GetClassName() << ") has " << bad
+                                << " points with non-finite coordinates; output is the "
+                                   "undeformed input.");
+      return false;
+    }
+    vtkNew<vtkTriangleFilter> triangulate;
+    triangulate->SetInputData(surface);
+    triangulate->PassVertsOff();
+    triangulate->PassLinesOff();
+    triangulate->Update();
+    vtkPolyData* tris = triangulate->GetOutput();
+    if (tris->GetNumberOfPolys() == 0)
+    {
+      vtkErrorMacro("Obstacle " << i << " (" << data->GetClassName() << ", "
+                                << data->GetNumberOfCells()
+                                << " cells) has no triangles or polygons; output is the "
+                                   "undeformed input.");
+      return false;
+    }
+    const auto base = std::int64_t(xyz.size() / 3);
+    for (vtkIdType p = 0; p < tris->GetNumberOfPoints(); ++p)
+    {
+      tris->GetPoint(p, x);
+      xyz.insert(xyz.end(), { x[0], x[1], x[2] });
+    }
+    auto cells = vtk::TakeSmartPointer(tris->GetPolys()->NewIterator());
+    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+    {
+      vtkIdType npts;
+      const vtkIdType* pts;
+      cells->GetCurrentCell(npts, pts);
+      if (npts == 3)
+        triangles.insert(triangles.end(), { base + pts[0], base + pts[1], base + pts[2] });
+    }
+  }
+  const std::string error = state.Deformer.set_obstacles(
+    xyz.data(), xyz.size() / 3, triangles.data(), triangles.size() / 3);
+  if (!error.empty())
+  {
+    vtkErrorMacro("Obstacles refused: " << error << "; output is the undeformed input.");
+    return false;
+  }
+  state.ObstacleSources = std::move(sources);
+  return true;
+}

@@ -1,0 +1,204 @@
+// vtkChainMailDeformationFilter with obstacles on port 1 (docs/obstacles.md): paths
+// checked against planes computed here, polydata and unstructured grids on both ports,
+// and bad obstacles (an error, the input untouched).
+#include "vtkChainMailDeformationFilter.h"
+
+#include "vtk_test_meshes.h"
+
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTestErrorObserver.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace
+{
+using geoshaping::testing::TetSlabUnstructuredGrid;
+using geoshaping::testing::TriangleGridPolyData;
+
+// A triangle grid of n x n points mapped by (i, j) -> o + i du + j dv.
+vtkSmartPointer<vtkPolyData> Sheet(int n, const double o[3], const double du[3], const double dv[3])
+{
+  auto sheet = TriangleGridPolyData(n, n, 1.0, {});
+  vtkPoints* points = sheet->GetPoints();
+  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    points->GetPoint(p, x);
+    const double i = x[0], j = x[1];
+    points->SetPoint(
+      p, o[0] + i * du[0] + j * dv[0], o[1] + i * du[1] + j * dv[1], o[2] + i * du[2] + j * dv[2]);
+  }
+  return sheet;
+}
+
+vtkPointSet* Update(vtkChainMailDeformationFilter* f)
+{
+  f->Update();
+  return vtkPointSet::SafeDownCast(f->GetOutputDataObject(0));
+}
+} // namespace
+
+TEST(ChainMailObstacles, HorizonPulledDownStopsAboveTheLowerHorizon)
+{
+  // Horizon 21 x 21 at z = 0; lower horizon z = -3 over [-5, 25]^2 (one plane: a path
+  // crosses it exactly when it ends below z = -3, the horizon starting above).
+  auto horizon = TriangleGridPolyData(21, 21, 1.0, {});
+  const double o[3] = { -5, -5, -3 }, du[3] = { 1, 0, 0 }, dv[3] = { 0, 1, 0 };
+  auto lower = Sheet(31, o, du, dv);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputData(horizon);
+  f->SetGraspPointId(10 * 21 + 10);
+  f->SetDisplacement(0, 0, -10);
+  auto unobstructed = vtk::TakeSmartPointer(Update(f)->NewInstance());
+  unobstructed->DeepCopy(f->GetOutputDataObject(0));
+  EXPECT_FALSE(f->GetLastGraspBlocked());
+  EXPECT_EQ(f->GetLastGraspObstacleFraction(), 1.0);
+
+  f->AddObstacleData(lower);
+  EXPECT_EQ(f->GetNumberOfObstacleConnections(), 1);
+  vtkPointSet* out = Update(f);
+  EXPECT_TRUE(f->GetLastGraspBlocked());
+  EXPECT_NEAR(f->GetLastGraspObstacleFraction(), 0.3, 1e-8);
+  double lowest = 0.0, x[3];
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    out->GetPoint(p, x);
+    EXPECT_GT(x[2], -3.0) << p;
+    lowest = std::min(lowest, x[2]);
+  }
+  EXPECT_LT(lowest, -3.0 + 1e-6);
+  unobstructed->GetPoint(10 * 21 + 10, x);
+  EXPECT_EQ(x[2], -10.0);
+
+  // Disconnected: today's output bit for bit, and the obstacle's tree rebuilt only when
+  // the obstacle changes.
+  f->RemoveAllObstacleConnections();
+  out = Update(f);
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    double a[3], b[3];
+    out->GetPoint(p, a);
+    unobstructed->GetPoint(p, b);
+    ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << p;
+  }
+}
+
+TEST(ChainMailObstacles, TetrahedralSlabPushedIntoADippingFaultAndABlock)
+{
+  // Slab x, y in [0, 5], z in [0, 2]; fault x = 7 + 0.25 z (polydata); a block of
+  // tetrahedra (an unstructured grid obstacle: its boundary) at y in [8, 10].
+  auto slab = TetSlabUnstructuredGrid(6, 6, 3, 1.0, {});
+  const double o[3] = { 7 - 2.5, -5, -10 }, du[3] = { 0, 1, 0 }, dv[3] = { 0.25, 0, 1 };
+  auto fault = Sheet(21, o, du, dv);
+  auto block = TetSlabUnstructuredGrid(4, 4, 4, 1.0, {});
+  for (vtkIdType p = 0; p < block->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    block->GetPoint(p, x);
+    block->GetPoints()->SetPoint(p, x[0] + 1, x[1] + 8, x[2] - 0.5);
+  }
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputData(slab);
+  f->AddObstacleData(fault);
+  f->AddObstacleData(block);
+  struct Push
+  {
+    vtkIdType grasp;
+    std::array<double, 3> d;
+    double fraction;
+  };
+  // (5, 2, 1) toward the fault at x = 7.25; (2, 5, 1) toward the block's face y = 8.
+  for (const Push& push : { Push{ 1 * 36 + 2 * 6 + 5, { 6, 0, 0 }, 2.25 / 6 },
+         Push{ 1 * 36 + 5 * 6 + 2, { 0, 8, 0 }, 3.0 / 8 } })
+  {
+    f->SetGraspPointId(push.grasp);
+    f->SetDisplacement(push.d.data());
+    vtkPointSet* out = Update(f);
+    ASSERT_EQ(out->GetNumberOfPoints(), slab->GetNumberOfPoints());
+    EXPECT_TRUE(f->GetLastGraspBlocked());
+    EXPECT_NEAR(f->GetLastGraspObstacleFraction(), push.fraction, 1e-8);
+    EXPECT_LT(f->GetLastGraspObstacleFraction(), push.fraction);
+    for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+    {
+      double x[3], r[3];
+      out->GetPoint(p, x);
+      slab->GetPoint(p, r);
+      EXPECT_LT(x[0], 7.0 + 0.25 * x[2]) << p; // the fault, every point starting before it
+      // The block's near face y = 8 spans x in [1, 4], z in [-0.5, 2.5]; a path may end
+      // on it (touching is not crossing).
+      if (r[0] >= 1 && r[0] <= 4)
+        EXPECT_LE(x[1], 8.0) << p;
+    }
+  }
+}
+
+TEST(ChainMailObstacles, BadObstaclesAreRefusedAndTheInputIsUntouched)
+{
+  auto horizon = TriangleGridPolyData(6, 6, 1.0, {});
+  const double o[3] = { -1, -1, -1 }, du[3] = { 1, 0, 0 }, dv[3] = { 0, 1, 0 };
+  auto nan = Sheet(8, o, du, dv);
+  nan->GetPoints()->SetPoint(3, std::numeric_limits<double>::quiet_NaN(), 0, -1);
+  vtkNew<vtkPolyData> lines;
+  lines->SetPoints(Sheet(8, o, du, dv)->GetPoints());
+  vtkNew<vtkCellArray> cells;
+  const vtkIdType line[2] = { 0, 1 };
+  cells->InsertNextCell(2, line);
+  lines->SetLines(cells);
+  auto good = Sheet(8, o, du, dv);
+  struct Case
+  {
+    vtkPolyData* obstacle;
+    const char* says;
+  };
+  for (const Case& c : { Case{ nan, "non-finite" }, Case{ lines, "no triangles" } })
+  {
+    vtkNew<vtkChainMailDeformationFilter> f;
+    vtkNew<vtkTest::ErrorObserver> errors;
+    f->AddObserver(vtkCommand::ErrorEvent, errors);
+    f->SetInputData(horizon);
+    f->AddObstacleData(good);
+    f->AddObstacleData(c.obstacle);
+    f->SetGraspPointId(14);
+    f->SetDisplacement(0, 0, -3);
+    vtkPointSet* out = Update(f);
+    EXPECT_NE(errors->GetErrorMessage().find(c.says), std::string::npos)
+      << errors->GetErrorMessage();
+    for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+    {
+      double a[3], b[3];
+      out->GetPoint(p, a);
+      horizon->GetPoint(p, b);
+      ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << p;
+    }
+  }
+  // The passes do not know obstacles: refused; so is a NaN clearance.
+  for (const char* says : { "RefinementIterations", "ObstacleClearance" })
+  {
+    vtkNew<vtkChainMailDeformationFilter> f;
+    vtkNew<vtkTest::ErrorObserver> errors;
+    f->AddObserver(vtkCommand::ErrorEvent, errors);
+    f->SetInputData(horizon);
+    f->AddObstacleData(good);
+    if (std::string(says) == "RefinementIterations")
+      f->SetRefinementIterations(2);
+    else
+      f->SetObstacleClearance(std::numeric_limits<double>::quiet_NaN());
+    f->SetGraspPointId(14);
+    f->SetDisplacement(0, 0, -3);
+    vtkPointSet* out = Update(f);
+    EXPECT_NE(errors->GetErrorMessage().find(says), std::string::npos);
+    double x[3];
+    out->GetPoint(14, x);
+    EXPECT_EQ(x[2], 0.0);
+  }
+}
