@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The sanitizer job (issue 13 item 10), run by Testing/run-tests.sh after the Release
+# The sanitizer job, run by Testing/run-tests.sh after the Release
 # tests: a second, small build with AddressSanitizer + UndefinedBehaviorSanitizer
 # (-fno-sanitize-recover=all, leaks on) of the VTK-free core, the haptics layer, the two
 # readers (GeoShaping::IO, against ParaView's VTK) and their tests, and

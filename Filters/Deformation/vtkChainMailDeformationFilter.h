@@ -12,7 +12,7 @@
  * curves for stretch, compression and shear. `CandidateQueue` selects the order in
  * which candidates are examined: FIFO, Priority, FIFO Priority (default; deformation
  * flows through stiff regions before soft ones, so rigid regions keep their shape) or
- * Max Violation. See DESIGN.md section 4 and the core's chainmail_deformer.h.
+ * Max Violation. See docs/design.md (the deformation contract) and the core's chainmail_deformer.h.
  * `ValidRegionFrame` selects the shape of the valid region: Axes (default, the paper's
  * axis-aligned box) or Link (a cylinder aligned with the rest link: rotation invariant).
  *

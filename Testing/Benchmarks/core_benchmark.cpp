@@ -190,7 +190,7 @@ void BM_Relaxation(benchmark::State& state)
   state.SetLabel(target == 0 ? "fault step" : "painted grid");
 }
 
-// Arguments: displaced target. The envelope's time and its ratio to the frame (the issue 15
+// Arguments: displaced target. The envelope's time and its ratio to the frame (the
 // target: envelope + frame within 10x the frame), E_link after, vertices changed.
 void BM_Envelope(benchmark::State& state)
 {

@@ -1,5 +1,5 @@
 """Time and bytes per frame of ChainMailDeformation on ParaView's distributed engine
-(issue 14 items 4 and 6; docs/mpi.md records a run). Not a test: it asserts nothing
+(docs/mpi.md records a run). Not a test: it asserts nothing
 about time.
 
   mpiexec --oversubscribe -n N pvbatch --sym mpi_frame_benchmark.py [--sides 1000,4000]

@@ -1,7 +1,7 @@
-// The optimised ChainMailDeformer against a plain reference implementation of DESIGN.md
-// section 4 and docs/deformer.md, written for clarity: per-vertex std::vectors indexed
-// by the caller's ids, the transfer function evaluated per candidate, std:: containers
-// for the queues (FIFO and FIFO Priority: a std::map from (malleability, generation) to
+// The optimised ChainMailDeformer against a plain reference implementation of the
+// deformation contract (docs/design.md) and docs/deformer.md, written for clarity: per-vertex
+// std::vectors indexed by the caller's ids, the transfer function evaluated per candidate, std::
+// containers for the queues (FIFO and FIFO Priority: a std::map from (malleability, generation) to
 // the superstep's entries, sorted when the superstep starts). Every frame must agree
 // exactly: the same vertices moved in the same order, the same sponsors, bit-identical
 // displacements, the same number of candidates examined, for all four queues, across

@@ -108,7 +108,7 @@ TEST(DemSurface, BadGridsAndFailedProjectionsAreRefusedWithAReason)
   g = small_grid();
   g.y_first = 91.0;
   EXPECT_NE(std::string(validate(g, 1)).find("[-90, 90]"), std::string::npos);
-  // Finite bounds, infinite span (issue 13).
+  // Finite bounds, infinite span.
   g = small_grid();
   g.x_first = -1e308;
   g.x_last = 1e308;

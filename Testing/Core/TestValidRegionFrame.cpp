@@ -1,4 +1,4 @@
-// ValidRegionFrame::link (issue 15 item 1): the cylinder of valid_region.h, its exact
+// ValidRegionFrame::link: the cylinder of valid_region.h, its exact
 // projection, rigid exactness, analytic chains and cones in any orientation, and
 // rotation invariance of whole frames on a triangle horizon and a tetrahedral slab.
 #include "geoshaping/chainmail_deformer.h"

@@ -1,4 +1,4 @@
-"""Error figures of DESIGN.md section 6 computed from VTK data with numpy (demo only;
+"""Error figures (docs/design.md, Error against run time) computed from VTK data with numpy (demo only;
 the core's error_metrics.h is the reference implementation)."""
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy

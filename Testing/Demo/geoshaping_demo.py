@@ -196,7 +196,7 @@ def write_summary(out, scenes):
     lines = ["# GeoShaping demo summary", "",
              "Timings: `core` is the deformation in the core (median over the replayed "
              "frames); `update` is the whole pipeline update through the filter. Errors "
-             "follow DESIGN.md section 6 (E_rigid divided by the mean edge length; "
+             "follow docs/design.md, Error against run time (E_rigid divided by the mean edge length; "
              "E_temporal = max |X(d+delta) - X(d)|_inf / |delta| over the replay).", ""]
     for name, s in scenes.items():
         lines += ["## %s" % s["title"], "",

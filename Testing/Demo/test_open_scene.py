@@ -1,4 +1,4 @@
-"""open-in-paraview.sh's scene opens ready to drag (issue 11): the active source is the
+"""open-in-paraview.sh's scene opens ready to drag: the active source is the
 ChainMailDeformation of the surface that is shown, so the Haptics dock and the properties
 panel act on what the user sees. Runs open_scene.py in pvbatch, as paraview --script does."""
 import os

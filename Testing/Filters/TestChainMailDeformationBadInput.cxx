@@ -1,4 +1,4 @@
-// vtkChainMailDeformationFilter on bad input (issue 13 items 6-9): a clear error and the
+// vtkChainMailDeformationFilter on bad input: a clear error and the
 // input geometry, or a warning once per cause when a documented fall-back is used; never
 // an out-of-bounds read or a non-finite coordinate.
 #include "vtkChainMailDeformationFilter.h"

@@ -8,8 +8,8 @@ first vertices and their triangles are copied), the Jacksboro DEM of Debian's
 python-matplotlib-data (a 6 x 7 crop), the stylus traces in Data/. Those excerpts are
 rewritten only when their source is present; the rest is always written.
 
-Regression inputs (regression_*) are the findings of issue 13, items 1-4 (and the
-inputs of item 9 that concern the readers), as small files.
+Regression inputs (regression_*) are parser bugs found by review and fuzzing (and the
+bad-input tests' reader inputs), as small files.
 
     Testing/Fuzz/make_corpus.py [--cfm-dir DIR] [--jacksboro FILE]
 """
@@ -87,7 +87,7 @@ def dem(elevation, deflated=False, bounds=(-84.5, -84.4, 36.3, 36.2), extra=()):
 TWELVE = f8(*range(1, 13))
 ELEVATION_3X4 = npy("<f8", "False", "3, 4", TWELVE)
 
-# The .npy findings of issue 13 item 4: (file name, descr, fortran_order, shape, payload).
+# The .npy findings: (file name, descr, fortran_order, shape, payload).
 BAD_NPY = [
     ("regression_shape_product_overflows", "<f8", "False", "9223372036854775811, 4", TWELVE),
     ("regression_rows_beyond_int", "<f8", "False", "4294967299, 0", b""),
@@ -133,7 +133,7 @@ def npz_and_npy(jacksboro):
               dem(npy("<i2", "False", "6, 7", struct.pack("<42h", *crop)), deflated=True,
                   bounds=(lon(200), lon(206), lat(100), lat(105))))
 
-    # Regressions, issue 13 items 1, 3, 4 (the archive around the bad .npy).
+    # Regressions (the archive around the bad .npy).
     # 1: a 1 KB archive whose deflated entry claims 0xfffffffe bytes (zeroed 4 GB).
     write("npz", "regression_claims_4gb_uncompressed.npz",
           zip_archive([("elevation.npy", ELEVATION_3X4, True, 0xFFFFFFFE)]))
@@ -190,7 +190,7 @@ def tsurf(cfm_dir):
         "GOCAD PLine 1", "HEADER {name:skipped}", "VRTX 1 0 0 0", "END",
         "GOCAD TSurf 1", "HEADER {name:second}", "PROPERTIES Labels", "VRTX 1 5 5 5",
         "PVRTX 2 6 5 5 3", "PVRTX 3 5 6 5 4", "TRGL 1 2 3", "END", ""]))
-    # Regressions, issue 13 item 2 (scaled down): 64 properties of ESIZES 16, one PVRTX
+    # Regressions (scaled down): 64 properties of ESIZES 16, one PVRTX
     # giving them, then 200 VRTX lines padded with 1,024 NaN each (the finding: ESIZES
     # 1024 and 3,000 VRTX, 3.2 GB from 179 KB); and a property new to a second surface
     # padded on 1,000 earlier points.

@@ -2,7 +2,7 @@
 Haptics dock appears, a replayed stylus trace (Data/Traces/grasp_drag.trace) deforms the
 fault-step horizon through the dock's interactor, and the plugin's test hook writes a
 screenshot and figures. Checked here: the dock was shown, the grasped vertex moved by the
-trace's drag mapped through the camera (DESIGN.md section 7), the deformation spread to
+trace's drag mapped through the camera (docs/design.md, Haptics contract), the deformation spread to
 its neighbours, and the screenshot shows the red (malleability 0.4) surface."""
 import math
 import os

@@ -1,4 +1,4 @@
-"""Through the plugin's proxies (issue 13 items 5 and 9): pins are chosen, never guessed,
+"""Through the plugin's proxies: pins are chosen, never guessed,
 and lists whose length does not fit their records are reported, not cut silently."""
 from geoshaping_testing import check, load
 from paraview import servermanager as sm

@@ -1,4 +1,4 @@
-"""The black-body heat map is the default colouring of Malleability (issue 11): a plain
+"""The black-body heat map is the default colouring of Malleability: a plain
 Show of a painted surface, with nothing imported by hand, colours it with the plugin's
 preset over a fixed [0, 1] range whatever the data's range, and the scalar bar says which
 end is rigid and which soft. Another array keeps ParaView's default."""

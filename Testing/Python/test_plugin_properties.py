@@ -1,4 +1,4 @@
-"""The plugin loads in pvpython and exposes the public names of DESIGN.md section 5."""
+"""The plugin loads in pvpython and exposes the public names of docs/design.md (Public names)."""
 import numpy as np
 
 from geoshaping_testing import check, load
@@ -17,7 +17,7 @@ check(list(chain.StretchRange) == [1.0, 2.0], "default stretch range 1 -> 2")
 check(list(chain.CompressionRange) == [1.0, 0.5], "default compression range 1 -> 0.5")
 check(list(chain.ShearRange) == [0.0, 0.5], "default shear range 0 -> 0.5")
 check(chain.DefaultMalleability == 0.5, "default malleability 0.5")
-# ParaView 5.11's properties panel draws no widget for an IdTypeVectorProperty (issue 11).
+# ParaView 5.11's properties panel draws no widget for an IdTypeVectorProperty.
 check(chain.SMProxy.GetProperty("GraspPointId").IsA("vtkSMIntVectorProperty"),
       "GraspPointId is an IntVectorProperty, so the properties panel draws it")
 for queue in ["FIFO", "Priority", "FIFO Priority", "Max Violation"]:
@@ -48,7 +48,7 @@ disc = np.linalg.norm(points(plane)[:, :2] - [10.0, 10.0], axis=1) < 2.0
 check(np.allclose(moved[disc], [0.0, 0.0, 3.0]),
       "the painted rigid disc moves as one: the painted array was used")
 
-# The properties panel (issue 11): groups, ranges with domains, labelled table columns.
+# The properties panel: groups, ranges with domains, labelled table columns.
 sm_chain = fresh.SMProxy
 groups = {}
 for i in range(sm_chain.GetNumberOfPropertyGroups()):

@@ -269,7 +269,7 @@ void write_distributed(std::ostream& md, const std::vector<DistributedScene>& sc
     std::snprintf(b, sizeof b, f, x);
     return std::string(b);
   };
-  md << "## On distributed data (issue 14)\n\n"
+  md << "## On distributed data\n\n"
         "Each scene split into pieces with one ghost ring, as ParaView's distributed pipeline "
         "hands them to MPI ranks (slabs of equal width along x, and random owners), global ids "
         "= vertex ids; FIFO Priority run by the partitioned core (partitioned_chainmail.h) with "

@@ -1,5 +1,5 @@
 #pragma once
-// The report on distributed data (issue 14 item 5; docs/mpi.md): each scene split into
+// The report on distributed data (docs/mpi.md): each scene split into
 // 1-4 pieces with one ghost ring (slabs along x, and random owners), ChainMail run by the
 // partitioned core (partitioned_chainmail.h) with one thread per piece exchanging through
 // InProcessExchange (the stand-in for mpiexec -n pieces), every piece's owned

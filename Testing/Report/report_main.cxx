@@ -1,6 +1,6 @@
-// The error-against-run-time report (issues 5 and 15, DESIGN.md section 6): every variant
-// (queue x valid-region frame x refinement x relaxation, variants() below) on four scenes
-// with its Pareto front of E_link against run time, the paper's Table 1 with the BFS floor,
+// The error-against-run-time report (docs/design.md, Error against run time):
+// every variant (queue x valid-region frame x refinement x relaxation, variants() below) on four
+// scenes with its Pareto front of E_link against run time, the paper's Table 1 with the BFS floor,
 // memory per vertex, the CGAL ARAP peer at the fault step's and at the paper's scale, and every
 // scene on distributed data (split into 1-4 pieces, checked bit for bit against one process).
 // Writes CSVs, the per-vertex dumps behind the Figure 6 and 8 pictures, and report.md

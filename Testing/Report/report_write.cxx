@@ -229,7 +229,8 @@ void write_results(const Options& o, const Results& r)
      << " (1 / 5 / 15 min); all variants timed in the same run, median of 9 frames (one "
         "frame = ChainMail + the refinement pass; an ADMM frame never reuses the previous "
         "frame's factorisation). Errors are divided by the mean edge "
-        "length (DESIGN.md section 6, docs/error-metrics.md); `E_temporal` is over a drag "
+        "length (docs/design.md, Error against run time, docs/error-metrics.md); `E_temporal` is "
+        "over a drag "
         "of 24 small steps across the last quarter of the pull.\n\n"
      << (o.smoke ? "**Smoke run (--smoke): shrunken scenes, not the report's numbers.**\n\n" : "")
      << "## The front\n\nEvery variant: queue (FIFO, Priority, FIFO Priority, Max Violation) x "

@@ -41,7 +41,7 @@ struct Results
   Table1 table1;
   std::vector<PeerResult> peers;             // the fault step, the Table 1 grid at 29,241
   ScaleResult scale;                         // refinement at 29,241
-  std::vector<DistributedScene> distributed; // the scenes split into pieces (issue 14)
+  std::vector<DistributedScene> distributed; // the scenes split into pieces
   double seconds = 0.0;                      // the report's run time
 };
 

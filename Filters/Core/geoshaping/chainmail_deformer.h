@@ -28,7 +28,7 @@ struct FrameResult
 };
 
 // Builds adjacency and rest state once; each frame starts from the rest state, moves
-// the grasped vertex to x0[g] + d and propagates (DESIGN.md section 4):
+// the grasped vertex to x0[g] + d and propagates (the deformation contract, docs/design.md):
 //
 //   pop (c, s); skip c if it moved already this frame;
 //   box = valid region of c w.r.t. s from c's own (t, k, h);

@@ -1,5 +1,5 @@
 #pragma once
-// Error metrics of a deformed configuration (DESIGN.md section 6).
+// Error metrics of a deformed configuration (docs/design.md, Error against run time).
 #include "geoshaping/adjacency.h"
 #include "geoshaping/transfer_function.h"
 #include "geoshaping/valid_region.h"
@@ -101,7 +101,7 @@ ReferenceError reference_error(const LinkMesh& mesh, const Displacements& u,
   const Displacements& reference, const std::vector<index_t>& vertices);
 
 // Smoothness of a deformed triangle surface (the facets and saw-tooth "teeth" ChainMail
-// leaves, issue 15): for an interior edge e shared by exactly two triangles, theta_e(x) is
+// leaves): for an interior edge e shared by exactly two triangles, theta_e(x) is
 // the angle between their normals, atan2(|n_1 x n_2|, n_1 . n_2) in [0, pi] (0 where the
 // two are coplanar: the jump of the surface normal across e), and
 //   bend_e = | theta_e(x0 + u) - theta_e(x0) |,

@@ -1,6 +1,6 @@
 #pragma once
 // Projection of a configuration onto the set satisfying every ChainMail link: the
-// reference of E_ref and the optional refinement pass (DESIGN.md section 6).
+// reference of E_ref and the optional refinement pass (docs/design.md, Error against run time).
 #include "geoshaping/error_metrics.h"
 
 #include <cstdint>

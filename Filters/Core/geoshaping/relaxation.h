@@ -1,6 +1,6 @@
 #pragma once
 // Relaxation of a ChainMail result: constrained Laplacian fairing of the displaced soft
-// region (issue 15, "smooth results as an option"; docs/deformer.md, "Relaxation").
+// region ("smooth results as an option"; docs/deformer.md, "Relaxation").
 #include "geoshaping/error_metrics.h"
 
 #include <algorithm>

@@ -8,9 +8,9 @@
 namespace geoshaping
 {
 
-// How every reader of a stored malleability value takes it (DESIGN.md section 4): NaN
-// counts as rigid (0) and anything else is clamped to [0, 1] (+inf is soft, -inf rigid).
-// The one copy of the rule: the deformer, the error metrics, the paint filter and the
+// How every reader of a stored malleability value takes it (the deformation contract,
+// docs/design.md): NaN counts as rigid (0) and anything else is clamped to [0, 1] (+inf is soft,
+// -inf rigid). The one copy of the rule: the deformer, the error metrics, the paint filter and the
 // interactor's brush value all call it; callers that warn count the values it changed.
 inline double clean_malleability(double m)
 {
@@ -53,9 +53,9 @@ inline bool operator==(const Curve& a, const Curve& b)
          a.threshold == b.threshold && a.points == b.points;
 }
 
-// Defaults (DESIGN.md section 4): stretch 1 -> 2, compression 1 -> 0.5, shear 0 -> 0.5.
-// Malleability 0 yields exactly (1, 1, 0) unless `exact_rigid_at_zero` is false:
-// whatever the curves, m == 0 means rigid, the paper's black "frozen" paint.
+// Defaults (the deformation contract, docs/design.md): stretch 1 -> 2, compression 1 -> 0.5, shear
+// 0 -> 0.5. Malleability 0 yields exactly (1, 1, 0) unless `exact_rigid_at_zero` is false: whatever
+// the curves, m == 0 means rigid, the paper's black "frozen" paint.
 class TransferFunction
 {
 public:

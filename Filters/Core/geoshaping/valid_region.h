@@ -1,5 +1,5 @@
 #pragma once
-// The Generalized ChainMail valid region (DESIGN.md section 4).
+// The Generalized ChainMail valid region (the deformation contract, docs/design.md).
 #include "geoshaping/transfer_function.h"
 
 #include <Eigen/Core>
@@ -91,7 +91,7 @@ inline Box displacement_bounds(const Eigen::Vector3d& o, const ChainMailParams& 
   return displacement_bounds(o, region_params(p));
 }
 
-// The box of DESIGN.md section 4 in positions: x[s] + [lo, hi].
+// The box of the deformation contract (docs/design.md) in positions: x[s] + [lo, hi].
 inline Box valid_region(
   const Eigen::Vector3d& sponsor_position, const Eigen::Vector3d& o, const ChainMailParams& p)
 {

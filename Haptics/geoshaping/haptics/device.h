@@ -1,5 +1,6 @@
 #pragma once
-// The haptic device interface (DESIGN.md section 7), after CHAI3D's cGenericHapticDevice.
+// The haptic device interface (docs/design.md, Haptics contract), after CHAI3D's
+// cGenericHapticDevice.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 

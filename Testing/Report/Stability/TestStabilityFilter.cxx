@@ -1,5 +1,5 @@
 // Stability of vtkChainMailDeformationFilter on stiff, extreme and malformed input
-// (issue 5, docs/stability.md). Every case goes through stability::Run, which asserts
+// (docs/stability.md). Every case goes through stability::Run, which asserts
 // the input unmodified, nothing non-finite introduced and the ChainMail invariants.
 #include "StabilityHarness.h"
 
