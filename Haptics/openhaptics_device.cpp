@@ -6,6 +6,18 @@
 #include <cstdlib>
 #include <thread>
 
+// HD's error record, at global scope under HD's own name (hdDefines.h declares it so): a
+// pointer to libHD's hdGetError then has the very function type libHD defines. Under any
+// other name (geoshaping::haptics::hd::HDErrorInfo) the call through the dlsym'd pointer
+// is a call through an incompatible function type, which UBSan's -fsanitize=function
+// reports against the tests' fake libHD.
+struct HDErrorInfo
+{
+  unsigned int errorCode; // HDerror
+  int internalErrorCode;
+  unsigned int hHD; // HHD
+};
+
 namespace geoshaping::haptics
 {
 
@@ -20,12 +32,7 @@ using HDerror = unsigned int;
 using HDSchedulerHandle = unsigned long;
 using HDCallbackCode = unsigned int;
 using HDSchedulerCallback = HDCallbackCode (*)(void*);
-struct HDErrorInfo
-{
-  HDerror errorCode;
-  int internalErrorCode;
-  HHD hHD;
-};
+using HDErrorInfo = ::HDErrorInfo;
 
 constexpr HHD invalid_handle = 0xFFFFFFFF;
 constexpr HDerror success = 0x0000;
