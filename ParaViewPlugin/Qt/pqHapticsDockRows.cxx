@@ -4,7 +4,6 @@
 
 #include <QComboBox>
 #include <QFormLayout>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QLayout>
 
@@ -55,13 +54,12 @@ QWidget* pqHapticsPullRow(QWidget* parent, pqHapticsInteractor* interactor)
     "horizon pushed up or down through its thickness.\n"
     "Hold Shift while dragging for fine control: the point moves a tenth of the cursor's "
     "motion. The choice can change mid-pull; a stylus keeps its own workspace mapping.");
-  auto* hint = new QLabel("Shift: ×0.1", box);
+  auto* hint = new QLabel("Hold <b>Shift</b> while pulling for a tenth of the motion.", box);
   hint->setObjectName("PullHint");
+  hint->setWordWrap(true);
   hint->setToolTip(constraint->toolTip());
-  auto* row = new QHBoxLayout();
-  row->addWidget(constraint, 1);
-  row->addWidget(hint);
-  form->addRow("Pull", row);
+  form->addRow("Pull", constraint);
+  form->addRow(hint);
   QObject::connect(constraint, QOverload<int>::of(&QComboBox::currentIndexChanged), interactor,
     [interactor, constraint]()
     { interactor->setPullConstraint(PullConstraint(constraint->currentData().toInt())); });

@@ -5,8 +5,8 @@ class QWidget;
 class pqHapticsInteractor;
 
 // The "Pull" row: how a mouse pull moves the grasped point (PullControl.h), as a combo box
-// named "PullConstraint" that sets the interactor's constraint, with a reminder that
-// Shift makes the motion finer.
+// named "PullConstraint" that sets the interactor's constraint, and a line under it that
+// says Shift makes the motion finer.
 QWidget* pqHapticsPullRow(QWidget* parent, pqHapticsInteractor* interactor);
 
 // Gives every label of a form row under `root` the tooltip of its field (the field's own,

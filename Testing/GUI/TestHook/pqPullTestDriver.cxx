@@ -98,7 +98,10 @@ bool pqPullTestDriver::begin(const Pull& pull)
   }
   pqActiveObjects::instance().setActiveSource(target);
   auto* combo = this->Dock->findChild<QComboBox*>("PullConstraint");
-  this->Results += QString("pull_row = %1\n").arg(combo ? 1 : 0);
+  if (this->Index == 0)
+  {
+    this->Results += QString("pull_row = %1\n").arg(combo ? 1 : 0);
+  }
   if (combo)
   {
     combo->setCurrentIndex(pull.vertical ? 1 : 0);
@@ -120,7 +123,7 @@ bool pqPullTestDriver::begin(const Pull& pull)
   vtkSMPropertyHelper(proxy, "CameraParallelProjection").Set(pull.camera == 1 ? 1 : 0);
   vtkSMPropertyHelper(proxy, "CameraParallelScale").Set(0.4 * size);
   proxy->UpdateVTKObjects();
-  view->render();
+  view->forceRender();
   return true;
 }
 
@@ -154,7 +157,7 @@ bool pqPullTestDriver::step()
   {
     this->begin(pull);
   }
-  else if (step == 2)
+  else if (step == 1)
   {
     // Press where a vertex of the surface shows, near the middle of the view: the vertex
     // nearest to the surface point under (45 %, 50 %) of the view.
@@ -177,28 +180,30 @@ bool pqPullTestDriver::step()
     interactor->SetEventInformation(this->Press[0], this->Press[1], 0, pull.shift ? 1 : 0);
     interactor->InvokeEvent(vtkCommand::LeftButtonPressEvent);
   }
-  else if (step >= 4 && step < 4 + Steps)
+  if (step >= 1 && step <= Steps)
   {
-    const int k = step - 3;
+    // The first motion comes with the press, before the interactor's next frame, as a
+    // quick hand does it on a slow view.
+    const int k = step;
     this->Cursor[0] = this->Press[0] + MotionX * k / Steps;
     this->Cursor[1] = this->Press[1] + MotionY * k / Steps;
     interactor->SetEventInformation(this->Cursor[0], this->Cursor[1], 0, pull.shift ? 1 : 0);
     interactor->InvokeEvent(vtkCommand::MouseMoveEvent);
   }
-  else if (step == 6 + Steps)
+  else if (step == 3 + Steps)
   {
     this->measure(pull);
   }
-  else if (step == 7 + Steps)
+  else if (step == 4 + Steps)
   {
     interactor->SetEventInformation(this->Cursor[0], this->Cursor[1], 0, 0);
     interactor->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
   }
-  else if (step == 9 + Steps)
+  else if (step == 5 + Steps)
   {
     this->Dock->interactor()->runEdit(geoshaping::interactor::EditCommand::reset);
   }
-  else if (step == 10 + Steps)
+  else if (step == 7 + Steps)
   {
     this->Step = 0;
     return ++this->Index == count;
