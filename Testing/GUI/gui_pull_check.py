@@ -36,6 +36,7 @@ def check_pull(results):
         assert error <= PIXEL, "%s: the grasped vertex is %.3f px from the cursor" % (name, error)
         assert norm([a - b for a, b in zip(d, motion)]) <= 1e-6 * norm(motion), (name, d, motion)
     assert results["pull_row"] == "1", "the dock has no Pull row (PullConstraint)"
+    assert results["labels_without_tooltip"] == "", results["labels_without_tooltip"]
     free = vector(results, "pull_km_perspective_displacement")
     fine = vector(results, "pull_km_perspective_shift_displacement")
     print("Shift: displacement / free displacement =", norm(fine) / norm(free))

@@ -18,6 +18,8 @@
 #include <vtkSMRenderViewProxy.h>
 
 #include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
 #include <QPixmap>
 #include <QTextStream>
 
@@ -101,6 +103,21 @@ bool pqPullTestDriver::begin(const Pull& pull)
   if (this->Index == 0)
   {
     this->Results += QString("pull_row = %1\n").arg(combo ? 1 : 0);
+    // Every row label of the dock says what its control does, as the control does.
+    QStringList bare;
+    for (QFormLayout* form : this->Dock->findChildren<QFormLayout*>())
+    {
+      for (int row = 0; row < form->rowCount(); ++row)
+      {
+        QLayoutItem* item = form->itemAt(row, QFormLayout::LabelRole);
+        auto* label = item ? qobject_cast<QLabel*>(item->widget()) : nullptr;
+        if (label && label->toolTip().isEmpty())
+        {
+          bare << label->text();
+        }
+      }
+    }
+    this->Results += QString("labels_without_tooltip = %1\n").arg(bare.join(" | "));
   }
   if (combo)
   {
