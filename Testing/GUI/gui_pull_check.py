@@ -18,9 +18,10 @@ def check_pull(results):
     """Free pulls: the grasped vertex shows within a pixel of the cursor after the drag, and
     its displacement is the cursor's motion on the plane through it parallel to the view
     (whatever the scale: 1 or 1,000 km). Shift: a tenth of the same pull. Vertical (the
-    dock's Pull row): x and y kept, the vertex shows at the cursor's foot on the vertical."""
+    dock's Pull row): x and y kept, the vertex shows at the cursor's foot on the vertical.
+    Normal: along the surface's normal at the grasp."""
     print("pull                  error px  offset at press px  |displacement|  data size")
-    for name in FREE + ("km_perspective_shift", "km_parallel_vertical"):
+    for name in FREE + ("km_perspective_shift", "km_parallel_vertical", "unit_parallel_normal"):
         key = "pull_%s_" % name
         assert results.get(key + "grasp", "none") != "none", (name, results)
         offset = [a - b for a, b in zip(vector(results, key + "vertex_px_at_press"),
@@ -47,3 +48,12 @@ def check_pull(results):
           % results[key + "error_to_vertical_px"])
     assert abs(d[0]) <= 1e-9 * norm(d) and abs(d[1]) <= 1e-9 * norm(d) and d[2] > 0, d
     assert float(results[key + "error_to_vertical_px"]) <= PIXEL, results
+    key = "pull_unit_parallel_normal_"
+    d, n = vector(results, key + "displacement"), vector(results, key + "view_normal")
+    surface = vector(results, key + "surface_normal")
+    cross = [d[1] * n[2] - d[2] * n[1], d[2] * n[0] - d[0] * n[2], d[0] * n[1] - d[1] * n[0]]
+    angle = math.degrees(math.acos(min(1.0, abs(sum(a * b for a, b in zip(n, surface))) / norm(n))))
+    print("normal: displacement", d, "normal at the press", n, "%.2f deg from the surface's"
+          % angle)
+    assert norm(d) > 0 and norm(cross) <= 1e-9 * norm(d) * norm(n), (d, n)
+    assert angle < 1.0, (n, surface)

@@ -10,8 +10,12 @@
 #include <pqServerManagerModel.h>
 
 #include <vtkAlgorithm.h>
+#include <vtkCell.h>
 #include <vtkCommand.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
 #include <vtkPointSet.h>
+#include <vtkPolygon.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSMPropertyHelper.h>
@@ -121,7 +125,7 @@ bool pqPullTestDriver::begin(const Pull& pull)
   }
   if (combo)
   {
-    combo->setCurrentIndex(pull.vertical ? 1 : 0);
+    combo->setCurrentIndex(pull.constraint);
   }
   // The cameras follow the data's bounds, so both scales are seen alike.
   double b[6];
@@ -147,12 +151,13 @@ bool pqPullTestDriver::begin(const Pull& pull)
 bool pqPullTestDriver::step()
 {
   static const Pull pulls[] = {
-    { "unit_perspective", Unit, 0, false, false },
-    { "unit_parallel", Unit, 1, false, false },
-    { "km_perspective", Large, 0, false, false },
-    { "km_parallel", Large, 1, false, false },
-    { "km_perspective_shift", Large, 0, true, false },
-    { "km_parallel_vertical", Large, 1, false, true },
+    { "unit_perspective", Unit, 0, false, 0 },
+    { "unit_parallel", Unit, 1, false, 0 },
+    { "km_perspective", Large, 0, false, 0 },
+    { "km_parallel", Large, 1, false, 0 },
+    { "km_perspective_shift", Large, 0, true, 0 },
+    { "km_parallel_vertical", Large, 1, false, 1 },
+    { "unit_parallel_normal", Unit, 1, false, 2 },
   };
   const int count = int(sizeof(pulls) / sizeof(pulls[0]));
   if (this->Index >= count)
@@ -194,6 +199,11 @@ bool pqPullTestDriver::step()
     const Eigen::Vector3d pixel = toDisplay(viewProxy->GetRenderer(), vertex);
     this->Press[0] = this->Cursor[0] = int(std::lround(pixel.x()));
     this->Press[1] = this->Cursor[1] = int(std::lround(pixel.y()));
+    this->Normal.setZero();
+    if (viewProxy->ConvertDisplayToPointOnSurface(this->Press, p, n))
+    {
+      this->Normal = Eigen::Vector3d(n[0], n[1], n[2]);
+    }
     interactor->SetEventInformation(this->Press[0], this->Press[1], 0, pull.shift ? 1 : 0);
     interactor->InvokeEvent(vtkCommand::LeftButtonPressEvent);
   }
@@ -267,7 +277,24 @@ void pqPullTestDriver::measure(const Pull& pull)
   out << key << "cursor_motion = " << text(motion) << "\n";
   out << key << "data_size = " << Eigen::Vector3d(b[1] - b[0], b[3] - b[2], b[5] - b[4]).norm()
       << "\n";
-  if (pull.vertical)
+  if (pull.constraint == 2)
+  {
+    // The view's normal at the press against the surface's: the mean of the normals of
+    // the cells around the grasped vertex.
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    vtkNew<vtkIdList> cells;
+    rest->GetPointCells(id, cells);
+    for (vtkIdType c = 0; c < cells->GetNumberOfIds(); ++c)
+    {
+      vtkCell* cell = rest->GetCell(cells->GetId(c));
+      Eigen::Vector3d normal;
+      vtkPolygon::ComputeNormal(cell->GetPoints(), normal.data());
+      mean += normal.dot(this->Normal) < 0.0 ? -normal : normal;
+    }
+    out << key << "view_normal = " << text(this->Normal) << "\n";
+    out << key << "surface_normal = " << text(mean.normalized()) << "\n";
+  }
+  if (pull.constraint == 1)
   {
     // The cursor's foot on the image of the vertical through the vertex.
     const Eigen::Vector2d g = image0.head<2>();

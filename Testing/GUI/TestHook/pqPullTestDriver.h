@@ -4,8 +4,9 @@
 // under two cameras, one step per call, each measured against the cursor: the grasped
 // vertex's image (vtkRenderer::WorldToDisplay) against the cursor's pixel, and its
 // displacement against the cursor's motion carried onto the plane through it parallel
-// to the view. Also a pull with Shift held, and one with the dock's Pull row on
-// "Vertical only". Writes one view screenshot per pull, while it is held.
+// to the view. Also a pull with Shift held, and pulls with the dock's Pull row on
+// "Vertical only" and "Along the surface normal". Writes one view screenshot per pull, while it is
+// held.
 #include <QString>
 
 #include <Eigen/Core>
@@ -28,7 +29,7 @@ private:
     const char* source;
     int camera; // 0: perspective from the south-west, 1: parallel from the south-east
     bool shift;
-    bool vertical;
+    int constraint; // the Pull row's entry: 0 follow the cursor, 1 vertical, 2 normal
   };
   bool begin(const Pull& pull);
   void measure(const Pull& pull);
@@ -40,4 +41,5 @@ private:
   int Step = 0;
   int Press[2] = { 0, 0 };
   int Cursor[2] = { 0, 0 };
+  Eigen::Vector3d Normal = Eigen::Vector3d::Zero(); // the view's, at the press
 };
