@@ -1,5 +1,7 @@
 #include "pqHapticsDockPanel.h"
 
+#include "pqHapticsDockRows.h"
+
 #include "geoshaping/brush.h"
 #include "geoshaping/haptics/openhaptics_device.h"
 
@@ -61,6 +63,7 @@ void pqHapticsDockPanel::build()
   auto* layout = new QVBoxLayout(body);
   layout->addWidget(this->buildHand(0));
   layout->addWidget(this->buildHand(1));
+  layout->addWidget(pqHapticsPullRow(body, this->Interactor));
   auto* help = new QLabel("<b>Mouse</b>: left-drag the surface to pull it; <b>Ctrl</b>+left-drag "
                           "paints. <b>Stylus</b>: hold the button to use the hand's tool. "
                           "A release commits (Alt+Z undoes).",
@@ -105,6 +108,10 @@ void pqHapticsDockPanel::build()
   this->Figures = new QLabel("frame — fps · deformation — ms", body);
   this->Figures->setObjectName("Figures");
   this->Figures->setWordWrap(true);
+  this->Figures->setToolTip(
+    "Per hand: its servo loop's rate in updates per second (a force-feedback device), or "
+    "\"mouse\". Then the view's frames per second, the time of the last deformation in "
+    "milliseconds, and how many vertices it moved.");
   layout->addWidget(this->Figures);
   this->Status = new QLabel(body);
   this->Status->setWordWrap(true);
@@ -118,6 +125,7 @@ void pqHapticsDockPanel::build()
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   scroll->setWidget(body);
   this->setWidget(scroll);
+  pqHapticsTipLabels(body);
 
   QObject::connect(this->StartStop, &QPushButton::clicked, this, &pqHapticsDockPanel::onStartStop);
   QObject::connect(this->Radius, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
@@ -146,8 +154,13 @@ QWidget* pqHapticsDockPanel::buildHand(int hand)
   }
   w.device->addItem("Mouse", Kind::Mouse);
   w.device->setCurrentIndex(w.device->findData(hand == 0 ? Kind::Mouse : Kind::NoDevice));
+  w.device->setToolTip("What moves this hand: the mouse (drag on the surface), a haptic "
+                       "stylus (OpenHaptics), a simulated stylus, or a recorded stylus trace "
+                       "replayed from a file.");
   w.file = new QLineEdit(box);
   w.file->setPlaceholderText("trace file (t x y z qw qx qy qz buttons)");
+  w.file->setToolTip("Replay file: the recorded stylus trace to play back. Simulated: its "
+                     "keyframes (empty: a circle).");
   auto* browse = new QToolButton(box);
   browse->setText("…");
   auto* fileRow = new QHBoxLayout();
@@ -158,6 +171,10 @@ QWidget* pqHapticsDockPanel::buildHand(int hand)
   w.tool->addItem("Deform", int(interactor::Tool::deform));
   w.tool->addItem("Hold and turn", int(interactor::Tool::hold_and_turn));
   w.tool->setCurrentIndex(hand == 0 ? 1 : 2);
+  w.tool->setToolTip("What the hand does while its button is held. Paint: set how malleable "
+                     "the surface is under the brush. Deform: grasp the nearest vertex and "
+                     "pull the surface with it. Hold and turn: move and turn the whole "
+                     "surface in the view.");
   form->addRow(QString("<b>Hand %1</b> device").arg(hand + 1), w.device);
   form->addRow("Trace", fileRow);
   form->addRow("Tool", w.tool);
@@ -187,7 +204,10 @@ QWidget* pqHapticsDockPanel::buildPalette()
   auto* grid = new QGridLayout(box);
   grid->setContentsMargins(0, 0, 0, 0);
   grid->setSpacing(2);
-  grid->addWidget(new QLabel("Malleability (rigid → soft)", box), 0, 0, 1, 11);
+  auto* title = new QLabel("Malleability (rigid → soft)", box);
+  title->setToolTip("The value a brush paints: 0 (black) rigid, moves as one block; 1 (white) "
+                    "soft, bends sharply; red and yellow between bend gradually.");
+  grid->addWidget(title, 0, 0, 1, 11);
   for (int i = 0; i <= 10; ++i)
   {
     const double value = i / 10.0;

@@ -215,7 +215,9 @@ bool pqHapticsInteractor::stylusOf(
 {
   if (hand.kind == Mouse)
   {
-    world = hand.mouse.state();
+    const Eigen::Matrix3d turn = this->Proxies.objectMatrix().topLeftCorner<3, 3>();
+    world = hand.mouse.stylus(
+      hand.controller.held(), this->Pull, (turn * Eigen::Vector3d::UnitZ()).normalized());
     return true;
   }
   hand.servo->poll_device(hand.latest);
@@ -241,6 +243,11 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
     // A builtin session reads the grasped vertex's malleability at once; against a
     // remote server the filter reports it after its next update (publishScene).
     hand.stiffnessPending = !this->Proxies.graspedVertex(vertex, malleability);
+    Eigen::Vector3d shown;
+    if (hand.kind == Mouse && this->Proxies.shownGraspedVertex(shown))
+    {
+      hand.mouse.setGrasp((this->Proxies.objectMatrix() * shown.homogeneous()).hnormalized());
+    }
     if (hand.device)
     {
       const Eigen::Vector3d world =

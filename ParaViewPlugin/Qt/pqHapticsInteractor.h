@@ -6,6 +6,7 @@
 // scene snapshot (grasp anchor, stiffness) back to the servo loop for the force.
 // After ParaView's CAVEInteraction plugin: device thread -> snapshot -> QTimer.
 #include "HapticsControl.h"
+#include "PullControl.h"
 #include "geoshaping/haptics/force_model.h"
 #include "pqHapticsProxies.h"
 
@@ -73,6 +74,9 @@ public:
   void setTool(int hand, geoshaping::interactor::Tool tool);
   void setBrush(const geoshaping::interactor::Brush& brush) { this->Brush = brush; }
   const geoshaping::interactor::Brush& brush() const { return this->Brush; }
+  // How a mouse pull moves the grasp (PullControl.h); can change mid-pull.
+  void setPullConstraint(geoshaping::interactor::PullConstraint c) { this->Pull = c; }
+  geoshaping::interactor::PullConstraint pullConstraint() const { return this->Pull; }
   const Figures& figures() const { return this->Stats; }
   // True when every device hand replays a trace and all of them are over.
   bool replaysFinished() const;
@@ -119,6 +123,7 @@ private:
   pqHapticsProxies Proxies;
   QTimer Timer;
   geoshaping::interactor::Brush Brush;
+  geoshaping::interactor::PullConstraint Pull = geoshaping::interactor::PullConstraint::view_plane;
   Figures Stats;
   Eigen::Vector3d LastDisplacement = Eigen::Vector3d::Zero();
   Eigen::Matrix4d HoldStart = Eigen::Matrix4d::Identity();

@@ -42,36 +42,58 @@ void pqHapticsMouse::attach(vtkSMRenderViewProxy* view)
     vtkCommand::LeftButtonReleaseEvent, this, &pqHapticsMouse::onEvent, priority);
 }
 
-bool pqHapticsMouse::pointOnSurface(const int display[2], Eigen::Vector3d& world) const
+namespace
 {
-  double p[3], normal[3];
-  if (!this->View || !this->View->ConvertDisplayToPointOnSurface(display, p, normal))
+// vtkRenderer's own display <-> world conversions (those of ParaView's widgets).
+class RendererProjection : public geoshaping::interactor::ViewProjection
+{
+public:
+  explicit RendererProjection(vtkRenderer* renderer)
+    : Renderer(renderer)
+  {
+  }
+  Eigen::Vector3d to_display(const Eigen::Vector3d& world) const override
+  {
+    this->Renderer->SetWorldPoint(world.x(), world.y(), world.z(), 1.0);
+    this->Renderer->WorldToDisplay();
+    return Eigen::Map<const Eigen::Vector3d>(this->Renderer->GetDisplayPoint());
+  }
+  Eigen::Vector3d to_world(const Eigen::Vector3d& display) const override
+  {
+    this->Renderer->SetDisplayPoint(display.data());
+    this->Renderer->DisplayToWorld();
+    const double* w = this->Renderer->GetWorldPoint();
+    return Eigen::Vector3d(w[0], w[1], w[2]) / w[3];
+  }
+
+private:
+  vtkRenderer* Renderer;
+};
+}
+
+bool pqHapticsMouse::pointOnSurface(
+  const int display[2], Eigen::Vector3d& world, Eigen::Vector3d& normal) const
+{
+  double p[3], n[3];
+  if (!this->View || !this->View->ConvertDisplayToPointOnSurface(display, p, n))
   {
     return false;
   }
   world = Eigen::Vector3d(p[0], p[1], p[2]);
+  normal = Eigen::Vector3d(n[0], n[1], n[2]);
   return world.allFinite();
 }
 
-Eigen::Vector3d pqHapticsMouse::pointOnDragPlane(const int display[2]) const
+geoshaping::interactor::StylusState pqHapticsMouse::stylus(bool pressSeen,
+  geoshaping::interactor::PullConstraint constraint, const Eigen::Vector3d& up) const
 {
+  geoshaping::interactor::StylusState s = this->State;
   vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
-  if (!renderer)
+  if (s.button && !this->Paint && pressSeen && renderer)
   {
-    return this->State.position;
+    s.position += this->Pull.displacement(RendererProjection(renderer), constraint, up);
   }
-  const Eigen::Vector3d& anchor = this->State.position;
-  renderer->SetWorldPoint(anchor.x(), anchor.y(), anchor.z(), 1.0);
-  renderer->WorldToDisplay();
-  const double depth = renderer->GetDisplayPoint()[2];
-  renderer->SetDisplayPoint(display[0], display[1], depth);
-  renderer->DisplayToWorld();
-  const double* w = renderer->GetWorldPoint();
-  if (w[3] == 0.0)
-  {
-    return anchor;
-  }
-  return Eigen::Vector3d(w[0] / w[3], w[1] / w[3], w[2] / w[3]);
+  return s;
 }
 
 bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
@@ -85,23 +107,24 @@ bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
   bool consumed = false;
   if (event == vtkCommand::LeftButtonPressEvent)
   {
-    Eigen::Vector3d world;
-    if (this->pointOnSurface(display, world))
+    Eigen::Vector3d world, normal;
+    if (this->pointOnSurface(display, world, normal))
     {
       this->State.position = world;
       this->State.button = true;
       this->Paint = interactor->GetControlKey() != 0;
+      this->Pull.press(Eigen::Vector2d(display[0], display[1]), world, normal);
       consumed = true;
     }
   }
   else if (event == vtkCommand::MouseMoveEvent && this->State.button)
   {
-    Eigen::Vector3d world;
+    Eigen::Vector3d world, normal;
     if (!this->Paint)
     {
-      this->State.position = this->pointOnDragPlane(display);
+      this->Pull.move(Eigen::Vector2d(display[0], display[1]), interactor->GetShiftKey() != 0);
     }
-    else if (this->pointOnSurface(display, world))
+    else if (this->pointOnSurface(display, world, normal))
     {
       this->State.position = world;
     }

@@ -2,9 +2,12 @@
 // The mouse as a stylus, for users without a device: a left-button drag that starts on
 // the surface of the render view is taken from the camera (an observer on the view's
 // interactor, ahead of the interactor style) and becomes a stylus held down. The drag
-// moves in the plane through the pressed point parallel to the screen; with Ctrl held
-// at the press the hand paints instead of deforming, and the stylus follows the surface.
+// pulls the grasp with the cursor (PullControl: in the plane through the grasp parallel
+// to the screen, or along the vertical or the surface normal; Shift held: a tenth of the
+// motion); with Ctrl held at the press the hand paints instead, and the stylus follows
+// the surface.
 #include "HapticsControl.h"
+#include "PullControl.h"
 
 #include <vtkWeakPointer.h>
 
@@ -18,18 +21,25 @@ public:
   // Observes `view`'s interactor (nullptr: stops observing).
   void attach(vtkSMRenderViewProxy* view);
 
-  // World coordinates. `paint` is true for a drag that began with Ctrl held.
-  const geoshaping::interactor::StylusState& state() const { return this->State; }
+  // The stylus this frame, world coordinates: the pressed point until the hand has seen
+  // the press (`pressSeen`), then the pressed point plus the pull's displacement, seen
+  // through the view's current camera; `up` is the scene's vertical. Painting: the point
+  // of the surface under the cursor.
+  geoshaping::interactor::StylusState stylus(bool pressSeen,
+    geoshaping::interactor::PullConstraint constraint, const Eigen::Vector3d& up) const;
+  // The grasped vertex (world): the pull's plane and lines go through it.
+  void setGrasp(const Eigen::Vector3d& world) { this->Pull.set_grasp(world); }
+  // `paint` is true for a drag that began with Ctrl held.
   bool paint() const { return this->Paint; }
 
 private:
   bool onEvent(vtkObject* caller, unsigned long event, void*);
-  bool pointOnSurface(const int display[2], Eigen::Vector3d& world) const;
-  Eigen::Vector3d pointOnDragPlane(const int display[2]) const;
+  bool pointOnSurface(const int display[2], Eigen::Vector3d& world, Eigen::Vector3d& normal) const;
 
   vtkWeakPointer<vtkSMRenderViewProxy> View;
   vtkWeakPointer<vtkObject> Interactor;
   unsigned long Observers[3] = { 0, 0, 0 };
-  geoshaping::interactor::StylusState State;
+  geoshaping::interactor::StylusState State; // the pressed point, or the painting point
+  geoshaping::interactor::PullControl Pull;
   bool Paint = false;
 };

@@ -517,6 +517,23 @@ bool pqHapticsProxies::graspedVertex(Eigen::Vector3d& position, double& malleabi
   return true;
 }
 
+bool pqHapticsProxies::shownGraspedVertex(Eigen::Vector3d& position) const
+{
+  vtkPointSet* shown = this->shownSurface();
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (!shown || !proxy || vtkSMPropertyHelper(proxy, "GraspMode").GetAsInt() != 0)
+  {
+    return false;
+  }
+  const vtkIdType id = vtkSMPropertyHelper(proxy, "GraspPointId").GetAsIdType();
+  if (id < 0 || id >= shown->GetNumberOfPoints())
+  {
+    return false;
+  }
+  shown->GetPoint(id, position.data());
+  return true;
+}
+
 bool pqHapticsProxies::lastGraspMalleability(double& malleability) const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;

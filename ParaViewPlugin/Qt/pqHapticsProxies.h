@@ -71,6 +71,9 @@ public:
   // The grasped vertex's rest position and malleability (builtin sessions read the
   // filter's input; otherwise the press position and DefaultMalleability).
   bool graspedVertex(Eigen::Vector3d& position, double& malleability) const;
+  // The grasped vertex (GraspPointId) as the view shows it, data coordinates: the
+  // deformation's client-side output (builtin sessions); false otherwise.
+  bool shownGraspedVertex(Eigen::Vector3d& position) const;
 
   // Contact triangles for the haptic force (docs/interactor.md, Forces): the triangles of
   // the surfaces shown in the view within the box of half-size `radius` around `world`

@@ -14,6 +14,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_setup_camera import CAMERA  # noqa: E402
+from gui_pull_check import check_pull  # noqa: E402
 # Mode "replay": GEOSHAPING_HAPTICS_REPLAY is the trace; mode "mouse": the plugin's test
 # hook drags the mouse itself (GEOSHAPING_HAPTICS_REPLAY=mouse); mode "openhaptics": hand 1
 # is OpenHaptics on the fake HD library, which the hook faults.
@@ -307,11 +308,14 @@ def main():
         env["GEOSHAPING_HAPTICS_REPLAY"] = out + ".trace"
         env["GEOSHAPING_HAPTICS_TOOL1"] = "hold_and_turn"
         write_turn_trace(out + ".trace")
+    setup = os.environ["GEOSHAPING_GUI_SETUP"]
+    if mode == "pull":
+        setup = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_setup_pull.py")
     if mode == "bimanual":
         env["GEOSHAPING_HAPTICS_REPLAY2"] = out + ".hand2.trace"
         write_paint_trace(out + ".hand2.trace")
     command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24 -noreset", os.environ["PARAVIEW"],
-               "--dr", "--script=" + os.environ["GEOSHAPING_GUI_SETUP"]]
+               "--dr", "--script=" + setup]
     run = subprocess.run(command, env=env, timeout=90, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True)
     print(run.stdout[-4000:])
@@ -325,6 +329,10 @@ def main():
         check_openhaptics_fault(results)
         check_recording(results, out, None)
         print("GUI OpenHaptics fault test passed")
+        return
+    if mode == "pull":
+        check_pull(results)
+        print("GUI pull test passed; screenshots:", out + "-*.png")
         return
     if mode == "turn":
         check_turn(results)

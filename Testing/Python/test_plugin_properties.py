@@ -55,7 +55,7 @@ for i in range(sm_chain.GetNumberOfPropertyGroups()):
     group = sm_chain.GetPropertyGroup(i)
     groups[group.GetXMLLabel()] = [sm_chain.GetPropertyName(group.GetProperty(k))
                                    for k in range(group.GetNumberOfProperties())]
-check(list(groups) == ["Malleability", "Grasp", "Queue and transfer", "Pins", "Refinement",
+check(list(groups) == ["Malleability", "Grasp", "How the pull spreads", "Pins", "Refinement",
                        "Obstacles", "Editing", "Diagnostics"],
       "ChainMailDeformation's groups: %s" % list(groups))
 check(groups["Obstacles"] == ["Obstacles", "ObstacleClearance"],
@@ -66,8 +66,8 @@ check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displac
 check(groups["Refinement"] == ["RefinementIterations", "RefinementTolerance",
                                "RefinementSolver", "RelaxationIterations"],
       "the refinement group holds the iteration cap, the tolerance, the solver and the relaxation")
-check(groups["Queue and transfer"][:2] == ["CandidateQueue", "ValidRegionFrame"],
-      "ValidRegionFrame is in the queue and transfer group, after CandidateQueue")
+check(groups["How the pull spreads"][:2] == ["CandidateQueue", "ValidRegionFrame"],
+      "ValidRegionFrame is in the group of how the pull spreads, after CandidateQueue")
 grouped = [name for names in groups.values() for name in names]
 panel = [name for name in fresh.ListProperties()
          if sm_chain.GetProperty(name).GetPanelVisibility() != "never"

@@ -2,6 +2,7 @@
 
 #include "pqHapticsDockPanel.h"
 #include "pqHapticsProxies.h"
+#include "pqPullTestDriver.h"
 
 #include <pqActiveObjects.h>
 #include <pqCoreUtilities.h>
@@ -80,7 +81,7 @@ void pqHapticsTestHook::poll()
     {
       return;
     }
-    const bool mouse = this->Trace == "mouse";
+    const bool mouse = this->Trace == "mouse" || this->Trace == "pull";
     const bool openHaptics = this->Trace == "openhaptics";
     this->Dock->setHand(0,
       openHaptics ? pqHapticsInteractor::OpenHaptics
@@ -118,6 +119,16 @@ void pqHapticsTestHook::poll()
   if (this->Trace == "openhaptics")
   {
     this->faultOpenHaptics();
+    return;
+  }
+  if (this->Trace == "pull")
+  {
+    this->Pull =
+      this->Pull ? this->Pull : std::make_shared<pqPullTestDriver>(this->Dock, this->Output);
+    if (this->Pull->step() && !this->Output.isEmpty())
+    {
+      this->writeResults();
+    }
     return;
   }
   // A few frames after the trace is over, so the last sample has been rendered.
@@ -323,6 +334,10 @@ void pqHapticsTestHook::writeResults()
     out << "\n";
   }
   this->writePaint(out);
+  if (this->Pull)
+  {
+    out << this->Pull->results();
+  }
   geoshaping::haptics::ForceResult force;
   if (interactor->forceFromLastScene(0, force))
   {

@@ -4,6 +4,8 @@
 //                                           started once a ChainMailDeformation exists;
 //                                           "mouse": hand 1 is the mouse, and the hook
 //                                           drags it up on the surface (Deform);
+//                                           "pull": the same, and pqPullTestDriver
+//                                           pulls and measures (gui_setup_pull.py);
 //                                           "openhaptics": hand 1 is OpenHaptics on the
 //                                           fake HD library GEOSHAPING_LIBHD names, which
 //                                           the hook faults after 1 s (fakehd_inject_fault);
@@ -16,7 +18,10 @@
 //                                           figures and the deformed output), then quit.
 #include <QObject>
 
+#include <memory>
+
 class pqHapticsDockPanel;
+class pqPullTestDriver;
 class QTextStream;
 class vtkPointSet;
 
@@ -50,4 +55,5 @@ private:
   int ReadyPolls = 0;
   int MouseSteps = 0;
   int FaultSteps = 0;
+  std::shared_ptr<pqPullTestDriver> Pull;
 };

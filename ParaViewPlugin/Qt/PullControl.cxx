@@ -1,0 +1,109 @@
+#include "PullControl.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace geoshaping::interactor
+{
+
+namespace
+{
+constexpr double degrees = 3.14159265358979323846 / 180.0;
+// Lines closer than this to the view direction show as a point.
+const double cos_along_view = std::cos(5.0 * degrees);
+constexpr double max_pixels = 1e4;
+
+Eigen::Vector3d on_view_plane(
+  const ViewProjection& view, const Eigen::Vector2d& pixel, double depth)
+{
+  return view.to_world(Eigen::Vector3d(pixel.x(), pixel.y(), depth));
+}
+}
+
+void PullControl::press(
+  const Eigen::Vector2d& cursor, const Eigen::Vector3d& grasp, const Eigen::Vector3d& normal)
+{
+  press_ = last_ = target_ = cursor;
+  grasp_ = grasp;
+  normal_ = normal;
+}
+
+void PullControl::move(const Eigen::Vector2d& cursor, bool precise)
+{
+  target_ += (precise ? precision_factor : 1.0) * (cursor - last_);
+  last_ = cursor;
+}
+
+Eigen::Vector3d PullControl::displacement(
+  const ViewProjection& view, PullConstraint constraint, const Eigen::Vector3d& up) const
+{
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  if (!grasp_.allFinite() || !target_.allFinite())
+  {
+    return d;
+  }
+  switch (constraint)
+  {
+    case PullConstraint::view_plane:
+    {
+      const double depth = view.to_display(grasp_).z();
+      d = on_view_plane(view, target_, depth) - on_view_plane(view, press_, depth);
+      break;
+    }
+    case PullConstraint::vertical:
+      d = along_line(view, up);
+      break;
+    case PullConstraint::normal:
+      d = along_line(view, normal_);
+      break;
+  }
+  return d.allFinite() ? d : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d PullControl::along_line(
+  const ViewProjection& view, const Eigen::Vector3d& axis) const
+{
+  const double length = axis.norm();
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return Eigen::Vector3d::Zero();
+  }
+  const Eigen::Vector3d a = axis / length;
+  const Eigen::Vector3d g_display = view.to_display(grasp_);
+  const Eigen::Vector2d g_pixel = g_display.head<2>();
+  const double depth = g_display.z();
+  // World length of one pixel on the view plane through the grasp.
+  const double pixel =
+    (on_view_plane(view, g_pixel + Eigen::Vector2d(1.0, 0.0), depth) - grasp_).norm();
+  const Eigen::Vector3d near = on_view_plane(view, g_pixel, 0.0);
+  const Eigen::Vector3d into_view = (on_view_plane(view, g_pixel, 1.0) - near).normalized();
+  if (!(pixel > 0.0) || !into_view.allFinite())
+  {
+    return Eigen::Vector3d::Zero();
+  }
+  const Eigen::Vector2d motion = target_ - press_;
+  double t = 0.0;
+  if (std::abs(a.dot(into_view)) > cos_along_view)
+  {
+    t = motion.y() * pixel * (a.dot(into_view) < 0.0 ? 1.0 : -1.0);
+  }
+  else
+  {
+    const Eigen::Vector2d image = view.to_display(grasp_ + pixel * a).head<2>() - g_pixel;
+    if (!(image.norm() > 0.0))
+    {
+      return Eigen::Vector3d::Zero();
+    }
+    const Eigen::Vector2d e = image.normalized();
+    const Eigen::Vector2d pixel_on_line = g_pixel + motion.dot(e) * e;
+    const Eigen::Vector3d o = on_view_plane(view, pixel_on_line, 0.0);
+    const Eigen::Vector3d r = (on_view_plane(view, pixel_on_line, 1.0) - o).normalized();
+    const Eigen::Vector3d w = grasp_ - o;
+    const double b = a.dot(r);
+    t = (b * r.dot(w) - a.dot(w)) / (1.0 - b * b);
+  }
+  const double limit = max_pixels * pixel;
+  return std::clamp(std::isfinite(t) ? t : 0.0, -limit, limit) * a;
+}
+
+} // namespace geoshaping::interactor

@@ -1,0 +1,85 @@
+#include "pqHapticsDockRows.h"
+
+#include "pqHapticsInteractor.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLayout>
+
+namespace
+{
+QString tipOf(QLayoutItem* item)
+{
+  if (!item)
+  {
+    return QString();
+  }
+  if (QWidget* w = item->widget())
+  {
+    return w->toolTip();
+  }
+  QLayout* layout = item->layout();
+  for (int i = 0; layout && i < layout->count(); ++i)
+  {
+    const QString tip = tipOf(layout->itemAt(i));
+    if (!tip.isEmpty())
+    {
+      return tip;
+    }
+  }
+  return QString();
+}
+}
+
+QWidget* pqHapticsPullRow(QWidget* parent, pqHapticsInteractor* interactor)
+{
+  using geoshaping::interactor::PullConstraint;
+  auto* box = new QWidget(parent);
+  auto* form = new QFormLayout(box);
+  form->setContentsMargins(0, 0, 0, 0);
+  auto* constraint = new QComboBox(box);
+  constraint->setObjectName("PullConstraint");
+  constraint->addItem("Follow the cursor", int(PullConstraint::view_plane));
+  constraint->addItem("Vertical only (z)", int(PullConstraint::vertical));
+  constraint->addItem("Along the surface normal", int(PullConstraint::normal));
+  constraint->setCurrentIndex(constraint->findData(int(interactor->pullConstraint())));
+  constraint->setToolTip(
+    "How a mouse pull moves the grasped point.\n"
+    "Follow the cursor: it stays under the cursor, in the plane through it parallel to the "
+    "screen, whatever the zoom and the data's size.\n"
+    "Vertical only (z): only its elevation changes (x and y kept); moving the cursor along "
+    "the vertical's direction on the screen raises or lowers it.\n"
+    "Along the surface normal: it moves across the surface where it was grasped, as a "
+    "horizon pushed up or down through its thickness.\n"
+    "Hold Shift while dragging for fine control: the point moves a tenth of the cursor's "
+    "motion. The choice can change mid-pull; a stylus keeps its own workspace mapping.");
+  auto* hint = new QLabel("Hold <b>Shift</b> while pulling for a tenth of the motion.", box);
+  hint->setObjectName("PullHint");
+  hint->setWordWrap(true);
+  hint->setToolTip(constraint->toolTip());
+  form->addRow("Pull", constraint);
+  form->addRow(hint);
+  QObject::connect(constraint, QOverload<int>::of(&QComboBox::currentIndexChanged), interactor,
+    [interactor, constraint]()
+    { interactor->setPullConstraint(PullConstraint(constraint->currentData().toInt())); });
+  pqHapticsTipLabels(box);
+  return box;
+}
+
+void pqHapticsTipLabels(QWidget* root)
+{
+  for (QFormLayout* form : root->findChildren<QFormLayout*>())
+  {
+    for (int row = 0; row < form->rowCount(); ++row)
+    {
+      QLayoutItem* label = form->itemAt(row, QFormLayout::LabelRole);
+      QWidget* labelWidget = label ? label->widget() : nullptr;
+      const QString tip = tipOf(form->itemAt(row, QFormLayout::FieldRole));
+      if (labelWidget && labelWidget->toolTip().isEmpty() && !tip.isEmpty())
+      {
+        labelWidget->setToolTip(tip);
+      }
+    }
+  }
+}

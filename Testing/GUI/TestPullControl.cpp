@@ -1,0 +1,275 @@
+// The mouse pull's math (ParaViewPlugin/Qt/PullControl.h) through a camera's projection
+// matrix: the grasp stays under the cursor at any data scale and camera, Shift makes the
+// motion a tenth, and the constraints keep the pull on their line.
+#include "HapticsControl.h"
+#include "PullControl.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <cmath>
+#include <limits>
+
+using namespace geoshaping::interactor;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+namespace
+{
+// A camera as VTK builds it (vtkCamera view transform, perspective or parallel
+// projection) on a width x height viewport; display depth in [0, 1].
+class CameraProjection : public ViewProjection
+{
+public:
+  CameraProjection(const CameraFrame& c, double width, double height, double near, double far)
+  {
+    const Vector3d z = (c.position - c.focal_point).normalized();
+    const Vector3d x = c.view_up.cross(z).normalized();
+    const Vector3d y = z.cross(x);
+    Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
+    view.block<1, 3>(0, 0) = x.transpose();
+    view.block<1, 3>(1, 0) = y.transpose();
+    view.block<1, 3>(2, 0) = z.transpose();
+    view.block<3, 1>(0, 3) = -view.block<3, 3>(0, 0) * c.position;
+    const double aspect = width / height;
+    Eigen::Matrix4d projection = Eigen::Matrix4d::Zero();
+    if (c.parallel)
+    {
+      const double s = c.parallel_scale;
+      projection(0, 0) = 1.0 / (aspect * s);
+      projection(1, 1) = 1.0 / s;
+      projection(2, 2) = -2.0 / (far - near);
+      projection(2, 3) = -(far + near) / (far - near);
+      projection(3, 3) = 1.0;
+    }
+    else
+    {
+      const double f = 1.0 / std::tan(0.5 * c.view_angle_deg * 3.14159265358979323846 / 180.0);
+      projection(0, 0) = f / aspect;
+      projection(1, 1) = f;
+      projection(2, 2) = -(far + near) / (far - near);
+      projection(2, 3) = -2.0 * far * near / (far - near);
+      projection(3, 2) = -1.0;
+    }
+    Eigen::Matrix4d viewport = Eigen::Matrix4d::Identity();
+    viewport(0, 0) = 0.5 * width;
+    viewport(0, 3) = 0.5 * width;
+    viewport(1, 1) = 0.5 * height;
+    viewport(1, 3) = 0.5 * height;
+    viewport(2, 2) = 0.5;
+    viewport(2, 3) = 0.5;
+    toDisplay = viewport * projection * view;
+    toWorld = toDisplay.inverse();
+  }
+  Vector3d to_display(const Vector3d& world) const override
+  {
+    return (toDisplay * world.homogeneous()).hnormalized();
+  }
+  Vector3d to_world(const Vector3d& display) const override
+  {
+    return (toWorld * display.homogeneous()).hnormalized();
+  }
+  Vector2d pixel(const Vector3d& world) const { return to_display(world).head<2>(); }
+
+private:
+  Eigen::Matrix4d toDisplay, toWorld;
+};
+
+// An oblique camera on a scene of size `scale` centred at `centre`.
+CameraProjection oblique(double scale, const Vector3d& centre, bool parallel)
+{
+  CameraFrame c;
+  c.focal_point = centre;
+  c.position = centre + scale * Vector3d(0.4, -1.6, 1.3);
+  c.view_up = Vector3d(0.0, 0.6, 0.8);
+  c.view_angle_deg = 30.0;
+  c.parallel = parallel;
+  c.parallel_scale = 0.6 * scale;
+  return CameraProjection(c, 800, 600, 0.1 * scale, 10.0 * scale);
+}
+
+PullControl pressAt(const CameraProjection& view, const Vector3d& grasp, const Vector3d& normal)
+{
+  PullControl pull;
+  pull.press(view.pixel(grasp), grasp, normal);
+  return pull;
+}
+
+struct Scene
+{
+  double scale;
+  Vector3d centre;
+  bool parallel;
+};
+const Scene scenes[] = { { 1.0, Vector3d::Zero(), false }, { 1.0, Vector3d::Zero(), true },
+  { 1e6, Vector3d(5e5, 4.1e6, -2e3), false }, { 1e6, Vector3d(5e5, 4.1e6, -2e3), true } };
+}
+
+TEST(PullControl, GraspStaysUnderTheCursorAtAnyScaleAndCamera)
+{
+  for (const Scene& s : scenes)
+  {
+    const CameraProjection view = oblique(s.scale, s.centre, s.parallel);
+    const Vector3d grasp = s.centre + s.scale * Vector3d(0.1, 0.2, 0.05);
+    PullControl pull = pressAt(view, grasp, Vector3d::UnitZ());
+    const Vector2d press = view.pixel(grasp);
+    for (const Vector2d& step : { Vector2d(30, 10), Vector2d(50, -70), Vector2d(-3, 120) })
+    {
+      pull.move(pull.target() + step, false);
+      const Vector3d d = pull.displacement(view, PullConstraint::view_plane, Vector3d::UnitZ());
+      EXPECT_LE((view.pixel(grasp + d) - pull.target()).norm(), 1e-6)
+        << "scale " << s.scale << " parallel " << s.parallel;
+      // In the view plane: the grasp keeps its depth.
+      EXPECT_NEAR(view.to_display(grasp + d).z(), view.to_display(grasp).z(), 1e-9);
+    }
+    EXPECT_GT((pull.target() - press).norm(), 90.0);
+  }
+}
+
+TEST(PullControl, TheMotionIsTheCursorsWorldMotionWhateverTheDataScale)
+{
+  // The same pixels pull a million times farther on a million times larger scene seen
+  // by the same camera scaled up: the displacement follows the view, not the data.
+  Vector3d unit;
+  for (const double scale : { 1.0, 1e6 })
+  {
+    const CameraProjection view = oblique(scale, Vector3d::Zero(), false);
+    PullControl pull = pressAt(view, Vector3d::Zero(), Vector3d::UnitZ());
+    pull.move(pull.target() + Vector2d(80, 0), false);
+    const Vector3d d = pull.displacement(view, PullConstraint::view_plane, Vector3d::UnitZ());
+    if (scale == 1.0)
+    {
+      unit = d;
+    }
+    else
+    {
+      EXPECT_LE((d - 1e6 * unit).norm(), 1e-6 * d.norm());
+    }
+  }
+}
+
+TEST(PullControl, ShiftScalesTheMotionByATenth)
+{
+  const CameraProjection view = oblique(1e6, scenes[2].centre, false);
+  const Vector3d grasp = scenes[2].centre;
+  PullControl free = pressAt(view, grasp, Vector3d::UnitZ());
+  PullControl precise = free;
+  const Vector2d end = free.target() + Vector2d(60, 45);
+  free.move(end, false);
+  precise.move(end, true);
+  for (const PullConstraint c :
+    { PullConstraint::view_plane, PullConstraint::vertical, PullConstraint::normal })
+  {
+    const Vector3d a = free.displacement(view, c, Vector3d::UnitZ());
+    const Vector3d b = precise.displacement(view, c, Vector3d::UnitZ());
+    if (c == PullConstraint::view_plane)
+    {
+      EXPECT_LE((b - 0.1 * a).norm(), 1e-9 * a.norm());
+    }
+    EXPECT_GT(b.norm(), 0.0);
+    EXPECT_LT(b.norm(), 0.2 * a.norm());
+  }
+}
+
+TEST(PullControl, ShiftMidPullDoesNotJump)
+{
+  const CameraProjection view = oblique(1.0, Vector3d::Zero(), false);
+  PullControl pull = pressAt(view, Vector3d::Zero(), Vector3d::UnitZ());
+  const Vector2d press = pull.target();
+  pull.move(press + Vector2d(50, 0), false);
+  pull.move(press + Vector2d(50, 0), true); // Shift pressed, the cursor still
+  EXPECT_LE((pull.target() - (press + Vector2d(50, 0))).norm(), 1e-12);
+  pull.move(press + Vector2d(70, 10), true);
+  EXPECT_LE((pull.target() - (press + Vector2d(52, 1))).norm(), 1e-12);
+  pull.move(press + Vector2d(80, 10), false);
+  EXPECT_LE((pull.target() - (press + Vector2d(62, 1))).norm(), 1e-12);
+}
+
+TEST(PullControl, VerticalKeepsXAndYAndFollowsTheCursorAlongTheVertical)
+{
+  for (const Scene& s : scenes)
+  {
+    const CameraProjection view = oblique(s.scale, s.centre, s.parallel);
+    const Vector3d grasp = s.centre + s.scale * Vector3d(-0.1, 0.1, 0.0);
+    PullControl pull = pressAt(view, grasp, Vector3d(0.3, 0.0, 1.0));
+    // Up the screen and a little to the side: the grasp rises, and its image is the
+    // cursor's foot on the vertical's image.
+    pull.move(pull.target() + Vector2d(25, 70), false);
+    const Vector3d d = pull.displacement(view, PullConstraint::vertical, Vector3d::UnitZ());
+    EXPECT_EQ(d.x(), 0.0);
+    EXPECT_EQ(d.y(), 0.0);
+    EXPECT_GT(d.z(), 0.0);
+    const Vector2d g = view.pixel(grasp);
+    const Vector2d e = (view.pixel(grasp + s.scale * Vector3d::UnitZ() * 1e-3) - g).normalized();
+    const Vector2d foot = g + (pull.target() - g).dot(e) * e;
+    EXPECT_LE((view.pixel(grasp + d) - foot).norm(), 1e-6) << "scale " << s.scale;
+  }
+}
+
+TEST(PullControl, NormalConstraintMovesAlongTheSurfaceNormal)
+{
+  const CameraProjection view = oblique(1.0, Vector3d::Zero(), false);
+  const Vector3d normal = Vector3d(1.0, 0.0, 1.0).normalized();
+  PullControl pull = pressAt(view, Vector3d::Zero(), normal);
+  pull.move(pull.target() + Vector2d(40, 40), false);
+  const Vector3d d = pull.displacement(view, PullConstraint::normal, Vector3d::UnitZ());
+  EXPECT_GT(d.norm(), 0.0);
+  EXPECT_LE(d.cross(normal).norm(), 1e-12 * d.norm());
+}
+
+TEST(PullControl, TheDragPlaneGoesThroughTheGraspedVertex)
+{
+  // The press lands on the surface a little in front of the vertex that is grasped: the
+  // vertex, not the pressed point, moves with the cursor.
+  const CameraProjection view = oblique(1.0, Vector3d::Zero(), false);
+  const Vector3d vertex(0.05, 0.3, -0.2);
+  PullControl pull = pressAt(view, Vector3d::Zero(), Vector3d::UnitZ());
+  pull.press(view.pixel(vertex), vertex + Vector3d(0.0, -0.2, 0.15), Vector3d::UnitZ());
+  pull.set_grasp(vertex);
+  pull.move(pull.target() + Vector2d(-90, 35), false);
+  const Vector3d d = pull.displacement(view, PullConstraint::view_plane, Vector3d::UnitZ());
+  EXPECT_LE((view.pixel(vertex + d) - pull.target()).norm(), 1e-6);
+}
+
+TEST(PullControl, AVerticalSeenEndOnMovesWithTheCursorsUpwardMotion)
+{
+  // Looking straight down: the vertical's image is a point. Moving the cursor up raises
+  // the grasp toward the viewer by the cursor's motion on the view plane; down lowers it.
+  CameraFrame c;
+  c.position = Vector3d(0, 0, 10);
+  c.view_up = Vector3d::UnitY();
+  const CameraProjection view(c, 800, 600, 1.0, 100.0);
+  PullControl pull = pressAt(view, Vector3d::Zero(), Vector3d::UnitZ());
+  const Vector2d press = pull.target();
+  pull.move(press + Vector2d(5, 30), false);
+  const Vector3d up = pull.displacement(view, PullConstraint::vertical, Vector3d::UnitZ());
+  PullControl plane = pressAt(view, Vector3d::Zero(), Vector3d::UnitZ());
+  plane.move(press + Vector2d(0, 30), false);
+  const double thirty =
+    plane.displacement(view, PullConstraint::view_plane, Vector3d::UnitZ()).norm();
+  EXPECT_NEAR(up.z(), thirty, 1e-9);
+  EXPECT_EQ(up.head<2>().norm(), 0.0);
+  pull.move(press + Vector2d(5, -30), false);
+  EXPECT_NEAR(
+    pull.displacement(view, PullConstraint::vertical, Vector3d::UnitZ()).z(), -thirty, 1e-9);
+}
+
+TEST(PullControl, BadInputGivesNoDisplacement)
+{
+  const CameraProjection view = oblique(1.0, Vector3d::Zero(), false);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  PullControl pull = pressAt(view, Vector3d(nan, 0, 0), Vector3d::UnitZ());
+  pull.move(Vector2d(10, 10), false);
+  EXPECT_EQ(
+    pull.displacement(view, PullConstraint::view_plane, Vector3d::UnitZ()), Vector3d::Zero());
+  PullControl axis = pressAt(view, Vector3d::Zero(), Vector3d::Zero());
+  axis.move(axis.target() + Vector2d(10, 10), false);
+  EXPECT_EQ(axis.displacement(view, PullConstraint::normal, Vector3d::UnitZ()), Vector3d::Zero());
+  EXPECT_EQ(
+    axis.displacement(view, PullConstraint::vertical, Vector3d(nan, 0, 1)), Vector3d::Zero());
+  axis.move(Vector2d(nan, 0), false);
+  EXPECT_EQ(
+    axis.displacement(view, PullConstraint::view_plane, Vector3d::UnitZ()), Vector3d::Zero());
+}
