@@ -7,7 +7,6 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkChainMailDeformationFilter.h"
-#include "vtkElevationFilter.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
@@ -58,16 +57,7 @@ int TestHorizonStoppedAtFault(int argc, char* argv[])
               << pull->GetNumberOfDisplacedPoints() << ", blocked "
               << pull->GetNumberOfObstacleBlockedPoints() << ", grasp fraction "
               << pull->GetLastGraspObstacleFraction() << "\n";
-    vtkNew<vtkElevationFilter> elevation;
-    elevation->SetInputConnection(pull->GetOutputPort());
-    elevation->SetLowPoint(0.0, 0.0, 0.0);
-    elevation->SetHighPoint(0.0, 0.0, lift);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(elevation->GetOutputPort());
-    mapper->SetLookupTable(heights);
-    mapper->UseLookupTableScalarRangeOn();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
+    vtkSmartPointer<vtkActor> actor = geoshaping_image_testing::ElevationActor(pull, lift, heights);
     vtkNew<vtkPolyDataMapper> faultMapper;
     faultMapper->SetInputConnection(faultPlane->GetOutputPort());
     faultMapper->ScalarVisibilityOff();

@@ -4,7 +4,8 @@ Axes frame) on a scene; the gathered points of 2 and 3 ranks must equal the 1-ra
 bit for bit, the refined point counts agree, and E_link of the gathered output, computed
 here with numpy from the points, the malleability and the filter's default transfer
 curves (an independent computation), is <= 1e-9 L. Then Dykstra on 2 ranks must be
-refused with an error naming what works, leaving the input undeformed.
+refused with an error naming what works, leaving the input undeformed, and so must
+obstacles on 2 ranks (docs/obstacles.md, "Refused").
 Usage: test_mpi_refinement.py SCENE (surface or slab)."""
 import json
 import os
@@ -87,6 +88,19 @@ with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as t
         print("FAILED: the refused update deformed its input")
         sys.exit(1)
     print("ok: Dykstra on 2 ranks refused on every rank (%s), input unchanged" % errors[0].strip()[:120])
+
+    # Obstacles on 2 ranks: refused on every rank, the input undeformed.
+    cmd, result, errors = run(2, os.path.join(tmp, "obstacles"), "Obstacles")
+    wanted = "Obstacles (obstacle surfaces are not distributed yet)"
+    if result.returncode != 0 or len(errors) < 2 or not all(wanted in e for e in errors):
+        print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
+        print("FAILED: obstacles on 2 ranks: expected an error naming '%s' on each rank" % wanted)
+        sys.exit(1)
+    refused = np.load(os.path.join(tmp, "obstacles", "result.npy"))
+    if not np.array_equal(refused[:, 1:4], refused[:, 4:7]):
+        print("FAILED: the refused update with obstacles deformed its input")
+        sys.exit(1)
+    print("ok: obstacles on 2 ranks refused on every rank, input unchanged")
 
 one = results[1]
 moved = int(np.count_nonzero(np.any(one[:, 1:4] != one[:, 4:7], axis=1)))
