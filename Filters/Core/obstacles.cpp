@@ -319,8 +319,7 @@ Vec Obstacles::slide(const Vec& p, const Vec& w, double& fraction) const
   Vec u = land(1.0);
   if (clear(u))
     return u;
-  // Rare (a chord through a fold of the surface): the largest s to 2^-40 whose chord is
-  // clear.
+  // Rare (a chord through a fold of the surface): bisect between the clear s = 0 and 1.
   double lo = 0.0, hi = 1.0;
   u = land(0.0);
   for (int i = 0; i < 40; ++i)

@@ -54,8 +54,8 @@ namespace geoshaping
  *   p + w is replaced by the obstacle point nearest to it, P(p + w): the vertex stays on
  *   the obstacle surface while it moves along it. Its straight path p -> P(p + s w) obeys
  *   the crossing rule with "on the plane" widened to within g of it (both ends lie on
- *   the surface, where the sign of s is rounding); s = 1 when it does, else the largest
- *   s found by bisection (s = 0 always does: nothing is nearer p than P(p)).
+ *   the surface, where the sign of s is rounding); s = 1 when it does, else the last clear
+ *   s of a bisection to 2^-40 from s = 0 (clear: nothing is nearer p than P(p)) and 1.
  *
  * g = 1e-9 times the diagonal of the obstacles' bounding box: far above the rounding of
  * the positions (1e-16 of their magnitude), so a stopped vertex lies strictly on its
