@@ -155,6 +155,7 @@ void ChainMailDeformer::set_mesh(
   moved_rec_.clear();
   moved_root_.clear();
   obstacles_.reset();
+  sliding_.clear();
   rigid_of_.clear();
   set_uniform_malleability(0.5);
 }
@@ -529,6 +530,14 @@ std::string ChainMailDeformer::set_obstacles(
   return error;
 }
 
+void ChainMailDeformer::set_sliding(const std::uint8_t* mask)
+{
+  rigid_of_.clear(); // sliding vertices are left out of the rigid components
+  sliding_.clear();
+  if (mask)
+    to_inner(sliding_, mask, outer_of_, [](std::uint8_t m) { return std::uint8_t(m != 0); });
+}
+
 bool ChainMailDeformer::set_obstacle_clearance(double c)
 {
   if (!(c >= 0.0) || !std::isfinite(c))
@@ -547,7 +556,7 @@ void ChainMailDeformer::build_rigid_components()
   auto rigid = [&](std::size_t i)
   {
     return !rank_rigid_.empty() && rank_rigid_[std::size_t(nodes_[i].rank)] &&
-           (pinned_inner_.empty() || !pinned_inner_[i]);
+           (pinned_inner_.empty() || !pinned_inner_[i]) && (sliding_.empty() || !sliding_[i]);
   };
   rigid_of_.assign(n, -1);
   rigid_first_.assign(1, 0);
@@ -580,10 +589,17 @@ void ChainMailDeformer::build_rigid_components()
 
 Eigen::Vector3d ChainMailDeformer::admissible(index_t i, const Eigen::Vector3d& d)
 {
+  double f = 1.0;
+  if (!sliding_.empty() && sliding_[std::size_t(i)])
+  {
+    const Eigen::Vector3d u = obstacles_->slide(nodes_[std::size_t(i)].rest, d, f);
+    last_fraction_ = f;
+    blocked_ += f < 1.0;
+    return u;
+  }
   if (rigid_of_.empty())
     build_rigid_components();
   const index_t component = rigid_of_[std::size_t(i)];
-  double f = 1.0;
   if (component < 0)
     f = obstacles_->admissible_fraction(nodes_[std::size_t(i)].rest, d, clearance_);
   else if (rigid_stamp_[std::size_t(component)] == frame_)
@@ -667,7 +683,8 @@ std::size_t ChainMailDeformer::memory_bytes() const
          rigid_of_.capacity() * sizeof(index_t) + rigid_first_.capacity() * sizeof(std::uint32_t) +
          rigid_members_.capacity() * sizeof(index_t) +
          rigid_stamp_.capacity() * sizeof(std::uint32_t) +
-         rigid_disp_.capacity() * sizeof(Eigen::Vector3d) + rank_rigid_.capacity();
+         rigid_disp_.capacity() * sizeof(Eigen::Vector3d) + rank_rigid_.capacity() +
+         sliding_.capacity();
 }
 
 } // namespace geoshaping

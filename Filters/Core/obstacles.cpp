@@ -242,7 +242,7 @@ void Obstacles::visit_segment(const Vec& p, const Vec& w, double r, double& best
   }
 }
 
-double Obstacles::first_crossing(const Vec& p, const Vec& w) const
+double Obstacles::first_crossing(const Vec& p, const Vec& w, double touch) const
 {
   const Vec q = p + w;
   const Vec d = q - p;
@@ -254,7 +254,8 @@ double Obstacles::first_crossing(const Vec& p, const Vec& w) const
       const Vec& a = points_[std::size_t(k[0])];
       const Vec n = (points_[std::size_t(k[1])] - a).cross(points_[std::size_t(k[2])] - a);
       const double sp = n.dot(p - a), sq = n.dot(q - a);
-      if (!((sp > 0.0 && sq < 0.0) || (sp < 0.0 && sq > 0.0)))
+      const double on = touch > 0.0 ? touch * n.norm() : 0.0;
+      if (!((sp > on && sq < -on) || (sp < -on && sq > on)))
         return;
       double e[3];
       for (int i = 0; i < 3; ++i)
@@ -302,6 +303,39 @@ double Obstacles::admissible_fraction(const Vec& p, const Vec& w, double clearan
   if (clearance > 0.0 && distance(p) >= clearance)
     return first_contact(p, w, clearance + gap_);
   return first_crossing(p, w);
+}
+
+Vec Obstacles::slide(const Vec& p, const Vec& w, double& fraction) const
+{
+  const auto land = [&](double s)
+  {
+    Vec x;
+    distance(p + s * w, &x);
+    return Vec(x - p);
+  };
+  const auto clear = [&](const Vec& u)
+  { return u.isZero(0.0) || first_crossing(p, u, gap_) == 1.0; };
+  fraction = 1.0;
+  Vec u = land(1.0);
+  if (clear(u))
+    return u;
+  // Rare (a chord through a fold of the surface): bisect between the clear s = 0 and 1.
+  double lo = 0.0, hi = 1.0;
+  u = land(0.0);
+  for (int i = 0; i < 40; ++i)
+  {
+    const double mid = 0.5 * (lo + hi);
+    const Vec m = land(mid);
+    if (clear(m))
+    {
+      lo = mid;
+      u = m;
+    }
+    else
+      hi = mid;
+  }
+  fraction = lo;
+  return u;
 }
 
 double Obstacles::distance(const Vec& p, Vec* closest) const

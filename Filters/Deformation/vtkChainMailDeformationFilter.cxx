@@ -107,7 +107,7 @@ int vtkChainMailDeformationFilter::RequestData(
   {
     return 1;
   }
-  if (!this->UpdateObstacles(inputVector))
+  if (!this->UpdateObstacles(inputVector) || !this->UpdateSliding(inputVector, n))
   {
     return 1;
   }

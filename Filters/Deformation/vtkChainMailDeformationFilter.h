@@ -17,7 +17,9 @@
  * axis-aligned box) or Link (a cylinder aligned with the rest link: rotation invariant).
  *
  * An optional second array (SetInputArrayToProcess(1, ...)) marks pinned vertices
- * (non-zero = never moves; propagation stops at them).
+ * (non-zero = never moves; propagation stops at them). An optional third
+ * (SetInputArrayToProcess(2, ...), `SlidingArray` in ParaView) marks vertices that lie on
+ * an obstacle and slide on it (see Obstacles below).
  *
  * `RefinementIterations` (default 0, off) adds a pass after ChainMail that pulls the
  * result toward satisfying every link (the core's refine_links: Dykstra sweeps over the
@@ -344,10 +346,13 @@ public:
   /// its deformed position crosses an obstacle triangle, and a vertex that started at
   /// least ObstacleClearance away ends at least that far: a vertex (the grasp included)
   /// stops at the last admissible point of its path and its neighbours follow from there;
-  /// rigid regions stop as one; pins stay. The triangles' tree is built once per obstacle
-  /// geometry. Refused with an error (output = input): an obstacle with non-finite
-  /// points or no triangle, obstacles with RefinementIterations or RelaxationIterations
-  /// above 0, obstacles on more than one process.
+  /// rigid regions stop as one; pins stay. Sliding contact: a vertex flagged non-zero in
+  /// the sliding mask (input array 2) lands on the obstacle point nearest its target,
+  /// so it stays on the obstacle while it moves along it. The triangles' tree is built
+  /// once per obstacle geometry. Refused with an error (output = input): an obstacle with
+  /// non-finite points or no triangle, obstacles with RefinementIterations or
+  /// RelaxationIterations above 0, obstacles on more than one process, a sliding mask
+  /// that is not numeric point data with one value per point.
   void AddObstacleConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
   void SetObstacleConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void AddObstacleData(vtkDataObject* data) { this->AddInputDataObject(1, data); }
@@ -447,9 +452,17 @@ private:
   bool RequestDataParallel(
     vtkPointSet* input, vtkPointSet* output, vtkInformationVector** inputVector);
   bool UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
+  // The optional point mask named as input array `index` (pins 1, sliding 2), null when
+  // none is named; `valid` false (after an error naming `what`) when it is not numeric
+  // point data with one value per point.
+  vtkDataArray* PointMask(
+    int index, const char* what, vtkInformationVector** inputVector, vtkIdType n, bool& valid);
   // The obstacles of port 1 into the deformer (vtkChainMailDeformationFilterObstacles.cxx);
   // false (after an error) when they are refused.
   bool UpdateObstacles(vtkInformationVector** inputVector);
+  // The sliding mask (input array 2) into the deformer; false (after an error) when it is
+  // refused.
+  bool UpdateSliding(vtkInformationVector** inputVector, vtkIdType n);
   std::vector<int> UpdateEdits(std::vector<int>& stale);
   void Deform(vtkPointSet* input, std::vector<int>& stale);
   bool OutputFits();

@@ -57,6 +57,8 @@ struct vtkChainMailDeformationFilter::vtkInternals
   double MalleabilityDefault = -1.0;
   vtkDataArray* PinSource = nullptr;
   vtkMTimeType PinTime = 0;
+  vtkDataArray* SlidingSource = nullptr;
+  vtkMTimeType SlidingTime = 0;
   // The obstacles the deformer holds were built from (data object, MTime per connection).
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> ObstacleSources;
 
@@ -235,6 +237,7 @@ inline void vtkChainMailDeformationFilter::vtkInternals::Invalidate(Stale level)
   this->GeometryValid = false;
   this->MalleabilitySource = nullptr;
   this->PinSource = nullptr;
+  this->SlidingSource = nullptr;
   this->MalleabilityDefault = -1.0;
   this->Locator = nullptr;
   this->PassesWritten.clear();

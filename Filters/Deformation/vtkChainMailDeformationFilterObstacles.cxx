@@ -129,3 +129,36 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
   state.ObstacleSources = std::move(sources);
   return true;
 }
+
+bool vtkChainMailDeformationFilter::UpdateSliding(vtkInformationVector** inputVector, vtkIdType n)
+{
+  vtkInternals& state = *this->Internals;
+  bool valid = true;
+  vtkDataArray* sliding = this->PointMask(2, "Sliding", inputVector, n, valid);
+  if (!valid)
+  {
+    return false;
+  }
+  if (sliding && !state.Deformer.obstacles())
+  {
+    this->WarnOnce(std::string("Sliding array '") + sliding->GetName() +
+                   "' without obstacles on port 1: there is nothing to slide on.");
+  }
+  if (sliding != state.SlidingSource || (sliding && sliding->GetMTime() != state.SlidingTime))
+  {
+    if (sliding)
+    {
+      std::vector<std::uint8_t> mask(static_cast<std::size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+        mask[std::size_t(i)] = sliding->GetComponent(i, 0) != 0.0;
+      state.Deformer.set_sliding(mask.data());
+      state.SlidingTime = sliding->GetMTime();
+    }
+    else
+    {
+      state.Deformer.set_sliding(nullptr);
+    }
+    state.SlidingSource = sliding;
+  }
+  return true;
+}

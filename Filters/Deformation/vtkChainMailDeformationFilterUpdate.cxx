@@ -161,6 +161,37 @@ void vtkChainMailDeformationFilter::WarnOnce(const std::string& message)
   }
 }
 
+vtkDataArray* vtkChainMailDeformationFilter::PointMask(
+  int index, const char* what, vtkInformationVector** inputVector, vtkIdType n, bool& valid)
+{
+  // Optional: asked for only when one was named.
+  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
+  int association = -1;
+  vtkAbstractArray* named =
+    arrays && arrays->GetNumberOfInformationObjects() > index &&
+        arrays->GetInformationObject(index)->Get(vtkDataObject::FIELD_NAME())
+      ? this->GetInputAbstractArrayToProcess(index, inputVector, association)
+      : nullptr;
+  vtkDataArray* mask = vtkDataArray::SafeDownCast(named);
+  valid = !named || (mask && association == vtkDataObject::FIELD_ASSOCIATION_POINTS &&
+                      mask->GetNumberOfTuples() == n);
+  if (!valid)
+  {
+    vtkErrorMacro(<< what << " array '" << named->GetName()
+                  << "' must be numeric point data with one value per point (it is "
+                  << named->GetClassName() << " with " << named->GetNumberOfTuples()
+                  << " tuples for " << n << " points); output is the undeformed input.");
+    return nullptr;
+  }
+  if (mask && mask->GetNumberOfComponents() != 1)
+  {
+    this->WarnOnce(std::string(what) + " array '" + mask->GetName() + "' has " +
+                   std::to_string(mask->GetNumberOfComponents()) +
+                   " components; component 0 is the mask.");
+  }
+  return mask;
+}
+
 bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
   vtkInformationVector** inputVector, vtkIdType n)
 {
@@ -195,27 +226,11 @@ bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
                                          << " points; output is the undeformed input.");
     return false;
   }
-  // The pin array is optional: ask for it only when one was named.
-  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
-  named = arrays && arrays->GetNumberOfInformationObjects() > 1 &&
-              arrays->GetInformationObject(1)->Get(vtkDataObject::FIELD_NAME())
-            ? this->GetInputAbstractArrayToProcess(1, inputVector, association)
-            : nullptr;
-  vtkDataArray* pins = vtkDataArray::SafeDownCast(named);
-  if (named && (!pins || association != vtkDataObject::FIELD_ASSOCIATION_POINTS ||
-                 pins->GetNumberOfTuples() != n))
+  bool valid = true;
+  vtkDataArray* pins = this->PointMask(1, "Pinned", inputVector, n, valid);
+  if (!valid)
   {
-    vtkErrorMacro("Pinned array '" << named->GetName() << "' must be numeric point data with one "
-                                   << "value per point (it is " << named->GetClassName() << " with "
-                                   << named->GetNumberOfTuples() << " tuples for " << n
-                                   << " points); output is the undeformed input.");
     return false;
-  }
-  if (pins && pins->GetNumberOfComponents() != 1)
-  {
-    this->WarnOnce(std::string("Pinned array '") + pins->GetName() + "' has " +
-                   std::to_string(pins->GetNumberOfComponents()) +
-                   " components; component 0 is the pin mask.");
   }
 
   if (malleability != state.MalleabilitySource ||

@@ -6,12 +6,18 @@
 // BM_Relaxation: the relaxation pass after a frame, timed interleaved with the frame
 // itself (frame, pass, frame, pass, ...) so the ratio is not skewed by load drifting
 // between two separate runs.
+// BM_FrameObstacle: the FIFO Priority frame at the paper's scale (29,241 displaced)
+// without obstacles (0), against a dipping fault of 100,352 triangles through the
+// displaced region (1: it stops the vertices beyond it) and the same fault out of reach
+// (2: the gate's queries alone); BM_ObstacleBuild: the fault's tree, built once per
+// obstacle geometry.
 // BM_Envelope: the envelope refinement (ProjectionSolver::envelope, Axes) after the FIFO
 // Priority frame at the paper's scale, timed the same way (frame, envelope, frame, ...).
 #include "bench_scenes.h"
 #include "geoshaping/link_projection.h"
 #include "geoshaping/relaxation.h"
 #include "geoshaping/sample_scenes.h"
+#include "test_sheets.h"
 
 #include <benchmark/benchmark.h>
 
@@ -228,6 +234,57 @@ void BM_Envelope(benchmark::State& state)
   state.SetLabel("FIFO Priority Axes + envelope");
 }
 
+// The fault x = x0 + 0.5 z over y in [-10, 410], z in [-100, 100]: 2 x 224^2 triangles.
+geoshaping::testing::Sheet fault(double x0)
+{
+  return geoshaping::testing::sheet(224, Eigen::Vector3d(x0 - 50.0, -10.0, -100.0),
+    Eigen::Vector3d(0.0, 420.0, 0.0), Eigen::Vector3d(100.0, 0.0, 200.0));
+}
+
+void BM_FrameObstacle(benchmark::State& state)
+{
+  const long mode = state.range(0);
+  // The 400 x 400 grid grasped at (200, 200): the frame reaches x in about [104, 296].
+  Scene& s = scene(400, 29241);
+  s.deformer->set_queue(QueueKind::fifo_priority);
+  s.deformer->clear_obstacles();
+  if (mode > 0)
+  {
+    const auto f = fault(mode == 1 ? 240.0 : 1000.0);
+    const std::string error =
+      s.deformer->set_obstacles(f.xyz.data(), f.points(), f.tri.data(), f.triangles());
+    if (!error.empty())
+      state.SkipWithError(error.c_str());
+  }
+  FrameResult r;
+  for (auto _ : state)
+  {
+    r = s.deformer->deform(s.grasp, { 0.0, 0.0, s.pull });
+    benchmark::DoNotOptimize(r.moved);
+  }
+  s.deformer->clear_obstacles();
+  state.counters["displaced"] = double(r.moved);
+  state.counters["blocked"] = double(r.blocked);
+  state.counters["obstacle_triangles"] = mode > 0 ? 224.0 * 224.0 * 2.0 : 0.0;
+  state.SetLabel(mode == 0   ? "no obstacle"
+                 : mode == 1 ? "fault through the region"
+                             : "fault out of reach");
+}
+
+void BM_ObstacleBuild(benchmark::State& state)
+{
+  const auto f = fault(240.0);
+  Obstacles o;
+  for (auto _ : state)
+  {
+    const std::string error =
+      o.set(f.xyz.data(), f.points(), f.tri.data(), f.triangles(), Eigen::Vector3d::Zero());
+    benchmark::DoNotOptimize(error);
+  }
+  state.counters["obstacle_triangles"] = double(o.size());
+  state.counters["bytes"] = double(o.memory_bytes());
+}
+
 void TableArgs(benchmark::internal::Benchmark* b)
 {
   for (int q = 0; q < 4; ++q)
@@ -252,6 +309,9 @@ BENCHMARK(BM_Relaxation)
   ->ArgsProduct({ { 0, 29241 }, { 1, 10, 100 } })
   ->Unit(benchmark::kMillisecond)
   ->MinTime(0.5);
+
+BENCHMARK(BM_FrameObstacle)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->MinTime(0.2);
+BENCHMARK(BM_ObstacleBuild)->Unit(benchmark::kMillisecond)->MinTime(0.2);
 
 BENCHMARK(BM_Envelope)
   ->ArgsProduct({ { 9152, 29241 } })

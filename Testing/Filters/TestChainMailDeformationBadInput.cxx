@@ -295,7 +295,7 @@ TEST(ChainMailDeformationBadInput, ThreeComponentPinArrayWarnsThatComponentZeroI
   Watched w(grid);
   w.PinBy("Pinned");
   w.Run();
-  EXPECT_NE(w.Observer->GetWarningMessage().find("3 components; component 0 is the pin mask"),
+  EXPECT_NE(w.Observer->GetWarningMessage().find("3 components; component 0 is the mask"),
     std::string::npos)
     << w.Observer->GetWarningMessage();
 }

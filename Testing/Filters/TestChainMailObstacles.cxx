@@ -8,10 +8,12 @@
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
@@ -91,6 +93,50 @@ TEST(ChainMailObstacles, HorizonPulledDownStopsAboveTheLowerHorizon)
     unobstructed->GetPoint(p, b);
     ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << p;
   }
+}
+
+TEST(ChainMailObstacles, ACommitStoresTheStoppedShapeAndTheNextDragStartsFromIt)
+{
+  auto horizon = TriangleGridPolyData(21, 21, 1.0, {});
+  const double o[3] = { -5, -5, -3 }, du[3] = { 1, 0, 0 }, dv[3] = { 0, 1, 0 };
+  auto lower = Sheet(31, o, du, dv);
+  auto points = [](vtkPointSet* data)
+  {
+    std::vector<double> xyz(std::size_t(3 * data->GetNumberOfPoints()));
+    for (vtkIdType p = 0; p < data->GetNumberOfPoints(); ++p)
+      data->GetPoint(p, xyz.data() + 3 * p);
+    return xyz;
+  };
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputData(horizon);
+  f->AddObstacleData(lower);
+  f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  f->SetGraspPointId(10 * 21 + 10);
+  f->SetDisplacement(0, 0, -10);
+  const std::vector<double> stopped = points(Update(f));
+  ASSERT_TRUE(f->GetLastGraspBlocked());
+  f->CommitEdit();
+  f->SetGraspPointId(-1);
+  f->SetDisplacement(0, 0, 0);
+  EXPECT_EQ(points(Update(f)), stopped) << "the committed shape is the stopped one";
+
+  // The record holds the stopped shape itself: a fresh filter without obstacles
+  // reproduces it bit for bit.
+  vtkNew<vtkChainMailDeformationFilter> fresh;
+  fresh->SetInputData(horizon);
+  fresh->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  fresh->AddEdit(f->GetLastEdit());
+  EXPECT_EQ(points(Update(fresh)), stopped);
+
+  // Dragging on from the committed shape: the stopped vertices rest just above the
+  // lower horizon and cannot be pushed through it.
+  f->SetGraspPointId(10 * 21 + 10);
+  f->SetDisplacement(0.5, 0, -5);
+  const std::vector<double> again = points(Update(f));
+  EXPECT_TRUE(f->GetLastGraspBlocked());
+  EXPECT_LT(f->GetLastGraspObstacleFraction(), 1e-6);
+  for (std::size_t p = 0; p < again.size() / 3; ++p)
+    EXPECT_GT(again[3 * p + 2], -3.0) << p;
 }
 
 TEST(ChainMailObstacles, TetrahedralSlabPushedIntoADippingFaultAndABlock)
@@ -182,7 +228,7 @@ TEST(ChainMailObstacles, BadObstaclesAreRefusedAndTheInputIsUntouched)
     }
   }
   // The passes do not know obstacles: refused; so is a NaN clearance.
-  for (const char* says : { "RefinementIterations", "ObstacleClearance" })
+  for (const char* says : { "RefinementIterations", "RelaxationIterations", "ObstacleClearance" })
   {
     vtkNew<vtkChainMailDeformationFilter> f;
     vtkNew<vtkTest::ErrorObserver> errors;
@@ -191,6 +237,8 @@ TEST(ChainMailObstacles, BadObstaclesAreRefusedAndTheInputIsUntouched)
     f->AddObstacleData(good);
     if (std::string(says) == "RefinementIterations")
       f->SetRefinementIterations(2);
+    else if (std::string(says) == "RelaxationIterations")
+      f->SetRelaxationIterations(2);
     else
       f->SetObstacleClearance(std::numeric_limits<double>::quiet_NaN());
     f->SetGraspPointId(14);
@@ -200,5 +248,75 @@ TEST(ChainMailObstacles, BadObstaclesAreRefusedAndTheInputIsUntouched)
     double x[3];
     out->GetPoint(14, x);
     EXPECT_EQ(x[2], 0.0);
+  }
+}
+
+TEST(ChainMailObstacles, SlidingArrayKeepsTheCutOffLineOnTheFault)
+{
+  // Horizon x in [0, 10], y in [0, 20] cut off at x = 10 by the fault x = 10 - 0.5 z,
+  // leaning away below it; the last column ("OnFault") lies on the fault. Pulled down,
+  // that column slides down the fault, at distance 0 from it (computed here from the
+  // plane) within 1e-9 of the mean edge length (>= 1, the grid's spacing).
+  auto horizon = TriangleGridPolyData(11, 21, 1.0, {});
+  vtkNew<vtkUnsignedCharArray> onFault;
+  onFault->SetName("OnFault");
+  onFault->SetNumberOfTuples(horizon->GetNumberOfPoints());
+  onFault->Fill(0);
+  for (int j = 0; j < 21; ++j)
+    onFault->SetValue(j * 11 + 10, 1);
+  horizon->GetPointData()->AddArray(onFault);
+  const double o[3] = { 15, -5, -10 }, du[3] = { 0, 30.0 / 8, 0 },
+               dv[3] = { -10.0 / 8, 0, 20.0 / 8 };
+  auto fault = Sheet(9, o, du, dv);
+  auto fromFault = [](const double x[3]) { return (x[0] + 0.5 * x[2] - 10.0) / std::sqrt(1.25); };
+
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputData(horizon);
+  f->AddObstacleData(fault);
+  f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  f->SetStretchRange(1.5, 1.5);
+  f->SetCompressionRange(0.75, 0.75);
+  f->SetShearRange(0.05, 0.05);
+  f->SetGraspPointId(10 * 11 + 5);
+  f->SetDisplacement(0, 0, -4);
+  // Unflagged, the column leaves the fault (touching is not crossing).
+  vtkPointSet* out = Update(f);
+  double x[3];
+  out->GetPoint(10 * 11 + 10, x);
+  EXPECT_GT(std::abs(fromFault(x)), 0.5);
+
+  f->SetInputArrayToProcess(2, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "OnFault");
+  out = Update(f);
+  EXPECT_EQ(f->GetLastGraspObstacleFraction(), 1.0);
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    out->GetPoint(p, x);
+    if (onFault->GetValue(p))
+    {
+      EXPECT_LE(std::abs(fromFault(x)), 1e-9) << p;
+      EXPECT_LT(x[2], p == 10 * 11 + 10 ? -2.0 : -0.25) << p; // down along the fault
+    }
+    else
+      EXPECT_LT(fromFault(x), 0.0) << p; // on the horizon's side
+  }
+
+  // A sliding mask with a value per cell is refused: an error, the input untouched.
+  vtkNew<vtkUnsignedCharArray> perCell;
+  perCell->SetName("PerCell");
+  perCell->SetNumberOfTuples(5);
+  perCell->Fill(1);
+  horizon->GetPointData()->AddArray(perCell);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  f->AddObserver(vtkCommand::ErrorEvent, errors);
+  f->SetInputArrayToProcess(2, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "PerCell");
+  out = Update(f);
+  EXPECT_NE(errors->GetErrorMessage().find("Sliding array 'PerCell' must be"), std::string::npos)
+    << errors->GetErrorMessage();
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    double r[3];
+    out->GetPoint(p, x);
+    horizon->GetPoint(p, r);
+    ASSERT_TRUE(x[0] == r[0] && x[1] == r[1] && x[2] == r[2]) << p;
   }
 }

@@ -6,6 +6,7 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataSetSurfaceFilter.h"
+#include "vtkElevationFilter.h"
 #include "vtkFaultStepHorizonSource.h"
 #include "vtkImageDifference.h"
 #include "vtkMalleabilityPaintFilter.h"
@@ -85,6 +86,22 @@ void FaultStepCamera(vtkRenderer* renderer)
   camera->SetViewUp(0.0, 0.0, 1.0);
   camera->SetViewAngle(30.0);
   renderer->ResetCameraClippingRange();
+}
+
+vtkSmartPointer<vtkActor> ElevationActor(
+  vtkAlgorithm* source, double top, vtkScalarsToColors* heights)
+{
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputConnection(source->GetOutputPort());
+  elevation->SetLowPoint(0.0, 0.0, 0.0);
+  elevation->SetHighPoint(0.0, 0.0, top);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(elevation->GetOutputPort());
+  mapper->SetLookupTable(heights);
+  mapper->UseLookupTableScalarRangeOn();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
 }
 
 vtkSmartPointer<vtkChainMailDeformationFilter> Figure8Pull(int n, double lift, int queue)

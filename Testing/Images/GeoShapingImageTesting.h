@@ -2,11 +2,13 @@
 // Scenes and colours shared by the GeoShaping image-regression tests.
 #include "vtkSmartPointer.h"
 
+class vtkActor;
 class vtkAlgorithm;
 class vtkChainMailDeformationFilter;
 class vtkColorTransferFunction;
 class vtkRenderWindow;
 class vtkRenderer;
+class vtkScalarsToColors;
 
 namespace geoshaping_image_testing
 {
@@ -23,6 +25,11 @@ vtkSmartPointer<vtkAlgorithm> PaintedFaultStep(bool slab);
 // through `colors` (scalar range fixed by the colour map), flat-lit, on a grey background.
 vtkSmartPointer<vtkRenderer> SurfaceRenderer(
   vtkAlgorithm* source, const char* array, vtkColorTransferFunction* colors);
+
+// `source`'s output coloured by height through `heights` (its table range spanning
+// z = 0 ... top), as the Figure 8 panels show a pull.
+vtkSmartPointer<vtkActor> ElevationActor(
+  vtkAlgorithm* source, double top, vtkScalarsToColors* heights);
 
 // Figure 8's scene: an n x n sheet of unit triangulated cells at z = 0, pulled at the
 // vertex nearest its centre by `lift` at malleability 0.5 with `queue` (not updated).

@@ -8,10 +8,8 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkChainMailDeformationFilter.h"
-#include "vtkElevationFilter.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
-#include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -34,16 +32,7 @@ int TestFigure8(int argc, char* argv[])
   {
     auto pull = geoshaping_image_testing::Figure8Pull(
       n, queues[panel] < 0 ? 0.0 : lift, queues[panel] < 0 ? 0 : queues[panel]);
-    vtkNew<vtkElevationFilter> elevation;
-    elevation->SetInputConnection(pull->GetOutputPort());
-    elevation->SetLowPoint(0.0, 0.0, 0.0);
-    elevation->SetHighPoint(0.0, 0.0, lift);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(elevation->GetOutputPort());
-    mapper->SetLookupTable(heights);
-    mapper->UseLookupTableScalarRangeOn();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
+    vtkSmartPointer<vtkActor> actor = geoshaping_image_testing::ElevationActor(pull, lift, heights);
     vtkNew<vtkRenderer> renderer;
     renderer->AddActor(actor);
     renderer->SetBackground(0.55, 0.6, 0.68);

@@ -6,7 +6,8 @@ mpi_deform.py does, deforms it with ChainMailDeformation and one envelope refine
   OUT/edges.npy   the undistributed mesh's edges as global id pairs (rank 0's whole copy);
   OUT/stats.json  the filter's figures (all ranks' totals).
 Arguments: SCENE OUT [SOLVER] (surface or slab; SOLVER Envelope by default: another one is
-refused on more than one rank, and the output is the undeformed input)."""
+refused on more than one rank, and the output is the undeformed input; "Obstacles" keeps
+Envelope and connects an obstacle below the scene, refused on more than one rank too)."""
 import json
 import os
 import sys
@@ -19,6 +20,8 @@ from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 scene, out = sys.argv[1], sys.argv[2]
 solver = sys.argv[3] if len(sys.argv) > 3 else "Envelope"
+obstacles = solver == "Obstacles"
+solver = "Envelope" if obstacles else solver
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
@@ -43,6 +46,9 @@ chain.CandidateQueue = "FIFO Priority"
 chain.OutputPointsPrecision = "Double"
 chain.RefinementIterations = 1
 chain.RefinementSolver = solver
+if obstacles:
+    chain.Obstacles = [Plane(Origin=[-1e3, -1e3, -1e3], Point1=[1e3, -1e3, -1e3],  # noqa: F405
+                             Point2=[-1e3, 1e3, -1e3])]
 
 ids.UpdatePipeline()
 whole = ids.GetClientSideObject().GetOutputDataObject(0)

@@ -4,7 +4,8 @@ Axes frame) on a scene; the gathered points of 2 and 3 ranks must equal the 1-ra
 bit for bit, the refined point counts agree, and E_link of the gathered output, computed
 here with numpy from the points, the malleability and the filter's default transfer
 curves (an independent computation), is <= 1e-9 L. Then Dykstra on 2 ranks must be
-refused with an error naming what works, leaving the input undeformed.
+refused with an error naming what works, leaving the input undeformed, and so must
+obstacles on 2 ranks (docs/obstacles.md, "Refused").
 Usage: test_mpi_refinement.py SCENE (surface or slab)."""
 import json
 import os
@@ -75,18 +76,21 @@ with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as t
             edges = np.load(os.path.join(out, "edges.npy"))
         print("%d ranks: %d points, %s" % (n, len(results[n]), stats[n]))
 
-    # Dykstra on 2 ranks: refused on every rank, naming what works.
-    cmd, result, errors = run(2, os.path.join(tmp, "dykstra"), "Dykstra")
-    wanted = "use RefinementSolver Envelope with ValidRegionFrame Axes"
-    if result.returncode != 0 or not errors or not all(wanted in e for e in errors) or len(errors) < 2:
-        print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
-        print("FAILED: Dykstra on 2 ranks: expected an error naming '%s' on each rank" % wanted)
-        sys.exit(1)
-    refused = np.load(os.path.join(tmp, "dykstra", "result.npy"))
-    if not np.array_equal(refused[:, 1:4], refused[:, 4:7]):
-        print("FAILED: the refused update deformed its input")
-        sys.exit(1)
-    print("ok: Dykstra on 2 ranks refused on every rank (%s), input unchanged" % errors[0].strip()[:120])
+    # Dykstra, and obstacles, on 2 ranks: refused on every rank with an error naming
+    # what works (or what is missing), the input undeformed.
+    for option, wanted in (("Dykstra", "use RefinementSolver Envelope with ValidRegionFrame Axes"),
+                           ("Obstacles", "Obstacles (obstacle surfaces are not distributed yet)")):
+        cmd, result, errors = run(2, os.path.join(tmp, option), option)
+        if result.returncode != 0 or len(errors) < 2 or not all(wanted in e for e in errors):
+            print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
+            print("FAILED: %s on 2 ranks: expected an error naming '%s' on each rank" % (option, wanted))
+            sys.exit(1)
+        refused = np.load(os.path.join(tmp, option, "result.npy"))
+        if not np.array_equal(refused[:, 1:4], refused[:, 4:7]):
+            print("FAILED: the refused update (%s) deformed its input" % option)
+            sys.exit(1)
+        print("ok: %s on 2 ranks refused on every rank (%s), input unchanged"
+              % (option, errors[0].strip()[:120]))
 
 one = results[1]
 moved = int(np.count_nonzero(np.any(one[:, 1:4] != one[:, 4:7], axis=1)))

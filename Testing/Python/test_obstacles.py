@@ -1,6 +1,7 @@
 """Obstacles through the plugin's proxy: `chain.Obstacles = [fault, lower]` takes any
 number of surfaces on port 1, the pull stops above the lower one, the grasp reports it,
-and removing the obstacles gives the free pull back."""
+removing the obstacles gives the free pull back, and `chain.SlidingArray` keeps a
+horizon's cut-off line on its fault while it moves along it."""
 from geoshaping_testing import check, load
 from paraview import servermanager as sm
 from paraview.simple import *  # noqa: F401,F403
@@ -39,4 +40,31 @@ z = sm.Fetch(chain).GetBounds()[4]
 check(z == -10.0, "without obstacles the pull goes through (lowest z %r)" % z)
 check(chain.GetProperty("LastGraspObstacleFraction").GetElement(0) == 1.0,
       "and the grasp is free")
+
+# Sliding: a horizon x in [0, 10] cut off by the fault x = 10 - 0.5 z, its last column
+# flagged OnFault; pulled down, that column slides down the fault and stays on it.
+import numpy as np  # noqa: E402
+from geoshaping_testing import points  # noqa: E402
+
+cut = Triangulate(Input=Plane(Origin=[0, 0, 0], Point1=[10, 0, 0], Point2=[0, 20, 0],
+                              XResolution=10, YResolution=20))
+flagged = Calculator(Input=cut, ResultArrayName="OnFault", Function="coordsX >= 9.5",
+                     ResultArrayType="Int")
+dipping = Plane(Origin=[15, -5, -10], Point1=[15, 25, -10], Point2=[5, -5, 10])
+slide = ChainMailDeformation(Input=flagged)  # noqa: F405
+slide.OutputPointsPrecision = "Double"
+slide.StretchRange = [1.5, 1.5]
+slide.CompressionRange = [0.75, 0.75]
+slide.ShearRange = [0.05, 0.05]
+slide.GraspPointId = 10 * 11 + 5
+slide.Displacement = [0.0, 0.0, -4.0]
+slide.Obstacles = [dipping]
+check(slide.SlidingArray[1] == "None", "SlidingArray is None by default")
+slide.SlidingArray = ["POINTS", "OnFault"]
+x = points(slide)
+on = np.arange(len(x)) % 11 == 10
+off_fault = np.abs(x[:, 0] + 0.5 * x[:, 2] - 10.0) / np.sqrt(1.25)
+check(off_fault[on].max() <= 1e-9, "the cut-off line stays on the fault (%r)" % off_fault[on].max())
+check(x[on, 2].max() < -0.25 and x[10 * 11 + 10, 2] < -2.0,
+      "and slides down it (z %r ... %r)" % (x[on, 2].min(), x[on, 2].max()))
 print("obstacles: ok")

@@ -58,8 +58,8 @@ for i in range(sm_chain.GetNumberOfPropertyGroups()):
 check(list(groups) == ["Malleability", "Grasp", "How the pull spreads", "Pins", "Refinement",
                        "Obstacles", "Editing", "Diagnostics"],
       "ChainMailDeformation's groups: %s" % list(groups))
-check(groups["Obstacles"] == ["Obstacles", "ObstacleClearance"],
-      "the obstacles group holds the surfaces and the clearance")
+check(groups["Obstacles"] == ["Obstacles", "ObstacleClearance", "SlidingArray"],
+      "the obstacles group holds the surfaces, the clearance and the sliding mask")
 check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displacement"] and
       groups["Editing"] == ["CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"],
       "the grasp and edit groups hold their properties")

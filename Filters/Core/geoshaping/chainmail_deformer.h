@@ -74,9 +74,14 @@ struct FrameResult
 //   a segment is a prefix); its other members, sponsored inside the component, receive
 //   f u bit for bit and pass the gate unchanged. (A member reached with another
 //   displacement, under a queue that does not keep rigid regions whole, is gated alone.)
+//   Sliding vertices (set_sliding: on an obstacle, a horizon's cut-off line on its
+//   fault) pass the gate by Obstacles::slide instead: a sliding vertex whose target is
+//   x0 + u lands on the obstacle point nearest to it, so it stays on the surface and
+//   moves along it; it is left out of the rigid components, as pins are.
 //   Cost: O(log T) per move for T obstacle triangles, O(component) once per frame for
-//   a rigid component it enters; the components are found once per malleability, pins
-//   and transfer function (O(mesh)). Without obstacles the gate is one pointer test.
+//   a rigid component it enters; the components are found once per malleability, pins,
+//   sliding mask and transfer function (O(mesh)). Without obstacles the gate is one
+//   pointer test.
 //
 // Arithmetic is double, on displacements u = x - x0 of rest positions stored relative
 // to a local origin, so UTM-sized coordinates lose nothing and a rigid region's
@@ -153,6 +158,11 @@ public:
   bool set_obstacle_clearance(double c);
   double obstacle_clearance() const { return clearance_; }
   const Obstacles* obstacles() const { return obstacles_.get(); }
+  // Optional mask: non-zero = sliding (the vertex lies on an obstacle and stays on it,
+  // see the class comment); nullptr clears. Cleared by set_mesh; without obstacles it
+  // has no effect.
+  void set_sliding(const std::uint8_t* mask);
+  bool sliding(index_t v) const { return !sliding_.empty() && sliding_[inner(v)] != 0; }
 
   // One frame. Invalid grasp, non-finite displacement or pinned grasp: ok == false,
   // the shape returns to rest.
@@ -321,6 +331,7 @@ private:
   std::vector<std::uint32_t> rigid_stamp_;  // == frame_: the component moved this frame
   std::vector<Eigen::Vector3d> rigid_disp_; // by rigid_disp_[component]
   std::vector<std::uint8_t> rank_rigid_;    // rigid per rank when the components were built
+  std::vector<std::uint8_t> sliding_;       // by internal id; empty when none
   double last_fraction_ = 1.0;              // of the last gated move
   std::size_t blocked_ = 0;
   std::uint32_t superstep_ = 0;     // the current superstep of the frame

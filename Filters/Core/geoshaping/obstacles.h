@@ -50,6 +50,12 @@ namespace geoshaping
  *   cylinders and balls, so tau is the smallest of these entries (0 when p is within r
  *   already). Crossing T needs passing at distance 0 < c, so the crossing rule holds.
  *   A vertex that starts closer than c keeps only the crossing rule.
+ * - Sliding (slide(), for a vertex on an obstacle, flagged by the caller). Its target
+ *   p + w is replaced by the obstacle point nearest to it, P(p + w): the vertex stays on
+ *   the obstacle surface while it moves along it. Its straight path p -> P(p + s w) obeys
+ *   the crossing rule with "on the plane" widened to within g of it (both ends lie on
+ *   the surface, where the sign of s is rounding); s = 1 when it does, else the last clear
+ *   s of a bisection to 2^-40 from s = 0 (clear: nothing is nearer p than P(p)) and 1.
  *
  * g = 1e-9 times the diagonal of the obstacles' bounding box: far above the rounding of
  * the positions (1e-16 of their magnitude), so a stopped vertex lies strictly on its
@@ -78,6 +84,9 @@ public:
   // c >= 0 (scene units).
   double admissible_fraction(
     const Eigen::Vector3d& p, const Eigen::Vector3d& w, double clearance = 0.0) const;
+  // The sliding rule above: the displacement of a vertex at rest at p (local) sliding
+  // toward p + w, and in `fraction` the s it reached (1: all of w).
+  Eigen::Vector3d slide(const Eigen::Vector3d& p, const Eigen::Vector3d& w, double& fraction) const;
   // Distance from p (local) to the nearest triangle (infinite when empty); the nearest
   // point in `closest` when given.
   double distance(const Eigen::Vector3d& p, Eigen::Vector3d* closest = nullptr) const;
@@ -92,7 +101,9 @@ private:
     std::uint32_t first = 0, count = 0; // leaf: order_[first, first + count)
   };
   std::int32_t build(std::uint32_t first, std::uint32_t count);
-  double first_crossing(const Eigen::Vector3d& p, const Eigen::Vector3d& w) const;
+  // `touch`: the distance to a plane within which an end counts as on it (0: exactly).
+  double first_crossing(
+    const Eigen::Vector3d& p, const Eigen::Vector3d& w, double touch = 0.0) const;
   double first_contact(const Eigen::Vector3d& p, const Eigen::Vector3d& w, double r) const;
   template<class Visit>
   void visit_segment(
