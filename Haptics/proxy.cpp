@@ -1,6 +1,6 @@
 #include "geoshaping/haptics/proxy.h"
 
-#include "geoshaping/haptics/force_model.h" // closest_point_on_triangle
+#include "geoshaping/triangle_geometry.h"
 
 #include <Eigen/Geometry>
 

@@ -41,11 +41,6 @@ struct ForceParams
 double coupling_stiffness(
   double malleability, const ForceParams& params, const DeviceLimits& limits);
 
-// Nearest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5:
-// Voronoi regions of the vertices, then the edges, else the face).
-Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-  const Eigen::Vector3d& b, const Eigen::Vector3d& c);
-
 struct ForceInput
 {
   Eigen::Vector3d position = Eigen::Vector3d::Zero(); // m, device frame
