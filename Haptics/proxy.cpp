@@ -198,6 +198,11 @@ void ContactProxy::update(const Eigen::Vector3d& x, const std::vector<Eigen::Vec
   }
   if (this->planes_ > 0)
     this->normal_ = this->normals_[0];
+  // Out of passes just after a sweep cleared the planes (a shallow concave crease, where
+  // the sweeps zig-zag between its two faces within the clearance): the proxy is on the
+  // surface, off the stylus, and still in contact; a tick of zero force would be a step.
+  else if ((this->p_ - x).squaredNorm() > clearance * clearance)
+    this->held_ = true;
   this->spring_ = this->p_ - x;
   this->last_x_ = x;
   this->carried_ = 0.0;

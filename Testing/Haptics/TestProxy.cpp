@@ -188,6 +188,30 @@ TEST(Proxy, SlidingOverAConvexCrestGivesNoStepBeyondTheMotionAndCatchesUp)
   EXPECT_GT(proxy.position().z(), -std::abs(proxy.position().y()) * std::tan(angle));
 }
 
+TEST(Proxy, AShallowCreaseKeepsContactOnEveryTick)
+{
+  // A valley of 0.003 rad faces, the stylus 1.4 mm under its crease line: x projected on
+  // either face lands just across the crease, within the clearance band where the sweep
+  // meets nothing, so the sweeps zig-zag between the faces and run out of passes. The
+  // proxy is still on the surface: contact (and force) on every tick.
+  const Soup soup = valley(0.003);
+  ContactProxy proxy;
+  proxy.update({ 0.0, 0.0, 0.01 }, soup, clearance, reach);
+  std::vector<Eigen::Vector3d> path;
+  for (int k = 0; k <= 1000; ++k)
+    path.emplace_back(
+      0.01 * std::sin(2 * pi * k / 1000), 5e-6 * std::sin(2 * pi * k / 100), -0.0014);
+  for (std::size_t k = 0; k < path.size(); ++k)
+  {
+    proxy.update(path[k], soup, clearance, reach);
+    ASSERT_TRUE(proxy.in_contact()) << k;
+    ASSERT_GT(proxy.position().z(), 0.0) << k;
+  }
+  ContactProxy again;
+  again.update({ 0.0, 0.0, 0.01 }, soup, clearance, reach);
+  EXPECT_LT(worst_excess(again, soup, path), 2 * clearance);
+}
+
 TEST(Proxy, NeverCrossesACorrugatedDoubleSheetOverRandomMotions)
 {
   // Two corrugated sheets 1 mm apart, z = f(x) and f(x) - 1 mm, with f a zig-zag of 4 mm

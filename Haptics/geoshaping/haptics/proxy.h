@@ -94,7 +94,8 @@ public:
     double reach);
 
   const Eigen::Vector3d& position() const { return this->p_; }
-  // On a surface, or held off its god-object position by the bound above.
+  // On a surface, or held off its god-object position by the bound above (or, out of
+  // passes in a shallow crease, off the stylus with no plane active).
   bool in_contact() const { return this->planes_ > 0 || this->held_; }
   // The active (or, held off every plane, the last) constraint's normal toward the proxy;
   // zero out of contact.
