@@ -66,18 +66,24 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
     return zero(ForceStatus::non_finite);
   }
 
-  const double k_max = std::max(0.0, limits.max_stiffness);
-  const double b_max = std::max(0.0, limits.max_damping);
-  double k_g = scene.grasping ? std::clamp(scene.grasp_stiffness, 0.0, k_max) : 0.0;
   proxy.carry_over(
     scene.sequence, scene.contact_triangles, params.proxy_reach, params.proxy_clearance);
   proxy.update(in.position, scene.contact_triangles, params.proxy_clearance, params.proxy_reach);
   const bool contact = proxy.in_contact();
-  double k_c = contact ? std::clamp(params.contact_stiffness, 0.0, k_max) : 0.0;
-  // Springs acting together add up: keep their sum within the stable stiffness.
-  if (k_g + k_c > k_max)
+  const double b_max = std::max(0.0, limits.max_damping);
+  const double b_g = scene.grasping ? std::clamp(params.coupling_damping, 0.0, b_max) : 0.0;
+  const double b_c = contact ? std::clamp(params.contact_damping, 0.0, b_max) : 0.0;
+  // The stiffness the passivity rule leaves beside the damping; springs acting together
+  // add up, so their sum is kept within it.
+  const double budget =
+    params.servo_period > 0.0
+      ? std::max(0.0, limits.max_stiffness - 2.0 * (b_g + b_c) / params.servo_period)
+      : 0.0;
+  double k_g = scene.grasping ? std::clamp(scene.grasp_stiffness, 0.0, budget) : 0.0;
+  double k_c = contact ? std::clamp(params.contact_stiffness, 0.0, budget) : 0.0;
+  if (k_g + k_c > budget)
   {
-    const double s = k_max / (k_g + k_c);
+    const double s = budget / (k_g + k_c);
     k_g *= s;
     k_c *= s;
   }
@@ -86,13 +92,11 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   r.in_contact = contact;
   r.proxy = proxy.position();
   if (scene.grasping)
-    r.force += k_g * (scene.grasp_anchor - in.position) -
-               std::clamp(params.coupling_damping, 0.0, b_max) * in.velocity;
+    r.force += k_g * (scene.grasp_anchor - in.position) - b_g * in.velocity;
   if (contact)
   {
     const Eigen::Vector3d n = proxy.normal();
-    r.force += k_c * (proxy.position() - in.position) -
-               std::clamp(params.contact_damping, 0.0, b_max) * in.velocity.dot(n) * n;
+    r.force += k_c * (proxy.position() - in.position) - b_c * in.velocity.dot(n) * n;
   }
 
   const double f_max = std::max(0.0, limits.max_force);

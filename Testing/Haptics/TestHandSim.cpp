@@ -264,15 +264,14 @@ TEST(HandSim, SlidingOverACrestAFoldEdgesAndSliversStaysWithinTheStepBound)
   }
 }
 
-TEST(HandSim, TheDefaultsMeetThePassivityCondition)
+TEST(HandSim, TheSimulatedDeviceMeetsTheRatingThePassivityRuleAssumes)
 {
-  // Colgate & Schenkel: b > K T / 2 + |B|, K the largest stiffness rendered (contact and
-  // grasp together are scaled to the device's max), B the virtual damping.
+  // The rendering keeps K + 2 |B| / T <= K_max (force_model.h), which is passive on any
+  // device whose damping b honours its own stiffness rating, b >= K_max T / 2. The
+  // simulated Touch is such a device (0.6 > 0.5 N s/m), so the runs below are a fair test.
   const DeviceModel device;
-  const ForceParams params;
-  const double K = device.limits.max_stiffness;
-  EXPECT_GT(device.damping, K * device.period / 2 + params.contact_damping);
-  EXPECT_GT(device.damping, K * device.period / 2 + params.coupling_damping);
+  EXPECT_GE(device.damping, device.limits.max_stiffness * device.period / 2);
+  EXPECT_EQ(ForceParams().servo_period, device.period);
 }
 
 namespace
