@@ -3,7 +3,8 @@
 // Ruspini et al. 1997 with a zero radius; CHAI3D's cAlgorithmFingerProxy): a point that
 // follows the stylus but never crosses a triangle of the contact patch. The contact force
 // is a spring from the stylus to it (force_model.h), so a hand that pushes harder than the
-// device can resist feels a saturated force and is never popped through.
+// device can resist feels a saturated force and is never popped through; and the spring
+// changes by no more than the stylus moves in a tick, convex crests included (update()).
 //
 // Contract: no allocation, no lock, O(passes x triangles) per call; the patch is a
 // triangle soup (3 vertices a triangle), two-sided: a triangle holds the proxy on the side
