@@ -1,6 +1,6 @@
 #include "geoshaping/haptics/contact_patch.h"
 
-#include "geoshaping/haptics/force_model.h"
+#include "geoshaping/triangle_geometry.h"
 
 #include <algorithm>
 #include <limits>

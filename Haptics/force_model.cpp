@@ -31,34 +31,6 @@ double coupling_stiffness(
   return limits.max_stiffness * (params.rigid_fraction * (1.0 - m) + params.soft_fraction * m);
 }
 
-Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-  const Eigen::Vector3d& b, const Eigen::Vector3d& c)
-{
-  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0)
-    return a;
-  const Eigen::Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3)
-    return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-    return a + (d1 / (d1 - d3)) * ab;
-  const Eigen::Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6)
-    return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-    return a + (d2 / (d2 - d6)) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  const double denom = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
-}
-
 namespace
 {
 
@@ -94,18 +66,24 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
     return zero(ForceStatus::non_finite);
   }
 
-  const double k_max = std::max(0.0, limits.max_stiffness);
-  const double b_max = std::max(0.0, limits.max_damping);
-  double k_g = scene.grasping ? std::clamp(scene.grasp_stiffness, 0.0, k_max) : 0.0;
   proxy.carry_over(
     scene.sequence, scene.contact_triangles, params.proxy_reach, params.proxy_clearance);
   proxy.update(in.position, scene.contact_triangles, params.proxy_clearance, params.proxy_reach);
   const bool contact = proxy.in_contact();
-  double k_c = contact ? std::clamp(params.contact_stiffness, 0.0, k_max) : 0.0;
-  // Springs acting together add up: keep their sum within the stable stiffness.
-  if (k_g + k_c > k_max)
+  const double b_max = std::max(0.0, limits.max_damping);
+  const double b_g = scene.grasping ? std::clamp(params.coupling_damping, 0.0, b_max) : 0.0;
+  const double b_c = contact ? std::clamp(params.contact_damping, 0.0, b_max) : 0.0;
+  // The stiffness the passivity rule leaves beside the damping; springs acting together
+  // add up, so their sum is kept within it.
+  const double budget =
+    params.servo_period > 0.0
+      ? std::max(0.0, limits.max_stiffness - 2.0 * (b_g + b_c) / params.servo_period)
+      : 0.0;
+  double k_g = scene.grasping ? std::clamp(scene.grasp_stiffness, 0.0, budget) : 0.0;
+  double k_c = contact ? std::clamp(params.contact_stiffness, 0.0, budget) : 0.0;
+  if (k_g + k_c > budget)
   {
-    const double s = k_max / (k_g + k_c);
+    const double s = budget / (k_g + k_c);
     k_g *= s;
     k_c *= s;
   }
@@ -114,13 +92,11 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   r.in_contact = contact;
   r.proxy = proxy.position();
   if (scene.grasping)
-    r.force += k_g * (scene.grasp_anchor - in.position) -
-               std::clamp(params.coupling_damping, 0.0, b_max) * in.velocity;
+    r.force += k_g * (scene.grasp_anchor - in.position) - b_g * in.velocity;
   if (contact)
   {
     const Eigen::Vector3d n = proxy.normal();
-    r.force += k_c * (proxy.position() - in.position) -
-               std::clamp(params.contact_damping, 0.0, b_max) * in.velocity.dot(n) * n;
+    r.force += k_c * (proxy.position() - in.position) - b_c * in.velocity.dot(n) * n;
   }
 
   const double f_max = std::max(0.0, limits.max_force);

@@ -1,9 +1,10 @@
 #include "geoshaping/haptics/proxy.h"
 
-#include "geoshaping/haptics/force_model.h" // closest_point_on_triangle
+#include "geoshaping/triangle_geometry.h"
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 
 namespace geoshaping::haptics
@@ -47,6 +48,19 @@ bool nearest_within(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>
   }
   return found;
 }
+
+// Where the segment a -> b leaves the ball (c, r) that a is in (or on): a + t (b - a)
+// with t the larger root of |a - c + t (b - a)| = r, clamped to [0, 1].
+Eigen::Vector3d exit_point(
+  const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double r)
+{
+  const Eigen::Vector3d u = a - c, w = b - a;
+  const double A = w.squaredNorm(), B = u.dot(w), C = u.squaredNorm() - r * r;
+  if (!(A > 0.0))
+    return a;
+  const double t = (-B + std::sqrt(std::max(0.0, B * B - A * C))) / A;
+  return a + std::clamp(t, 0.0, 1.0) * w;
+}
 } // namespace
 
 SegmentHit first_hit(
@@ -89,6 +103,9 @@ void ContactProxy::reset()
   this->placed_ = false;
   this->planes_ = 0;
   this->has_foot_ = false;
+  this->bounded_ = false;
+  this->held_ = false;
+  this->carried_ = 0.0;
 }
 
 void ContactProxy::place(const Eigen::Vector3d& p)
@@ -136,31 +153,60 @@ void ContactProxy::update(const Eigen::Vector3d& x, const std::vector<Eigen::Vec
 {
   if (!this->placed_)
     this->place(x);
+  // The ball the proxy stays in (proxy.h); a small relative slack so that rounding at its
+  // boundary, where the proxy starts, does not read as leaving it.
+  const Eigen::Vector3d centre = x + this->spring_;
+  const double radius = (x - this->last_x_).norm() + this->carried_;
+  const double radius2 = radius * radius * (1.0 + 1e-12) + 1e-30;
   this->planes_ = 0;
+  this->held_ = false;
   for (int pass = 0; pass < max_passes; ++pass)
   {
     const Eigen::Vector3d goal = this->target(x);
     const Eigen::Vector3d d = goal - this->p_;
     if (d.squaredNorm() <= clearance * clearance * 1e-6)
       break;
-    const SegmentHit hit = first_hit(this->p_, d, soup);
+    // The sweep looks `clearance` past its goal, so that it never ends on (or within
+    // rounding of) a triangle, where the side it came from would be lost.
+    const Eigen::Vector3d ahead = d * (1.0 + clearance / d.norm());
+    const SegmentHit hit = first_hit(this->p_, ahead, soup);
+    // Stop on the triangle, `clearance` off it on the proxy's side; never behind the start.
+    Eigen::Vector3d next = goal;
+    if (hit.hit)
+    {
+      const Eigen::Vector3d stop = this->p_ + hit.t * ahead + clearance * hit.normal;
+      next = (stop - this->p_).dot(d) > 0.0 ? stop : this->p_;
+    }
+    if (this->bounded_ && (next - centre).squaredNorm() > radius2)
+    {
+      this->p_ = exit_point(this->p_, next, centre, radius);
+      this->held_ = true;
+      break;
+    }
+    this->p_ = next;
     if (!hit.hit)
     {
-      this->p_ = goal;
       if (this->planes_ == 0)
         break;
+      this->normal_ = this->normals_[0];
       this->planes_ = 0;
       continue;
     }
-    // Stop on the triangle, `clearance` off it on the proxy's side; never behind the start.
-    const Eigen::Vector3d on = this->p_ + hit.t * d;
-    const Eigen::Vector3d stop = on + clearance * hit.normal;
-    if ((stop - this->p_).dot(d) > 0.0)
-      this->p_ = stop;
     this->add_plane(hit.normal);
     if (this->planes_ == max_planes)
       break;
   }
+  if (this->planes_ > 0)
+    this->normal_ = this->normals_[0];
+  // Out of passes just after a sweep cleared the planes (a shallow concave crease, where
+  // the sweeps zig-zag between its two faces within the clearance): the proxy is on the
+  // surface, off the stylus, and still in contact; a tick of zero force would be a step.
+  else if ((this->p_ - x).squaredNorm() > clearance * clearance)
+    this->held_ = true;
+  this->spring_ = this->p_ - x;
+  this->last_x_ = x;
+  this->carried_ = 0.0;
+  this->bounded_ = true;
   this->remember_foot(soup, reach);
 }
 
@@ -185,10 +231,14 @@ void ContactProxy::carry_over(
     return;
   if (m.dot(this->foot_normal_) < 0.0)
     m = -m;
+  const Eigen::Vector3d before = this->p_;
   this->p_ += f - this->foot_;
+  // Only a surface that came through (or onto) the proxy pushes it: one re-sent in place
+  // leaves it where it is, even in a fold, where it sits nearer one face than clearance.
   const double h = (this->p_ - f).dot(m);
-  if (h < clearance)
+  if (h < 1e-3 * clearance)
     this->p_ += (clearance - h) * m;
+  this->carried_ += (this->p_ - before).norm();
   this->foot_ = f;
   this->foot_normal_ = m;
 }

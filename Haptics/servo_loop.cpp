@@ -9,11 +9,21 @@
 namespace geoshaping::haptics
 {
 
+namespace
+{
+// The force model's zero-order hold period is the loop's.
+ServoConfig with_servo_period(ServoConfig config)
+{
+  config.force.servo_period = std::chrono::duration<double>(config.period).count();
+  return config;
+}
+} // namespace
+
 ServoLoop::ServoLoop(HapticDevice& device, ServoConfig config)
   : device_(device)
-  , config_(config)
+  , config_(with_servo_period(config))
   , periods_(config.period)
-  , tick_(config.force, config.velocity_filter_s)
+  , tick_(config_.force, config.velocity_filter_s)
 {
 }
 

@@ -1,5 +1,7 @@
 #include "geoshaping/obstacles.h"
 
+#include "geoshaping/triangle_geometry.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -15,35 +17,6 @@ namespace
 using Vec = Eigen::Vector3d;
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t leaf_size = 4;
-
-// The point of triangle (a, b, c) nearest to p (Ericson, Real-Time Collision Detection,
-// 5.1.5: Voronoi regions of the vertices, then of the edges, else the face).
-Vec closest_on_triangle(const Vec& p, const Vec& a, const Vec& b, const Vec& c)
-{
-  const Vec ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0)
-    return a;
-  const Vec bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3)
-    return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-    return a + (d1 / (d1 - d3)) * ab;
-  const Vec cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6)
-    return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-    return a + (d2 / (d2 - d6)) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  const double denom = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
-}
 
 // Smaller root s in [0, 1] of A s^2 + B s + C = 0 (A > 0), else inf.
 double entry_root(double A, double B, double C)
@@ -359,7 +332,7 @@ double Obstacles::distance(const Vec& p, Vec* closest) const
       for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
       {
         const auto& k = tri_[order_[i]];
-        const Vec x = closest_on_triangle(
+        const Vec x = closest_point_on_triangle(
           p, points_[std::size_t(k[0])], points_[std::size_t(k[1])], points_[std::size_t(k[2])]);
         const double d2 = (x - p).squaredNorm();
         if (d2 < best2)

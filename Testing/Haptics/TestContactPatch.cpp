@@ -1,5 +1,5 @@
 #include "geoshaping/haptics/contact_patch.h"
-#include "geoshaping/haptics/force_model.h"
+#include "geoshaping/triangle_geometry.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +30,7 @@ TEST(ContactPatch, KeepNearestMatchesABruteForceSortAndDropsIncompleteTriangles)
   for (std::size_t t = 0; t < 300; ++t)
   {
     const Eigen::Vector3d q =
-      closest_point_on_triangle(p, soup[3 * t], soup[3 * t + 1], soup[3 * t + 2]);
+      geoshaping::closest_point_on_triangle(p, soup[3 * t], soup[3 * t + 1], soup[3 * t + 2]);
     brute.emplace_back((q - p).squaredNorm(), t);
   }
   std::sort(brute.begin(), brute.end());

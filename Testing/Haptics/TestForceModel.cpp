@@ -93,9 +93,45 @@ TEST(ForceModel, StiffnessIsClampedToTheDeviceMaximum)
 {
   DeviceLimits limits;
   limits.max_stiffness = 500.0;
-  const ForceResult r =
-    compute_force(at({ 0.001, 0, 0 }), grasp({ 0, 0, 0 }, 1e6), ForceParams(), limits);
+  ForceParams params;
+  params.coupling_damping = 0.0;
+  const ForceResult r = compute_force(at({ 0.001, 0, 0 }), grasp({ 0, 0, 0 }, 1e6), params, limits);
   EXPECT_NEAR(r.force.x(), -0.5, 1e-12);
+}
+
+TEST(ForceModel, VirtualDampingCostsStiffnessByThePassivityRule)
+{
+  // K + 2 |B| / T <= K_max: at 1 kHz the default coupling damping (0.05 N s/m) leaves
+  // 1000 - 100 = 900 N/m of the 1000 N/m rating; with 0.2 N s/m of contact damping as
+  // well, in contact, 1000 - 500 = 500 N/m for both springs together (600 + 600 asked).
+  const DeviceLimits limits;
+  ForceParams params;
+  EXPECT_NEAR(compute_force(at({ 0.001, 0, 0 }), grasp({ 0, 0, 0 }, 1e6), params, limits).force.x(),
+    -0.9, 1e-12);
+  // The rule read at a 0.5 ms period: the same damping costs 2 |B| / T = 200 N/m.
+  params.servo_period = 0.0005;
+  EXPECT_NEAR(compute_force(at({ 0.001, 0, 0 }), grasp({ 0, 0, 0 }, 1e6), params, limits).force.x(),
+    -0.8, 1e-12);
+  params.servo_period = 0.001;
+  params.contact_damping = 0.2;
+  params.contact_stiffness = 600.0;
+  SceneSnapshot scene = floor_scene();
+  scene.grasping = true;
+  scene.grasp_anchor = Eigen::Vector3d(0.001, 0, -0.002);
+  scene.grasp_stiffness = 600.0;
+  ContactProxy proxy;
+  geoshaping::haptics::compute_force(at({ 0, 0, 0.003 }), scene, params, limits, proxy);
+  const ForceResult r =
+    geoshaping::haptics::compute_force(at({ 0, 0, -0.002 }), scene, params, limits, proxy);
+  ASSERT_TRUE(r.in_contact);
+  // Still (velocity zero): k_g = k_c = 250 N/m; the grasp pulls 1 mm along x, the proxy
+  // (clearance above the floor) 2 mm up.
+  EXPECT_NEAR(r.force.x(), 250.0 * 0.001, 1e-12);
+  EXPECT_NEAR(r.force.z(), 250.0 * (0.002 + params.proxy_clearance), 1e-9);
+  // A period that is no number renders no stiffness rather than an unbounded one.
+  params.servo_period = std::nan("");
+  EXPECT_EQ(compute_force(at({ 0.001, 0, 0 }), grasp({ 0, 0, 0 }, 1e6), params, limits).force,
+    Eigen::Vector3d::Zero());
 }
 
 TEST(ForceModel, ForceIsScaledDownToTheDeviceMaximumKeepingItsDirection)
@@ -162,20 +198,6 @@ TEST(ForceModel, AFaultResetsTheProxy)
   EXPECT_EQ(r.status, ForceStatus::stale_scene);
   EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
   EXPECT_FALSE(proxy.placed());
-}
-
-TEST(ForceModel, ClosestPointOnTriangleCoversFaceEdgeAndVertex)
-{
-  const Eigen::Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  EXPECT_TRUE(
-    closest_point_on_triangle({ 0.2, 0.3, 5 }, a, b, c).isApprox(Eigen::Vector3d(0.2, 0.3, 0)));
-  EXPECT_TRUE(
-    closest_point_on_triangle({ 0.5, -1, 0 }, a, b, c).isApprox(Eigen::Vector3d(0.5, 0, 0)));
-  EXPECT_TRUE(
-    closest_point_on_triangle({ 1, 1, 0 }, a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
-  EXPECT_EQ(closest_point_on_triangle({ -1, -1, 2 }, a, b, c), a);
-  EXPECT_EQ(closest_point_on_triangle({ 3, -0.5, 0 }, a, b, c), b);
-  EXPECT_EQ(closest_point_on_triangle({ -0.1, 4, 0 }, a, b, c), c);
 }
 
 TEST(ForceModel, ForceIsZeroWhenTheDeviceReportsAnError)

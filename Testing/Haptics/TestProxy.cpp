@@ -155,6 +155,63 @@ TEST(Proxy, PressingIntoAConcaveFoldProjectsOntoTheWedge)
   EXPECT_GT(proxy.position().z(), 0.0);
 }
 
+TEST(Proxy, SlidingOverAConvexCrestGivesNoStepBeyondTheMotionAndCatchesUp)
+{
+  // A ridge along the x axis, its faces falling at 30 degrees (valley() upside down); the
+  // stylus, 2 mm deep, slides across the crest line at 0.05 mm a tick and on down the far
+  // face. A god-object would turn the spring from one face's normal to the other's in one
+  // tick (a step of about 1 mm); the proxy turns it within the motion and is back on its
+  // god-object position, the projection onto the far face, 5 mm past the crest.
+  const double angle = pi / 6, depth = 0.002;
+  const Soup soup = valley(-angle);
+  auto below = [&](double y)
+  { return Eigen::Vector3d(0.001, y, -std::abs(y) * std::tan(angle) - depth); };
+  ContactProxy proxy;
+  proxy.update({ 0.001, -0.01, 0.01 }, soup, clearance, reach);
+  std::vector<Eigen::Vector3d> path;
+  for (int k = 0; k <= 300; ++k)
+    path.push_back(below(-0.01 + 0.00005 * k));
+  EXPECT_LT(worst_excess(proxy, soup, path), 1e-12);
+  const Eigen::Vector3d n(0, std::sin(angle), std::cos(angle));
+  const Eigen::Vector3d on_face = path.back() + (depth * std::cos(angle) + clearance) * n;
+  EXPECT_LT((proxy.position() - on_face).norm(), 1e-9);
+  EXPECT_TRUE(proxy.in_contact());
+  EXPECT_LT((proxy.normal() - n).norm(), 1e-12);
+  // Back over the crest the other way, and a stylus stopped just past it: still within
+  // the motion, the proxy held still.
+  std::vector<Eigen::Vector3d> back;
+  for (int k = 0; k <= 204; ++k)
+    back.push_back(below(0.005 - 0.00005 * k));
+  back.insert(back.end(), 50, back.back());
+  EXPECT_LT(worst_excess(proxy, soup, back), 1e-12);
+  EXPECT_TRUE(proxy.in_contact());
+  EXPECT_GT(proxy.position().z(), -std::abs(proxy.position().y()) * std::tan(angle));
+}
+
+TEST(Proxy, AShallowCreaseKeepsContactOnEveryTick)
+{
+  // A valley of 0.003 rad faces, the stylus 1.4 mm under its crease line: x projected on
+  // either face lands just across the crease, within the clearance band where the sweep
+  // meets nothing, so the sweeps zig-zag between the faces and run out of passes. The
+  // proxy is still on the surface: contact (and force) on every tick.
+  const Soup soup = valley(0.003);
+  ContactProxy proxy;
+  proxy.update({ 0.0, 0.0, 0.01 }, soup, clearance, reach);
+  std::vector<Eigen::Vector3d> path;
+  for (int k = 0; k <= 1000; ++k)
+    path.emplace_back(
+      0.01 * std::sin(2 * pi * k / 1000), 5e-6 * std::sin(2 * pi * k / 100), -0.0014);
+  for (std::size_t k = 0; k < path.size(); ++k)
+  {
+    proxy.update(path[k], soup, clearance, reach);
+    ASSERT_TRUE(proxy.in_contact()) << k;
+    ASSERT_GT(proxy.position().z(), 0.0) << k;
+  }
+  ContactProxy again;
+  again.update({ 0.0, 0.0, 0.01 }, soup, clearance, reach);
+  EXPECT_LT(worst_excess(again, soup, path), 2 * clearance);
+}
+
 TEST(Proxy, NeverCrossesACorrugatedDoubleSheetOverRandomMotions)
 {
   // Two corrugated sheets 1 mm apart, z = f(x) and f(x) - 1 mm, with f a zig-zag of 4 mm

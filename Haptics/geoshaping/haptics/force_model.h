@@ -16,14 +16,18 @@ struct ForceParams
   // and a soft (m = 1) grasped region: rigid rock pulls back harder.
   double rigid_fraction = 0.8;
   double soft_fraction = 0.15;
-  // N s/m, while grasping; small so that the passivity condition (below) holds at the
-  // device's max stiffness: b > K T / 2 + |B| leaves 0.1 N s/m on a Touch-like device.
+  // N s/m, while grasping. Small: by the passivity rule (below) each N s/m of virtual
+  // damping costs 2 / T = 2000 N/m of stiffness; 0.05 leaves a rigid grasp (0.8 of the
+  // max) its full stiffness.
   double coupling_damping = 0.05;
 
   double contact_stiffness = 800.0; // N/m, the spring from the stylus to the proxy
-  // N s/m, along the contact normal. Zero: by the passivity condition (below) virtual
-  // damping costs stiffness one for one, and the device's own damping is what passivates.
+  // N s/m, along the contact normal. Zero, so that contact may use the device's whole
+  // stiffness rating (the passivity rule below).
   double contact_damping = 0.0;
+  // s, the zero-order hold period T of the passivity rule: the servo period (ServoLoop
+  // sets it from ServoConfig::period).
+  double servo_period = 0.001;
   double proxy_clearance = 1e-7; // m the proxy keeps off a triangle, on its side
   double proxy_reach = 0.005;    // m: how far a new patch's surface may have moved and
                                  // still carry the proxy with it (ContactProxy::carry_over)
@@ -40,11 +44,6 @@ struct ForceParams
 // m clamped to [0, 1]; NaN m is treated as rigid (as the deformer does).
 double coupling_stiffness(
   double malleability, const ForceParams& params, const DeviceLimits& limits);
-
-// Nearest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5:
-// Voronoi regions of the vertices, then the edges, else the face).
-Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-  const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
 struct ForceInput
 {
@@ -69,17 +68,22 @@ struct ForceResult
 //   coupling (while grasping):  F_g = k_g (anchor - x) - b_g v
 //   contact:                    F_c = k_c (p - x) - b_c (v.n) n      (p = x out of contact)
 //
-// Stability: k_g and k_c are each clamped to the device's max stiffness K, and scaled
-// down together if their sum exceeds it; b_g, b_c to its max damping. The total force
-// is scaled down to max force (direction kept, norm computed without overflow): a
-// projection onto a ball, so saturation never makes a step larger than the unsaturated
-// force's. Passivity (Colgate & Schenkel 1997, a spring K and a virtual damper B behind
-// a zero-order hold of period T, on a device of physical damping b): the display is
-// passive if
+// Passivity (Colgate & Schenkel 1997: a spring K and a virtual damper B behind a
+// zero-order hold of period T, on a device of physical damping b) needs
 //
-//   b > K T / 2 + |B|,
+//   b > K T / 2 + |B|.
 //
-// with K = k_g + k_c <= K_max and B = b_g + b_c; docs/haptics.md gives the numbers.
+// b is not a figure a device reports; its nominal max stiffness K_max is (OpenHaptics'
+// HD_NOMINAL_MAX_STIFFNESS, rated at its 1 kHz servo rate), and rating K_max stable with
+// no virtual damping says b >= K_max T / 2. So the rendering keeps
+//
+//   K + 2 |B| / T <= K_max,        K = k_g + k_c,  B = b_g + b_c (those acting this tick),
+//
+// which gives K T / 2 + |B| <= K_max T / 2 <= b whatever b is: b_g, b_c are clamped to the
+// device's max damping, then k_g and k_c each to the budget K_max - 2 |B| / T (at least
+// 0) and scaled down together if their sum exceeds it. The total force is scaled down to
+// max force (direction kept, norm computed without overflow): a projection onto a ball,
+// so saturation never makes a step larger than the unsaturated force's.
 //
 // Faults give exactly zero (never NaN), with the reason in `status`, and reset the proxy
 // (nothing is known of the side the stylus is on when rendering resumes): device error,

@@ -33,8 +33,10 @@ Eigen::Vector3d hand_force_at(const std::vector<HandKey>& keys, double t);
 // servo period (zero-order hold), the tip kept in the workspace box (a hard stop).
 struct DeviceModel
 {
-  double mass = 0.045;       // kg, apparent mass at the tip
-  double damping = 0.6;      // N s/m, viscous
+  double mass = 0.045; // kg, apparent mass at the tip
+  // N s/m, viscous: a model value, above the K_max T / 2 = 0.5 its stiffness rating
+  // implies (the passivity rule of force_model.h), not a measured one.
+  double damping = 0.6;
   double friction = 0.05;    // N, Coulomb
   double resolution = 55e-6; // m, position quantum
   double period = 0.001;     // s, servo period

@@ -3,7 +3,8 @@
 // Ruspini et al. 1997 with a zero radius; CHAI3D's cAlgorithmFingerProxy): a point that
 // follows the stylus but never crosses a triangle of the contact patch. The contact force
 // is a spring from the stylus to it (force_model.h), so a hand that pushes harder than the
-// device can resist feels a saturated force and is never popped through.
+// device can resist feels a saturated force and is never popped through; and the spring
+// changes by no more than the stylus moves in a tick, convex crests included (update()).
 //
 // Contract: no allocation, no lock, O(passes x triangles) per call; the patch is a
 // triangle soup (3 vertices a triangle), two-sided: a triangle holds the proxy on the side
@@ -49,10 +50,11 @@ public:
   // and n that triangle's normal toward the proxy, f' the nearest point of the new patch
   // to f and n' its triangle's normal turned toward n (n'.n >= 0):
   //
-  //   p <- p + (f' - f),  then  p <- p + max(0, c - (p - f').n') n'
+  //   p <- p + (f' - f),  then, if h = (p - f').n' < c / 1000,  p <- p + (c - h) n'
   //
-  // (c: clearance) if |f' - f| <= reach; else p stays. The same surface re-sent gives
-  // f' = f: the proxy does not move, so replacing the patch adds no force step.
+  // (c: clearance; the surface came through or onto p) if |f' - f| <= reach; else p
+  // stays. The same surface re-sent gives f' = f: the proxy does not move, so replacing
+  // the patch adds no force step.
   void carry_over(std::uint64_t sequence, const std::vector<Eigen::Vector3d>& soup, double reach,
     double clearance);
 
@@ -68,18 +70,39 @@ public:
   // cleared and one more sweep aims at x itself (a plane the stylus has left, or a convex
   // edge the proxy has slid past, stops constraining; one still pushed against is met
   // again at once). Planes parallel to an active one replace it. At most max_passes
-  // sweeps. The result is the local minimum of |p - x| on the proxy's side (the
+  // sweeps. Their end is the local minimum of |p - x| on the proxy's side (the
   // god-object): on one plane the projection of x, in a concave fold or corner the
-  // projection onto the wedge, i.e. onto a convex set, so |d(p - x)| <= |dx|.
+  // projection onto the wedge, i.e. onto a convex set, so |d(p - x)| <= |dx| there.
+  //
+  // Past a convex crest (a ridge, the top of a fault step) that end jumps: the stylus,
+  // pressed d deep and slid past the crest line, is nearer the next face, so the spring
+  // e = p - x would turn from d n1 to about d cos(theta) n2 in one tick. The sweeps are
+  // therefore followed only while the spring stays within one tick of motion of the last
+  // one: with x', e' the stylus and spring of the previous update and s the distance
+  // carry_over() moved the proxy since,
+  //
+  //   |(p - x) - e'| <= |x - x'| + s,
+  //
+  // i.e. p stays in the ball of that radius around x + e'. The first sweep point out of the
+  // ball is cut at the ball's boundary and the proxy is held there, off its god-object
+  // position and still in contact (in_contact()); it catches up as the stylus moves on, so a
+  // crest is felt rounded over about the depth d, and a proxy held still stays put (a
+  // still stylus feels a constant force). The start p' + s is in the ball, every sweep
+  // point is on the proxy's side and each sweep only shortens |p - x|, so the hold
+  // neither crosses a triangle nor adds spring energy. The first update after reset() or
+  // place() is not bounded.
   void update(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& soup, double clearance,
     double reach);
 
   const Eigen::Vector3d& position() const { return this->p_; }
-  bool in_contact() const { return this->planes_ > 0; }
-  // The first active plane's normal (toward the proxy), zero out of contact.
+  // On a surface, or held off its god-object position by the bound above (or, out of
+  // passes in a shallow crease, off the stylus with no plane active).
+  bool in_contact() const { return this->planes_ > 0 || this->held_; }
+  // The active (or, held off every plane, the last) constraint's normal toward the proxy;
+  // zero out of contact.
   Eigen::Vector3d normal() const
   {
-    return this->planes_ > 0 ? this->normals_[0] : Eigen::Vector3d::Zero();
+    return this->in_contact() ? this->normal_ : Eigen::Vector3d::Zero();
   }
 
 private:
@@ -91,6 +114,15 @@ private:
   Eigen::Vector3d normals_[max_planes];
   int planes_ = 0;
   bool placed_ = false;
+  // The step bound: the stylus and the spring p - x of the last update, the distance
+  // carry_over() moved the proxy since, whether the proxy is held off its god-object
+  // position, and the normal in_contact() reports.
+  Eigen::Vector3d last_x_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d spring_ = Eigen::Vector3d::Zero();
+  double carried_ = 0.0;
+  bool bounded_ = false;
+  bool held_ = false;
+  Eigen::Vector3d normal_ = Eigen::Vector3d::Zero();
   // The proxy's nearest point on the patch and that triangle's normal toward the proxy.
   Eigen::Vector3d foot_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d foot_normal_ = Eigen::Vector3d::Zero();
