@@ -5,7 +5,12 @@
 #include "geoshaping/brush.h"
 #include "geoshaping/haptics/openhaptics_device.h"
 
+#include "pqHapticsUndo.h"
+
+#include <pqActiveObjects.h>
+#include <pqApplicationCore.h>
 #include <pqCoreUtilities.h>
+#include <pqUndoStack.h>
 
 #include <QComboBox>
 #include <QDir>
@@ -53,6 +58,16 @@ pqHapticsDockPanel::pqHapticsDockPanel(QWidget* parent)
     &pqHapticsDockPanel::setPaintValue);
   QObject::connect(this->Interactor, &pqHapticsInteractor::editsChanged, this,
     &pqHapticsDockPanel::onEditsChanged);
+  // The edit count is true whoever changed the list.
+  pqApplicationCore* core = pqApplicationCore::instance();
+  if (pqUndoStack* stack = core->getUndoStack())
+  {
+    QObject::connect(
+      stack, &pqUndoStack::stackChanged, this, &pqHapticsDockPanel::refreshEdits);
+  }
+  QObject::connect(core, &pqApplicationCore::stateLoaded, this, &pqHapticsDockPanel::refreshEdits);
+  QObject::connect(&pqActiveObjects::instance(), &pqActiveObjects::sourceChanged, this,
+    &pqHapticsDockPanel::refreshEdits);
 }
 
 pqHapticsDockPanel::~pqHapticsDockPanel() = default;
@@ -292,7 +307,18 @@ void pqHapticsDockPanel::runEdit(int command)
 
 void pqHapticsDockPanel::onEditsChanged()
 {
-  const interactor::EditResult& r = this->Interactor->lastEditResult();
+  this->showEdits(this->Interactor->lastEditResult());
+}
+
+void pqHapticsDockPanel::refreshEdits()
+{
+  this->Interactor->proxies().refresh();
+  const auto* deformation = this->Interactor->proxies().deformation();
+  this->showEdits(pqHapticsUndo::status(deformation ? deformation->getProxy() : nullptr));
+}
+
+void pqHapticsDockPanel::showEdits(const interactor::EditResult& r)
+{
   QString text = QString("Edits: %1, redoable %2").arg(r.edits).arg(r.redoable);
   if (!r.message.empty())
   {
@@ -348,6 +374,7 @@ bool pqHapticsDockPanel::start()
   }
   QString error;
   const bool started = this->Interactor->start(setups, error);
+  this->refreshEdits();
   this->Status->setText(started ? QString() : error);
   this->StartStop->setText(started ? "Stop" : "Start");
   for (QShortcut* shortcut : this->Shortcuts)
