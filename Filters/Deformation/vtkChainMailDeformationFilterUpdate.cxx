@@ -491,8 +491,8 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
   // writes points but moves none shows the rest shape (released, undone, redone, reset)
   // and makes them exact again, once, so they shrink back (the Information panel, Reset
   // Camera).
-  const bool settled = deformer.moved().empty() && state.PassesWritten.empty() &&
-                       changed->GetNumberOfTuples() > 0;
+  const bool settled =
+    deformer.moved().empty() && state.PassesWritten.empty() && changed->GetNumberOfTuples() > 0;
   outPoints->PointsChanged(changed->GetPointer(0), changed->GetNumberOfTuples(), settled);
   output->SetPoints(outPoints);
 

@@ -58,16 +58,24 @@ pqHapticsDockPanel::pqHapticsDockPanel(QWidget* parent)
     &pqHapticsDockPanel::setPaintValue);
   QObject::connect(this->Interactor, &pqHapticsInteractor::editsChanged, this,
     &pqHapticsDockPanel::onEditsChanged);
-  // The edit count is true whoever changed the list.
+  this->followEditSources();
+}
+
+void pqHapticsDockPanel::followEditSources()
+{
+  // The edit count is true whoever changed the list: Load State, Edit > Undo, a panel
+  // button, Python. The undo stack may be made after the dock: Start connects again.
   pqApplicationCore* core = pqApplicationCore::instance();
+  const auto unique = Qt::UniqueConnection;
   if (pqUndoStack* stack = core->getUndoStack())
   {
-    QObject::connect(
-      stack, &pqUndoStack::stackChanged, this, &pqHapticsDockPanel::refreshEdits);
+    QObject::connect(stack, SIGNAL(stackChanged(bool, QString, bool, QString)), this,
+      SLOT(refreshEdits()), unique);
   }
-  QObject::connect(core, &pqApplicationCore::stateLoaded, this, &pqHapticsDockPanel::refreshEdits);
-  QObject::connect(&pqActiveObjects::instance(), &pqActiveObjects::sourceChanged, this,
-    &pqHapticsDockPanel::refreshEdits);
+  QObject::connect(core, SIGNAL(stateLoaded(vtkPVXMLElement*, vtkSMProxyLocator*)), this,
+    SLOT(refreshEdits()), unique);
+  QObject::connect(&pqActiveObjects::instance(), SIGNAL(sourceChanged(pqPipelineSource*)), this,
+    SLOT(refreshEdits()), unique);
 }
 
 pqHapticsDockPanel::~pqHapticsDockPanel() = default;
@@ -374,6 +382,7 @@ bool pqHapticsDockPanel::start()
   }
   QString error;
   const bool started = this->Interactor->start(setups, error);
+  this->followEditSources();
   this->refreshEdits();
   this->Status->setText(started ? QString() : error);
   this->StartStop->setText(started ? "Stop" : "Start");

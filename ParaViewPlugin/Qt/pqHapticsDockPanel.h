@@ -53,6 +53,7 @@ private:
   QWidget* buildPalette();
   QWidget* buildEdits();
   void showEdits(const geoshaping::interactor::EditResult& r);
+  void followEditSources();
 
   pqHapticsInteractor* Interactor = nullptr;
   HandWidgets Hands[2];

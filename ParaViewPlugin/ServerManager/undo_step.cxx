@@ -59,8 +59,8 @@ struct Step::Internals
 {
   std::string Label;
   // Per tracked proxy: ParaView's element holding its state at track() (before = after).
-  std::vector<std::pair<vtkSmartPointer<vtkSMProxy>,
-    vtkSmartPointer<vtkSMRemoteObjectUpdateUndoElement>>>
+  std::vector<
+    std::pair<vtkSmartPointer<vtkSMProxy>, vtkSmartPointer<vtkSMRemoteObjectUpdateUndoElement>>>
     Tracked;
   std::vector<vtkSmartPointer<vtkSMUndoElement>> Elements;
   bool Finished = false;
@@ -115,8 +115,7 @@ bool Step::finish()
       elements.emplace_back(change);
     }
   }
-  elements.insert(
-    elements.end(), this->Internal->Elements.begin(), this->Internal->Elements.end());
+  elements.insert(elements.end(), this->Internal->Elements.begin(), this->Internal->Elements.end());
   if (elements.empty())
   {
     return false;

@@ -12,8 +12,8 @@
  * there is one path for every edit and a saved state holds what the view shows
  * (docs/editing.md). In the GUI each command that changes the list is one step of
  * ParaView's undo stack (vtkSMEditHistoryUndoElement: Edit > Undo restores the list
- * before it), and its own bookkeeping push is not another. It also says when a transfer-curve list is incomplete
- * (vtkSMGeoShapingSourceProxy). ParaView instantiates it from the XML element
+ * before it), and its own bookkeeping push is not another. It also says when a transfer-curve list
+ * is incomplete (vtkSMGeoShapingSourceProxy). ParaView instantiates it from the XML element
  * `<ChainMailDeformationProxy>`.
  */
 #include "GeoShapingServerManagerModule.h"

@@ -15,20 +15,18 @@ STATE_PULL = [0.0, 0.0, 60.0]
 def write_state(path):
     """A .pvsm holding the GUI test's scene with one committed edit (made here, in
     pvpython, the way a Python user commits: InvokeCommand)."""
-    from paraview.simple import (LoadPlugin, GetActiveViewOrCreate, Show, Render, SaveState,
-                                 SetActiveSource)
+    import paraview.simple as simple
+    from paraview.simple import GetActiveViewOrCreate, Show, SaveState, SetActiveSource
     plugin_dir = os.environ["PV_PLUGIN_PATH"].split(":")[0]
-    ns = {}
-    LoadPlugin(os.path.join(plugin_dir, "GeoShaping.so"), remote=False, ns=ns)
+    simple.LoadPlugin(os.path.join(plugin_dir, "GeoShaping.so"), remote=False)
     import geoshaping_presets
-    horizon = ns["FaultStepHorizon"](PaintFigure5C=1)
-    paint = ns["MalleabilityPaint"](Input=horizon)
-    deformation = ns["ChainMailDeformation"](Input=paint)
+    horizon = simple.FaultStepHorizon(PaintFigure5C=1)
+    paint = simple.MalleabilityPaint(Input=horizon)
+    deformation = simple.ChainMailDeformation(Input=paint)
     deformation.MalleabilityArray = ["POINTS", "Malleability"]
     view = GetActiveViewOrCreate("RenderView")
     geoshaping_presets.show_malleability(Show(deformation, view))
     view.OrientationAxesVisibility = 0
-    Render(view)
     view.CameraPosition = CAMERA["position"]
     view.CameraFocalPoint = CAMERA["focal_point"]
     view.CameraViewUp = CAMERA["view_up"]

@@ -11,6 +11,7 @@
 #include <pqPipelineSource.h>
 #include <pqRenderView.h>
 #include <pqUndoStack.h>
+#include <pqView.h>
 
 #include <vtkAlgorithm.h>
 #include <vtkCamera.h>
@@ -30,6 +31,7 @@
 #include <QTextStream>
 #include <QWidget>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -73,10 +75,17 @@ std::vector<double> pointsOf(vtkPointSet* data)
 // Bounds by a pass over the points (what they must be).
 std::array<double, 6> exactBounds(vtkPointSet* data)
 {
-  std::array<double, 6> b{};
-  vtkNew<vtkPoints> copy;
-  copy->DeepCopy(data->GetPoints());
-  copy->GetBounds(b.data());
+  std::array<double, 6> b{ { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 } };
+  double x[3];
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    data->GetPoint(i, x);
+    for (int k = 0; k < 3; ++k)
+    {
+      b[2 * k] = i == 0 ? x[k] : std::min(b[2 * k], x[k]);
+      b[2 * k + 1] = i == 0 ? x[k] : std::max(b[2 * k + 1], x[k]);
+    }
+  }
   return b;
 }
 
@@ -92,16 +101,17 @@ QString text(const double* v, int n)
 
 // What the shape left: grasp, displacement, list, and the bounds the filter's output, the
 // Information panel (data information) and Reset Camera see, against `expected`.
-void writeSettled(QTextStream& out, const QString& prefix, const Target& t,
-  const std::array<double, 6>& expected)
+void writeSettled(
+  QTextStream& out, const QString& prefix, const Target& t, const std::array<double, 6>& expected)
 {
-  out << prefix << "_grasp_point_id = " << vtkSMPropertyHelper(t.proxy, "GraspPointId").GetAsIdType()
-      << "\n";
+  out << prefix
+      << "_grasp_point_id = " << vtkSMPropertyHelper(t.proxy, "GraspPointId").GetAsIdType() << "\n";
   double d[3];
   vtkSMPropertyHelper(t.proxy, "Displacement").Get(d, 3);
   out << prefix << "_displacement = " << text(d, 3) << "\n";
-  out << prefix << "_edit_history = "
-      << vtkSMPropertyHelper(t.proxy, "EditHistory").GetNumberOfElements() << "\n";
+  out << prefix
+      << "_edit_history = " << vtkSMPropertyHelper(t.proxy, "EditHistory").GetNumberOfElements()
+      << "\n";
   double b[6];
   t.output()->GetBounds(b);
   out << prefix << "_bounds = " << text(b, 6) << "\n";
@@ -109,9 +119,11 @@ void writeSettled(QTextStream& out, const QString& prefix, const Target& t,
   out << prefix << "_bounds_exact = " << int(std::equal(b, b + 6, expected.begin())) << "\n";
   t.source->getOutputPort(0)->getDataInformation()->GetBounds(b);
   out << prefix << "_information_bounds = " << text(b, 6) << "\n";
-  out << prefix << "_information_bounds_exact = "
-      << int(std::equal(b, b + 6, expected.begin())) << "\n";
-  // Reset Camera, then put the camera back (other checks read it).
+  out << prefix << "_information_bounds_exact = " << int(std::equal(b, b + 6, expected.begin()))
+      << "\n";
+  // Reset Camera, then put the camera back (other checks read it), neither recorded on
+  // the undo stack these checks step through.
+  SCOPED_UNDO_EXCLUDE();
   auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
   vtkCamera* camera = view ? view->getRenderViewProxy()->GetActiveCamera() : nullptr;
   if (camera)
@@ -147,6 +159,16 @@ QString undoLabels()
   return labels.join(" | ");
 }
 
+// Edit > Undo renders later (pqApplicationCore::render); what the user then sees is the
+// rendered view.
+void renderNow()
+{
+  if (pqView* view = pqActiveObjects::instance().activeView())
+  {
+    view->forceRender();
+  }
+}
+
 QPushButton* dockButton(pqHapticsDockPanel* dock, const char* name)
 {
   return dock->findChild<QPushButton*>(name);
@@ -176,11 +198,15 @@ void writeEditMenu(QTextStream& out, pqHapticsDockPanel* dock)
   const std::array<double, 6> releasedBounds = exactBounds(t.output());
   writeSettled(out, "released", t, releasedBounds);
 
+  out << "edit_menu_undo_enabled = " << int(undo->isEnabled()) << "\n";
   undo->trigger(); // Edit > Undo, as Ctrl+Z
+  renderNow();
+  out << "undo_steps_after_edit_menu_undo = " << undoLabels() << "\n";
   const std::vector<double> undone = pointsOf(t.output());
   out << "edit_menu_undo_equals_rest = " << int(undone == rest) << "\n";
   writeSettled(out, "edit_menu_undo", t, restBounds);
   redo->trigger();
+  renderNow();
   out << "edit_menu_redo_equals_released = " << int(pointsOf(t.output()) == released) << "\n";
   writeSettled(out, "edit_menu_redo", t, releasedBounds);
 
@@ -189,9 +215,11 @@ void writeEditMenu(QTextStream& out, pqHapticsDockPanel* dock)
   if (dockUndo && dockRedo)
   {
     dockUndo->click();
+    renderNow();
     out << "dock_undo_equals_edit_menu_undo = " << int(pointsOf(t.output()) == undone) << "\n";
     writeSettled(out, "dock_undo", t, restBounds);
     dockRedo->click();
+    renderNow();
     out << "dock_redo_equals_released = " << int(pointsOf(t.output()) == released) << "\n";
   }
 }
@@ -225,6 +253,7 @@ void writeLoadedState(QTextStream& out, pqHapticsDockPanel* dock)
   if (QPushButton* dockUndo = dockButton(dock, "UndoEdit"))
   {
     dockUndo->click();
+    renderNow();
     out << "loaded_undo_label = " << (edits ? edits->text() : QString()) << "\n";
     out << "loaded_undo_equals_rest = " << int(pointsOf(t.output()) == rest) << "\n";
     writeSettled(out, "loaded_undo", t, exactBounds(t.input()));
