@@ -487,7 +487,13 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
     this->UpdateNormals(changed);
     output->GetPointData()->SetNormals(state.OutputNormals);
   }
-  outPoints->PointsChanged(changed->GetPointer(0), changed->GetNumberOfTuples());
+  // During a drag the bounds grow over the moved points (O(moved) a frame); a frame that
+  // writes points but moves none shows the rest shape (released, undone, redone, reset)
+  // and makes them exact again, once, so they shrink back (the Information panel, Reset
+  // Camera).
+  const bool settled =
+    deformer.moved().empty() && state.PassesWritten.empty() && changed->GetNumberOfTuples() > 0;
+  outPoints->PointsChanged(changed->GetPointer(0), changed->GetNumberOfTuples(), settled);
   output->SetPoints(outPoints);
 
   if (this->GenerateDiagnostics)

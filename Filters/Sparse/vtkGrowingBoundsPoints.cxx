@@ -52,7 +52,7 @@ vtkIdTypeArray* vtkGrowingBoundsPoints::ChangesAfter(int generation)
            : nullptr;
 }
 
-void vtkGrowingBoundsPoints::PointsChanged(const vtkIdType* ids, vtkIdType k)
+void vtkGrowingBoundsPoints::PointsChanged(const vtkIdType* ids, vtkIdType k, bool exact)
 {
   this->Data->Modified(); // drops the array's range caches
   this->Modified();
@@ -60,6 +60,11 @@ void vtkGrowingBoundsPoints::PointsChanged(const vtkIdType* ids, vtkIdType k)
   ++this->Generation;
   this->Changed->SetNumberOfTuples(k);
   std::copy(ids, ids + k, this->Changed->GetPointer(0));
+  this->LastChangeExact = exact;
+  if (exact)
+  {
+    this->Known = false;
+  }
   if (!this->Known)
   {
     return;

@@ -14,7 +14,11 @@
  * in O(k). B' contains every point: a point is either unchanged (inside B) or listed.
  * The caches are exact after Reset() (the next query passes over all points) and grow
  * conservatively after that: a point that moves inward does not shrink them until the
- * next Reset(). A non-finite listed point drops the caches (the next query is exact).
+ * next Reset() or exact change. A non-finite listed point drops the caches (the next
+ * query is exact). A producer whose change settles the shape (a drag released, an edit
+ * undone) lists it with `exact` = true: the caches are dropped, so the next query makes
+ * them exact (O(n), once) and bounds shrink back; the change is still listed for
+ * consumers, which pass the flag on (GetLastChangeExact()).
  *
  * The points also say what changed, for consumers that keep a copy (an extracted
  * surface, a GPU buffer): each PointsChanged() is update number GetGeneration() and
@@ -41,8 +45,12 @@ public:
   vtkTypeMacro(vtkGrowingBoundsPoints, vtkPoints);
 
   /// The coordinates of the k points `ids` changed: bump the modification time and grow
-  /// the cached bounds and ranges over them, O(k).
-  void PointsChanged(const vtkIdType* ids, vtkIdType k);
+  /// the cached bounds and ranges over them, O(k); with `exact`, drop them instead (the
+  /// next query passes over every point).
+  void PointsChanged(const vtkIdType* ids, vtkIdType k, bool exact = false);
+
+  /// Whether the last PointsChanged() asked for exact caches.
+  bool GetLastChangeExact() const { return this->LastChangeExact; }
 
   /// Forget the caches: the next query computes them exactly, O(n).
   void Reset();
@@ -73,6 +81,7 @@ private:
   double Box[6] = { 0, 0, 0, 0, 0, 0 };
   double Norm[2] = { 0, 0 };
   bool Known = false;
+  bool LastChangeExact = false;
   int Generation = 0;
   vtkMTimeType ChangedTime = 0;
   vtkNew<vtkIdTypeArray> Changed;

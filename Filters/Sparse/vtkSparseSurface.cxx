@@ -25,7 +25,7 @@ void vtkSparseSurface::Adopt(vtkPolyData* from, vtkGrowingBoundsPoints* shared)
   points->GetBounds(bounds); // exact once, if not known yet: later changes grow it
 }
 
-void vtkSparseSurface::PointsChanged(vtkIdTypeArray* ids)
+void vtkSparseSurface::PointsChanged(vtkIdTypeArray* ids, bool exact)
 {
   auto* points = vtkGrowingBoundsPoints::SafeDownCast(this->Points);
   if (!points)
@@ -35,7 +35,7 @@ void vtkSparseSurface::PointsChanged(vtkIdTypeArray* ids)
   }
   if (ids)
   {
-    points->PointsChanged(ids->GetPointer(0), ids->GetNumberOfTuples());
+    points->PointsChanged(ids->GetPointer(0), ids->GetNumberOfTuples(), exact);
   }
   if (points->HasGrownBounds())
   {

@@ -30,8 +30,9 @@ public:
   void Adopt(vtkPolyData* from, vtkGrowingBoundsPoints* shared = nullptr);
 
   /// The coordinates of the listed points changed (O(k)); nullptr: the shared points'
-  /// producer already listed them.
-  void PointsChanged(vtkIdTypeArray* ids);
+  /// producer already listed them. `exact`: the bounds are computed again at the next
+  /// query instead of grown (vtkGrowingBoundsPoints::PointsChanged).
+  void PointsChanged(vtkIdTypeArray* ids, bool exact = false);
 
   /// A shallow copy of a vtkSparseSurface keeps its cached cell bounds (same points,
   /// same cells), so a renderer's copy does not pass over every cell again.

@@ -5,7 +5,12 @@
 #include "geoshaping/brush.h"
 #include "geoshaping/haptics/openhaptics_device.h"
 
+#include "pqHapticsUndo.h"
+
+#include <pqActiveObjects.h>
+#include <pqApplicationCore.h>
 #include <pqCoreUtilities.h>
+#include <pqUndoStack.h>
 
 #include <QComboBox>
 #include <QDir>
@@ -53,6 +58,24 @@ pqHapticsDockPanel::pqHapticsDockPanel(QWidget* parent)
     &pqHapticsDockPanel::setPaintValue);
   QObject::connect(this->Interactor, &pqHapticsInteractor::editsChanged, this,
     &pqHapticsDockPanel::onEditsChanged);
+  this->followEditSources();
+}
+
+void pqHapticsDockPanel::followEditSources()
+{
+  // The edit count is true whoever changed the list: Load State, Edit > Undo, a panel
+  // button, Python. The undo stack may be made after the dock: Start connects again.
+  pqApplicationCore* core = pqApplicationCore::instance();
+  const auto unique = Qt::UniqueConnection;
+  if (pqUndoStack* stack = core->getUndoStack())
+  {
+    QObject::connect(stack, SIGNAL(stackChanged(bool, QString, bool, QString)), this,
+      SLOT(refreshEdits()), unique);
+  }
+  QObject::connect(core, SIGNAL(stateLoaded(vtkPVXMLElement*, vtkSMProxyLocator*)), this,
+    SLOT(refreshEdits()), unique);
+  QObject::connect(&pqActiveObjects::instance(), SIGNAL(sourceChanged(pqPipelineSource*)), this,
+    SLOT(refreshEdits()), unique);
 }
 
 pqHapticsDockPanel::~pqHapticsDockPanel() = default;
@@ -292,7 +315,18 @@ void pqHapticsDockPanel::runEdit(int command)
 
 void pqHapticsDockPanel::onEditsChanged()
 {
-  const interactor::EditResult& r = this->Interactor->lastEditResult();
+  this->showEdits(this->Interactor->lastEditResult());
+}
+
+void pqHapticsDockPanel::refreshEdits()
+{
+  this->Interactor->proxies().refresh();
+  const auto* deformation = this->Interactor->proxies().deformation();
+  this->showEdits(pqHapticsUndo::status(deformation ? deformation->getProxy() : nullptr));
+}
+
+void pqHapticsDockPanel::showEdits(const interactor::EditResult& r)
+{
   QString text = QString("Edits: %1, redoable %2").arg(r.edits).arg(r.redoable);
   if (!r.message.empty())
   {
@@ -348,6 +382,8 @@ bool pqHapticsDockPanel::start()
   }
   QString error;
   const bool started = this->Interactor->start(setups, error);
+  this->followEditSources();
+  this->refreshEdits();
   this->Status->setText(started ? QString() : error);
   this->StartStop->setText(started ? "Stop" : "Start");
   for (QShortcut* shortcut : this->Shortcuts)

@@ -38,6 +38,8 @@ private Q_SLOTS:
   void setPaintValue(double value);
   void runEdit(int command);
   void onEditsChanged();
+  // Reads the target's edits afresh (Load State, Edit > Undo, a panel button, Start).
+  void refreshEdits();
 
 private:
   struct HandWidgets
@@ -50,6 +52,8 @@ private:
   QWidget* buildHand(int hand);
   QWidget* buildPalette();
   QWidget* buildEdits();
+  void showEdits(const geoshaping::interactor::EditResult& r);
+  void followEditSources();
 
   pqHapticsInteractor* Interactor = nullptr;
   HandWidgets Hands[2];

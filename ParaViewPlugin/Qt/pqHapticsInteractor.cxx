@@ -58,6 +58,7 @@ struct pqHapticsInteractor::Hand
     this->mapper->SetInputConnection(this->sphere->GetOutputPort());
     this->cursor->SetMapper(this->mapper);
     this->cursor->PickableOff();
+    this->cursor->UseBoundsOff(); // Reset Camera frames the data, not the stylus
     this->swatchSphere->SetThetaResolution(16);
     this->swatchSphere->SetPhiResolution(12);
     this->swatchMapper->SetInputConnection(this->swatchSphere->GetOutputPort());
@@ -67,6 +68,7 @@ struct pqHapticsInteractor::Hand
       this->swatches[i]->SetMapper(this->swatchMapper);
       this->swatches[i]->GetProperty()->SetColor(c.x(), c.y(), c.z());
       this->swatches[i]->PickableOff();
+      this->swatches[i]->UseBoundsOff();
       this->swatches[i]->VisibilityOff();
     }
   }

@@ -9,6 +9,8 @@
 #include <pqServerManagerModel.h>
 
 #include "ContactPatch.h"
+#include "pqHapticsUndo.h"
+#include "undo_step.h"
 #include "vtkGeoShapingAdapter.h"
 #include "vtkSMChainMailDeformationProxy.h"
 
@@ -444,7 +446,11 @@ geoshaping::interactor::EditResult pqHapticsProxies::runEdit(
   // CommitEdit commits the shape of the filter's last update: the one rendered last
   // frame, which is what the user saw at the release. The proxy keeps EditHistory in step
   // (the same path as the panel's buttons and Python).
-  proxy->InvokeCommand(geoshaping::interactor::command_property(command));
+  // Undo and redo step ParaView's undo stack when its next step is this proxy's edit.
+  if (!pqHapticsUndo::stepThroughStack(proxy, command))
+  {
+    proxy->InvokeCommand(geoshaping::interactor::command_property(command));
+  }
   result.changed = proxy->GetLastEditChanged();
   result.edits = static_cast<std::size_t>(this->numberOfEdits());
   result.redoable = proxy->GetLastEditRedoable();
@@ -462,6 +468,8 @@ int pqHapticsProxies::numberOfEdits() const
 
 void pqHapticsProxies::render()
 {
+  // Per-frame pushes are never steps of ParaView's undo stack (pqHapticsUndo.h).
+  geoshaping::undo::Exclude frame;
   if (this->PaintModified && this->Paint)
   {
     this->Paint->getProxy()->UpdateVTKObjects();

@@ -37,6 +37,7 @@ public:
   void refresh();
   pqRenderView* view() const { return this->View; }
   bool hasDeformation() const { return this->Deformation != nullptr; }
+  pqPipelineSource* deformation() const { return this->Deformation; }
   bool hasPaint() const { return this->Paint != nullptr; }
 
   geoshaping::interactor::CameraFrame camera() const;

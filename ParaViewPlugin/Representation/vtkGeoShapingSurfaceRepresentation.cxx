@@ -200,7 +200,8 @@ bool vtkGeoShapingSurfaceRepresentation::CopyChanged(vtkPointSet* input, vtkIdTy
   {
     toNormals->Modified();
   }
-  this->Surface->PointsChanged(this->SurfaceChanged);
+  // A settled shape (released, undone) gets exact bounds here too: Reset Camera frames it.
+  this->Surface->PointsChanged(this->SurfaceChanged, this->InputPoints->GetLastChangeExact());
   return true;
 }
 

@@ -89,4 +89,20 @@ EditResult follow_edit(EditCommand command, EditProxy& proxy)
   return result;
 }
 
+EditResult restore_edits(const std::vector<std::string>& records, EditProxy& proxy)
+{
+  EditResult result;
+  result.changed = proxy.history() != records;
+  if (result.changed)
+  {
+    proxy.set_history(records);
+  }
+  proxy.release();
+  proxy.push();
+  proxy.update_information();
+  result.edits = records.size();
+  result.redoable = proxy.number_of_redoable_edits();
+  return result;
+}
+
 } // namespace geoshaping::interactor

@@ -61,4 +61,12 @@ struct EditResult
 // filter's synchronize does nothing but compare).
 EditResult follow_edit(EditCommand command, EditProxy& proxy);
 
+// Sets the client's list to `records`, releases and pushes: one step of ParaView's undo
+// stack (Edit > Undo, Ctrl+Z) going back to the list before an edit command or forth to
+// the list after it. The server's list is set the way a state file sets it; its
+// synchronize undoes or re-applies what differs, and an edit undone this way stays
+// redoable, so stepping back over a commit is the command UndoEdit, bit for bit.
+// `changed`: the list differed; no message.
+EditResult restore_edits(const std::vector<std::string>& records, EditProxy& proxy);
+
 } // namespace geoshaping::interactor

@@ -1,8 +1,11 @@
 #include "vtkSMChainMailDeformationProxy.h"
 
 #include "edit_commands.h"
+#include "undo_step.h"
+#include "vtkSMEditHistoryUndoElement.h"
 
 #include "vtkCommand.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkSMPropertyHelper.h"
 
@@ -91,7 +94,37 @@ void vtkSMChainMailDeformationProxy::PropertyPushed(vtkObject*, unsigned long, v
   }
   this->Following = true;
   SMEditProxy edits(this);
-  const interactor::EditResult result = interactor::follow_edit(command, edits);
+  const std::vector<std::string> before = edits.history();
+  interactor::EditResult result;
+  {
+    // The bookkeeping push (list, release) is part of the command's step, not a step.
+    geoshaping::undo::Exclude bookkeeping;
+    result = interactor::follow_edit(command, edits);
+  }
+  this->Following = false;
+  this->LastEditChanged = result.changed;
+  this->LastEditRedoable = result.redoable;
+  this->LastEditMessage = result.message;
+  if (result.changed)
+  {
+    static const char* const labels[] = { "Commit Edit", "Undo Edit", "Redo Edit", "Reset Edits" };
+    geoshaping::undo::Step step(labels[static_cast<int>(command)]);
+    vtkNew<vtkSMEditHistoryUndoElement> element;
+    element->Set(this, before, edits.history());
+    step.add(element);
+    step.finish();
+  }
+}
+
+void vtkSMChainMailDeformationProxy::RestoreEdits(const std::vector<std::string>& records)
+{
+  this->Following = true;
+  SMEditProxy edits(this);
+  interactor::EditResult result;
+  {
+    geoshaping::undo::Exclude restoring;
+    result = interactor::restore_edits(records, edits);
+  }
   this->Following = false;
   this->LastEditChanged = result.changed;
   this->LastEditRedoable = result.redoable;

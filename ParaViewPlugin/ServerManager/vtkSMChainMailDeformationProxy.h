@@ -10,14 +10,17 @@
  * dock and its shortcuts, `proxy.SMProxy.InvokeCommand(...)` from Python — this class
  * then copies the change into `EditHistory` (geoshaping::interactor::follow_edit), so
  * there is one path for every edit and a saved state holds what the view shows
- * (docs/editing.md). It also says when a transfer-curve list is incomplete
- * (vtkSMGeoShapingSourceProxy). ParaView instantiates it from the XML element
+ * (docs/editing.md). In the GUI each command that changes the list is one step of
+ * ParaView's undo stack (vtkSMEditHistoryUndoElement: Edit > Undo restores the list
+ * before it), and its own bookkeeping push is not another. It also says when a transfer-curve list
+ * is incomplete (vtkSMGeoShapingSourceProxy). ParaView instantiates it from the XML element
  * `<ChainMailDeformationProxy>`.
  */
 #include "GeoShapingServerManagerModule.h"
 #include "vtkSMGeoShapingSourceProxy.h"
 
 #include <string>
+#include <vector>
 
 class GEOSHAPINGSERVERMANAGER_EXPORT vtkSMChainMailDeformationProxy
   : public vtkSMGeoShapingSourceProxy
@@ -37,6 +40,15 @@ public:
   vtkGetMacro(LastEditRedoable, int);
   const char* GetLastEditMessage() const { return this->LastEditMessage.c_str(); }
   ///@}
+
+#ifndef __VTK_WRAP__
+  /**
+   * Sets `EditHistory` to `records`, releases the grasp and pushes (an undo step of
+   * ParaView's Edit menu, geoshaping::interactor::restore_edits); the LastEdit* values
+   * then describe it. Not recorded as a step itself.
+   */
+  void RestoreEdits(const std::vector<std::string>& records);
+#endif
 
 protected:
   vtkSMChainMailDeformationProxy();

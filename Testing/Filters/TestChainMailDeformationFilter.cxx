@@ -22,6 +22,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -702,6 +704,60 @@ TEST(ChainMailDeformationFilter, CommitUndoRedoAndResetAreBitExact)
   fresh->AddEdit(f->GetEdit(0));
   fresh->AddEdit(f->GetEdit(1));
   EXPECT_EQ(Coordinates(Deform(fresh, grid)), two);
+}
+
+namespace
+{
+// The output's bounds as its points report them (cached), and by a pass over its points.
+std::array<std::array<double, 6>, 2> ReportedAndExactBounds(vtkPointSet* output)
+{
+  std::array<std::array<double, 6>, 2> b;
+  output->GetPoints()->GetBounds(b[0].data());
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    output->GetPoint(i, x);
+    for (int k = 0; k < 3; ++k)
+    {
+      b[1][2 * k] = i == 0 ? x[k] : std::min(b[1][2 * k], x[k]);
+      b[1][2 * k + 1] = i == 0 ? x[k] : std::max(b[1][2 * k + 1], x[k]);
+    }
+  }
+  return b;
+}
+} // namespace
+
+TEST(ChainMailDeformationFilter, BoundsShrinkBackOnReleaseUndoRedoAndReset)
+{
+  // During a drag the bounds only grow (O(moved) a frame); once the shape settles they are
+  // exact again, so a large pull backed off, released or undone leaves no grown box.
+  auto grid = TriangleGrid(21, 21, 1.0, [](int, int) { return 0.8; });
+  vtkNew<vtkChainMailDeformationFilter> f;
+  vtkPointSet* out = Deform(f, grid);
+  const auto rest = ReportedAndExactBounds(out)[1];
+  Drag(f, 10 * 21 + 10, 0.0, 0.0, 60.0);
+  Drag(f, 10 * 21 + 10, 0.0, 0.0, 5.0);
+  auto b = ReportedAndExactBounds(f->GetOutput());
+  EXPECT_EQ(b[0][5], 60.0) << "a drag frame grows the box";
+  EXPECT_EQ(b[1][5], 5.0);
+  f->CommitEdit();
+  Release(f);
+  f->Update();
+  b = ReportedAndExactBounds(f->GetOutput());
+  EXPECT_EQ(b[0], b[1]) << "released";
+  EXPECT_EQ(b[0][5], 5.0);
+  f->UndoEdit();
+  f->Update();
+  b = ReportedAndExactBounds(f->GetOutput());
+  EXPECT_EQ(b[0], rest) << "undone";
+  f->RedoEdit();
+  f->Update();
+  b = ReportedAndExactBounds(f->GetOutput());
+  EXPECT_EQ(b[0], b[1]) << "redone";
+  EXPECT_EQ(b[0][5], 5.0);
+  f->ResetEdits();
+  f->Update();
+  EXPECT_EQ(ReportedAndExactBounds(f->GetOutput())[0], rest) << "reset";
 }
 
 TEST(ChainMailDeformationFilter, CommitKeepsTheRefinedShape)

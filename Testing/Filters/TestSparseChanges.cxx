@@ -45,6 +45,29 @@ TEST(GrowingBoundsPoints, FirstQueryIsExactThenChangesGrowTheBox)
   EXPECT_EQ(b[3], 5.0);
 }
 
+TEST(GrowingBoundsPoints, AnExactChangeShrinksTheBoxAndIsStillListed)
+{
+  auto points = Line(10);
+  double b[6];
+  points->GetBounds(b);
+  const vtkIdType id = 9;
+  points->SetPoint(9, 20.0, 0.0, 0.0);
+  points->PointsChanged(&id, 1);
+  points->GetBounds(b);
+  EXPECT_EQ(b[1], 20.0);
+  EXPECT_FALSE(points->GetLastChangeExact());
+  const int g = points->GetGeneration();
+  points->SetPoint(9, 9.0, 0.0, 0.0); // back: a released drag
+  points->PointsChanged(&id, 1, true);
+  EXPECT_TRUE(points->GetLastChangeExact());
+  ASSERT_NE(points->ChangesAfter(g), nullptr) << "a consumer still follows it sparsely";
+  points->GetBounds(b);
+  EXPECT_EQ(b[1], 9.0);
+  double range[2];
+  points->GetData()->GetRange(range, 0);
+  EXPECT_EQ(range[1], 9.0);
+}
+
 TEST(GrowingBoundsPoints, AnyOtherModificationTakesAnExactPass)
 {
   auto points = Line(10);

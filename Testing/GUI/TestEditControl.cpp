@@ -247,6 +247,62 @@ TEST(EditControl, EveryCommandSenderKeepsTheListInStep)
   EXPECT_EQ(f.client.back(), f.committed[3]);
 }
 
+namespace
+{
+std::vector<double> RestPositions(SessionFilter& f)
+{
+  std::vector<double> xyz;
+  for (geoshaping::index_t v = 0; v < f.mesh.size(); ++v)
+  {
+    const Eigen::Vector3d x = f.deformer.rest_local(v) + f.deformer.committed_offset(v);
+    xyz.insert(xyz.end(), { x.x(), x.y(), x.z() });
+  }
+  return xyz;
+}
+}
+
+TEST(EditControl, RestoringTheListBeforeACommitIsTheCommandUndo)
+{
+  // ParaView's undo stack steps back over a commit by restoring the list before it, and
+  // forth by restoring the list after it: the same list, redoable count and rest shape as
+  // the dock's Undo and Redo (the commands), bit for bit.
+  SessionFilter byCommand, byList;
+  for (SessionFilter* f : { &byCommand, &byList })
+  {
+    f->grasp();
+    run(interactor::EditCommand::commit, *f);
+  }
+  const std::vector<std::string> before = byList.client;
+  for (SessionFilter* f : { &byCommand, &byList })
+  {
+    f->grasp();
+    run(interactor::EditCommand::commit, *f);
+  }
+  const std::vector<std::string> after = byList.client;
+  const std::vector<double> committed = RestPositions(byList);
+
+  const interactor::EditResult undone = run(interactor::EditCommand::undo, byCommand);
+  byList.grasp_point_id = 5; // a grasp left on the proxy is released too
+  const interactor::EditResult restored = interactor::restore_edits(before, byList);
+  EXPECT_TRUE(restored.changed);
+  EXPECT_EQ(byList.client, byCommand.client);
+  EXPECT_EQ(byList.session.records(), byCommand.session.records());
+  EXPECT_EQ(restored.edits, undone.edits);
+  EXPECT_EQ(restored.redoable, undone.redoable);
+  EXPECT_EQ(restored.redoable, 1);
+  EXPECT_EQ(RestPositions(byList), RestPositions(byCommand));
+  EXPECT_NE(RestPositions(byList), committed);
+  EXPECT_EQ(byList.grasp_point_id, -1);
+
+  const interactor::EditResult redone = run(interactor::EditCommand::redo, byCommand);
+  const interactor::EditResult again = interactor::restore_edits(after, byList);
+  EXPECT_EQ(byList.client, after);
+  EXPECT_EQ(again.redoable, redone.redoable);
+  EXPECT_EQ(RestPositions(byList), RestPositions(byCommand));
+  EXPECT_EQ(RestPositions(byList), committed);
+  EXPECT_FALSE(interactor::restore_edits(after, byList).changed);
+}
+
 TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)
 {
   std::vector<double> triples = { 99.0, 0.1, 0.2 }; // earlier dabs are kept

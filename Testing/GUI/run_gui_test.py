@@ -15,9 +15,11 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_setup_camera import CAMERA  # noqa: E402
 from gui_pull_check import check_pull  # noqa: E402
+import gui_undo_checks  # noqa: E402
 # Mode "replay": GEOSHAPING_HAPTICS_REPLAY is the trace; mode "mouse": the plugin's test
 # hook drags the mouse itself (GEOSHAPING_HAPTICS_REPLAY=mouse); mode "openhaptics": hand 1
-# is OpenHaptics on the fake HD library, which the hook faults.
+# is OpenHaptics on the fake HD library, which the hook faults; mode "state": paraview
+# loads a state file with one edit (File > Load State) and the dock is started.
 
 WORKSPACE_RADIUS = 0.08  # m, the default DeviceLimits of the replay device
 
@@ -297,7 +299,7 @@ def check_openhaptics_fault(results):
 def main():
     mode = sys.argv[1] if len(sys.argv) > 1 else "replay"
     out = os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_" + mode)
-    for suffix in (".txt", ".png", "-view.png", ".recorded.trace"):
+    for suffix in (".txt", ".png", "-view.png", ".recorded.trace", ".pvsm"):
         if os.path.exists(out + suffix):
             os.remove(out + suffix)
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
@@ -314,8 +316,14 @@ def main():
     if mode == "bimanual":
         env["GEOSHAPING_HAPTICS_REPLAY2"] = out + ".hand2.trace"
         write_paint_trace(out + ".hand2.trace")
+    script = ["--script=" + setup]
+    if mode == "state":
+        env["GEOSHAPING_HAPTICS_REPLAY"] = "state"
+        env["GEOSHAPING_GUI_STATE"] = out + ".pvsm"
+        gui_undo_checks.write_state(out + ".pvsm")
+        script = []  # the state is the scene
     command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24 -noreset", os.environ["PARAVIEW"],
-               "--dr", "--script=" + setup]
+               "--dr"] + script
     run = subprocess.run(command, env=env, timeout=90, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True)
     print(run.stdout[-4000:])
@@ -339,6 +347,10 @@ def main():
         check_recording(results, out, None)
         print("GUI hold-and-turn test passed")
         return
+    if mode == "state":
+        gui_undo_checks.check_loaded_state(results)
+        print("GUI Load State test passed; screenshot:", out + "-view.png")
+        return
     if mode == "touch":
         check_touch(results, normal)
         check_recording(results, out, None)
@@ -346,6 +358,8 @@ def main():
         return
     check_sparse_frames(results)
     check_edits(results)
+    if mode in ("replay", "mouse"):
+        gui_undo_checks.check_edit_menu(results)
     if mode == "mouse":
         check_mouse(results)
         check_recording(results, out, [float(v) for v in results["last_displacement"].split()])

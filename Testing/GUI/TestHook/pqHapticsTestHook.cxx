@@ -2,6 +2,7 @@
 
 #include "pqHapticsDockPanel.h"
 #include "pqHapticsProxies.h"
+#include "pqHapticsUndoChecks.h"
 #include "pqPullTestDriver.h"
 
 #include <pqActiveObjects.h>
@@ -69,6 +70,11 @@ void pqHapticsTestHook::poll()
   }
   if (!this->Started)
   {
+    if (!this->StateLoaded && pqHapticsUndoChecks::loadStateIfRequested())
+    {
+      this->StateLoaded = true;
+      return;
+    }
     // Wait for the pipeline (the --script that builds it runs after the plugin loads),
     // then one more second: the script's renders process events, so this timer can
     // fire before the script has set the camera.
@@ -81,7 +87,7 @@ void pqHapticsTestHook::poll()
     {
       return;
     }
-    const bool mouse = this->Trace == "mouse" || this->Trace == "pull";
+    const bool mouse = this->Trace == "mouse" || this->Trace == "pull" || this->Trace == "state";
     const bool openHaptics = this->Trace == "openhaptics";
     this->Dock->setHand(0,
       openHaptics ? pqHapticsInteractor::OpenHaptics
@@ -128,6 +134,14 @@ void pqHapticsTestHook::poll()
     if (this->Pull->step() && !this->Output.isEmpty())
     {
       this->writeResults();
+    }
+    return;
+  }
+  if (this->Trace == "state")
+  {
+    if (++this->FinishedPolls == 10 && !this->Output.isEmpty())
+    {
+      this->writeResults(); // a second after Start, nothing dragged
     }
     return;
   }
@@ -398,6 +412,14 @@ void pqHapticsTestHook::writeResults()
   }
   if (!this->TimedOut && this->Started && input && output)
   {
+    if (this->Trace == "state")
+    {
+      pqHapticsUndoChecks::writeLoadedState(out, this->Dock);
+    }
+    else if (interactor->releaseCommits() > 0)
+    {
+      pqHapticsUndoChecks::writeEditMenu(out, this->Dock);
+    }
     this->checkEdits(out, input, output);
   }
   out.flush();

@@ -9,6 +9,9 @@
 //                                           "openhaptics": hand 1 is OpenHaptics on the
 //                                           fake HD library GEOSHAPING_LIBHD names, which
 //                                           the hook faults after 1 s (fakehd_inject_fault);
+//                                           "state": hand 1 is the mouse, not dragged,
+//                                           after GEOSHAPING_GUI_STATE=<file.pvsm> is
+//                                           loaded as File > Load State does;
 //   GEOSHAPING_HAPTICS_TOOL1=hold_and_turn  hand 1 holds and turns the object instead;
 //   GEOSHAPING_HAPTICS_REPLAY2=<trace>      hand 2 replays this trace with the Paint tool
 //                                           (two hands at once);
@@ -50,6 +53,7 @@ private:
   QString FakeForce; // the fake device's last force after the fault, "x y z" N
   bool Started = false;
   bool TimedOut = false;
+  bool StateLoaded = false;
   int FinishedPolls = 0;
   int Polls = 0;
   int ReadyPolls = 0;
