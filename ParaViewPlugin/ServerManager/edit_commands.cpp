@@ -38,6 +38,25 @@ bool is_edit_command(const std::string& property, EditCommand& command)
   return false;
 }
 
+namespace
+{
+// The end every command shares: the list stored when it changed, the grasp released,
+// the proxy pushed and its information read back into the result.
+EditResult settle(const std::vector<std::string>& records, EditResult result, EditProxy& proxy)
+{
+  if (result.changed)
+  {
+    proxy.set_history(records);
+  }
+  proxy.release();
+  proxy.push();
+  proxy.update_information();
+  result.edits = records.size();
+  result.redoable = proxy.number_of_redoable_edits();
+  return result;
+}
+} // namespace
+
 EditResult follow_edit(EditCommand command, EditProxy& proxy)
 {
   EditResult result;
@@ -77,32 +96,14 @@ EditResult follow_edit(EditCommand command, EditProxy& proxy)
       records.clear();
       break;
   }
-  if (result.changed)
-  {
-    proxy.set_history(records);
-  }
-  proxy.release();
-  proxy.push();
-  proxy.update_information();
-  result.edits = records.size();
-  result.redoable = proxy.number_of_redoable_edits();
-  return result;
+  return settle(records, result, proxy);
 }
 
 EditResult restore_edits(const std::vector<std::string>& records, EditProxy& proxy)
 {
   EditResult result;
   result.changed = proxy.history() != records;
-  if (result.changed)
-  {
-    proxy.set_history(records);
-  }
-  proxy.release();
-  proxy.push();
-  proxy.update_information();
-  result.edits = records.size();
-  result.redoable = proxy.number_of_redoable_edits();
-  return result;
+  return settle(records, result, proxy);
 }
 
 } // namespace geoshaping::interactor
