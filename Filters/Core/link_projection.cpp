@@ -602,6 +602,31 @@ void LinkProjector::envelope_reset_queue()
   env_last_ = 0;
 }
 
+template<class Label, class Relax>
+void LinkProjector::envelope_dijkstra(int axis, double sign, Label label, Relax relax)
+{
+  const std::vector<double>& ub = sign > 0.0 ? env_up_[axis] : env_dn_[axis];
+  while (env_queued_count_ > 0)
+  {
+    const RadixEntry e = envelope_pop();
+    const index_t b = e.vertex;
+    const double y = e.value;
+    if (y != label(b))
+      continue; // lowered again since it was pushed
+    const std::int32_t first = envelope_links(b), last = first + env_count_[b];
+    const index_t* nbr = env_nbr_.data(); // stable until the next envelope_links()
+    const std::uint8_t* pinned = env_fixed_.data();
+    const double* w = ub.data();
+    for (std::int32_t k = first; k < last; ++k)
+    {
+      const index_t a = nbr[k];
+      if (pinned[k] || a == grasp_)
+        continue;
+      relax(a, y + w[k]);
+    }
+  }
+}
+
 // Min-plus label correction on y = sign u (axis `axis`): y_a <= y_b + ub(a, b) on every
 // link, ub = hi_ab (sign +1) or -lo_ab (sign -1), lowering free vertices only, from `seeds`
 // (popped in increasing y: each vertex is settled about once, Dijkstra's order). The
@@ -613,31 +638,16 @@ void LinkProjector::envelope_min_pass(int axis, double sign, std::vector<index_t
   envelope_reset_queue();
   for (index_t s : seeds)
     envelope_push(envelope_value(s, axis, sign), s);
-  const std::vector<double>& ub = sign > 0.0 ? env_up_[axis] : env_dn_[axis];
-  while (env_queued_count_ > 0)
-  {
-    const RadixEntry e = envelope_pop();
-    const index_t b = e.vertex;
-    const double y = e.value;
-    if (y != envelope_value(b, axis, sign))
-      continue; // lowered again since it was pushed
-    const std::int32_t first = envelope_links(b), last = first + env_count_[b];
-    const index_t* nbr = env_nbr_.data(); // stable until the next envelope_links()
-    const std::uint8_t* pinned = env_fixed_.data();
-    const double* w = ub.data();
-    for (std::int32_t k = first; k < last; ++k)
+  envelope_dijkstra(
+    axis, sign, [&](index_t v) { return envelope_value(v, axis, sign); },
+    [&](index_t a, double cap)
     {
-      const index_t a = nbr[k];
-      if (pinned[k] || a == grasp_)
-        continue;
-      const double cap = y + w[k];
       if (cap < envelope_value(a, axis, sign))
       {
         envelope_touch(a, sign * cap);
         envelope_push(cap, a);
       }
-    }
-  }
+    });
 }
 
 // The cones of the fixed vertices on y = sign u: c(a) = min_f (y_f + d(f, a)) by Dijkstra
@@ -671,28 +681,12 @@ void LinkProjector::envelope_cone(int axis, double sign, const std::vector<index
   };
   for (index_t f : fixed)
     set(f, envelope_value(f, axis, sign));
-  const std::vector<double>& ub = sign > 0.0 ? env_up_[axis] : env_dn_[axis];
-  while (env_queued_count_ > 0)
-  {
-    const RadixEntry e = envelope_pop();
-    const index_t b = e.vertex;
-    const double c = e.value;
-    if (c != cone(b))
-      continue;
-    const std::int32_t first = envelope_links(b), last = first + env_count_[b];
-    const index_t* nbr = env_nbr_.data(); // stable until the next envelope_links()
-    const std::uint8_t* pinned = env_fixed_.data();
-    const double* w = ub.data();
-    for (std::int32_t k = first; k < last; ++k)
+  envelope_dijkstra(axis, sign, cone,
+    [&](index_t a, double cap)
     {
-      const index_t a = nbr[k];
-      if (pinned[k] || a == grasp_)
-        continue;
-      const double cap = c + w[k];
       if (cap < cone(a) && cap < top)
         set(a, cap);
-    }
-  }
+    });
   for (index_t a : env_cone_touched_)
     if (!is_fixed(a) && env_cone_[a] < envelope_value(a, axis, sign))
       envelope_touch(a, sign * env_cone_[a]);

@@ -272,6 +272,11 @@ private:
     const std::vector<index_t>& start, const ProjectionOptions& options, ProjectionReport& report);
   void envelope_min_pass(int axis, double sign, std::vector<index_t>& seeds);
   void envelope_cone(int axis, double sign, const std::vector<index_t>& fixed);
+  // The Dijkstra loop both share: pops the queue in increasing label, skips stale
+  // entries (value != label(b)), and offers each free, non-grasped neighbour a of b the
+  // label value(b) + ub(b, a) through relax(a, cap).
+  template<class Label, class Relax>
+  void envelope_dijkstra(int axis, double sign, Label label, Relax relax);
   double envelope_value(index_t v, int axis, double sign) const;
   void envelope_touch(index_t v, double value);
   std::int32_t envelope_links(index_t v);
