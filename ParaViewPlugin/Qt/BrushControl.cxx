@@ -1,0 +1,210 @@
+#include "BrushControl.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+namespace geoshaping::interactor
+{
+
+double default_brush_radius(const double bounds[6])
+{
+  double squared = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double low = bounds[2 * axis], high = bounds[2 * axis + 1];
+    if (!std::isfinite(low) || !std::isfinite(high) || high < low)
+    {
+      return 0.0;
+    }
+    squared += (high - low) * (high - low);
+  }
+  const double radius = default_radius_fraction * std::sqrt(squared);
+  return std::isfinite(radius) ? radius : 0.0;
+}
+
+namespace
+{
+std::string lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+}
+
+std::string scene_unit(const std::vector<std::string>& axis_units, bool has_projection)
+{
+  if (axis_units.size() >= 2 && !axis_units[0].empty() && axis_units[0] == axis_units[1])
+  {
+    const std::string u = lower(axis_units[0]);
+    const char* metre[] = { "m", "meter", "metre", "meters", "metres" };
+    return std::find(std::begin(metre), std::end(metre), u) != std::end(metre) ? "m"
+                                                                               : axis_units[0];
+  }
+  return has_projection ? "m" : "";
+}
+
+std::string format_length(double length, const std::string& unit)
+{
+  std::string u = unit.empty() ? "scene units" : unit;
+  if (unit == "m" && std::abs(length) >= 1000.0)
+  {
+    length /= 1000.0;
+    u = "km";
+  }
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.3g %s", length, u.c_str());
+  return text;
+}
+
+double cursor_radius(double brush_radius, double scene_per_pixel)
+{
+  const double least = min_cursor_pixels * scene_per_pixel;
+  if (!std::isfinite(least) || !(least > 0.0))
+  {
+    return brush_radius;
+  }
+  return std::isfinite(brush_radius) ? std::max(brush_radius, least) : least;
+}
+
+std::string stroke_note(const StrokeOutcome& outcome, double radius, const std::string& unit)
+{
+  if (outcome.unreached == 0)
+  {
+    return outcome.stored == 0 ? std::string()
+                               : "Last stroke: " + std::to_string(outcome.stored) + " dabs.";
+  }
+  std::string note = outcome.stored == 0
+                       ? std::string("Last stroke painted nothing: ")
+                       : "Last stroke: " + std::to_string(outcome.stored) + " dabs; ";
+  note += std::to_string(outcome.unreached) + (outcome.unreached == 1 ? " dab" : " dabs") +
+          " reached no vertex within the brush radius (" + format_length(radius, unit) + ")";
+  if (outcome.nearest >= 0.0)
+  {
+    note += ", the nearest vertex was " + format_length(outcome.nearest, unit) + " away";
+  }
+  note += ", and " + std::string(outcome.unreached == 1 ? "was" : "were") + " not stored: " +
+          (outcome.nearest >= 0.0 ? "enlarge the brush." : "paint on the surface.");
+  return note;
+}
+
+Stroke stroke_between(const std::vector<double>& dabs, const std::vector<double>& point_dabs,
+  std::size_t dabs_begin, std::size_t point_dabs_begin)
+{
+  Stroke stroke;
+  stroke.dabs_begin = std::min(dabs_begin, dabs.size());
+  stroke.point_dabs_begin = std::min(point_dabs_begin, point_dabs.size());
+  stroke.dabs.assign(dabs.begin() + stroke.dabs_begin, dabs.end());
+  stroke.point_dabs.assign(point_dabs.begin() + stroke.point_dabs_begin, point_dabs.end());
+  return stroke;
+}
+
+namespace
+{
+bool endsWith(const std::vector<double>& list, std::size_t begin, const std::vector<double>& tail)
+{
+  return list.size() == begin + tail.size() &&
+         std::equal(tail.begin(), tail.end(), list.begin() + begin);
+}
+}
+
+bool remove_stroke(const Stroke& stroke, std::vector<double>& dabs, std::vector<double>& point_dabs)
+{
+  if (!endsWith(dabs, stroke.dabs_begin, stroke.dabs) ||
+      !endsWith(point_dabs, stroke.point_dabs_begin, stroke.point_dabs))
+  {
+    return false;
+  }
+  dabs.resize(stroke.dabs_begin);
+  point_dabs.resize(stroke.point_dabs_begin);
+  return true;
+}
+
+bool restore_stroke(
+  const Stroke& stroke, std::vector<double>& dabs, std::vector<double>& point_dabs)
+{
+  if (dabs.size() != stroke.dabs_begin || point_dabs.size() != stroke.point_dabs_begin)
+  {
+    return false;
+  }
+  dabs.insert(dabs.end(), stroke.dabs.begin(), stroke.dabs.end());
+  point_dabs.insert(point_dabs.end(), stroke.point_dabs.begin(), stroke.point_dabs.end());
+  return true;
+}
+
+void ActionHistory::push_edit()
+{
+  done_.push_back({ Kind::edit, Stroke() });
+  undone_.clear();
+}
+
+void ActionHistory::push_stroke(Stroke stroke)
+{
+  done_.push_back({ Kind::stroke, std::move(stroke) });
+  undone_.clear();
+}
+
+namespace
+{
+template<typename Action>
+ActionHistory::Kind next(const std::vector<Action>& actions, const Stroke** stroke)
+{
+  if (stroke)
+  {
+    *stroke = !actions.empty() && actions.back().kind == ActionHistory::Kind::stroke
+                ? &actions.back().stroke
+                : nullptr;
+  }
+  return actions.empty() ? ActionHistory::Kind::edit : actions.back().kind;
+}
+
+template<typename Action>
+void move(std::vector<Action>& from, std::vector<Action>& to, bool done)
+{
+  Action action{ ActionHistory::Kind::edit, Stroke() };
+  if (!from.empty())
+  {
+    action = std::move(from.back());
+    from.pop_back();
+  }
+  if (done)
+  {
+    to.push_back(std::move(action));
+  }
+}
+}
+
+ActionHistory::Kind ActionHistory::next_undo(const Stroke** stroke) const
+{
+  return next(done_, stroke);
+}
+
+ActionHistory::Kind ActionHistory::next_redo(const Stroke** stroke) const
+{
+  return next(undone_, stroke);
+}
+
+void ActionHistory::undone(bool done)
+{
+  move(done_, undone_, done);
+}
+
+void ActionHistory::redone(bool done)
+{
+  move(undone_, done_, done);
+}
+
+std::size_t ActionHistory::strokes() const
+{
+  return std::count_if(
+    done_.begin(), done_.end(), [](const Action& a) { return a.kind == Kind::stroke; });
+}
+
+void ActionHistory::clear()
+{
+  done_.clear();
+  undone_.clear();
+}
+
+} // namespace geoshaping::interactor

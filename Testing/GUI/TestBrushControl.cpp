@@ -1,0 +1,121 @@
+#include "BrushControl.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace geoshaping::interactor;
+
+TEST(BrushControl, DefaultRadiusIsThreePerCentOfTheDiagonal)
+{
+  const double square[6] = { 0.0, 1e6, -5e5, 5e5, -2e4, 2e4 }; // 1,000 km, 40 km of relief
+  EXPECT_NEAR(default_brush_radius(square), 0.03 * std::sqrt(2e12 + 1.6e9), 1e-6);
+  const double horizon[6] = { 0, 100, 0, 60, 0, 20 };
+  EXPECT_NEAR(default_brush_radius(horizon), 0.03 * std::sqrt(10000 + 3600 + 400), 1e-12);
+  const double uninitialised[6] = { 1, -1, 1, -1, 1, -1 };
+  EXPECT_EQ(default_brush_radius(uninitialised), 0.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double bad[6] = { 0, nan, 0, 1, 0, 1 };
+  EXPECT_EQ(default_brush_radius(bad), 0.0);
+  const double point[6] = { 3, 3, 4, 4, 5, 5 };
+  EXPECT_EQ(default_brush_radius(point), 0.0);
+}
+
+TEST(BrushControl, SceneUnitComesFromTheReadersFieldData)
+{
+  EXPECT_EQ(scene_unit({ "m", "m", "m" }, false), "m");
+  EXPECT_EQ(scene_unit({ "Meters", "Meters", "ft" }, false), "m");
+  EXPECT_EQ(scene_unit({ "ft", "ft", "ft" }, true), "ft");
+  EXPECT_EQ(scene_unit({}, true), "m"); // a DEM surface
+  EXPECT_EQ(scene_unit({ "m", "ft" }, false), "");
+  EXPECT_EQ(scene_unit({}, false), "");
+}
+
+TEST(BrushControl, LengthsReadWithTheirUnit)
+{
+  EXPECT_EQ(format_length(42426.4, "m"), "42.4 km");
+  EXPECT_EQ(format_length(5.0, "m"), "5 m");
+  EXPECT_EQ(format_length(999.0, "m"), "999 m");
+  EXPECT_EQ(format_length(0.25, "ft"), "0.25 ft");
+  EXPECT_EQ(format_length(1.5, ""), "1.5 scene units");
+}
+
+TEST(BrushControl, CursorIsAtLeastFourPixels)
+{
+  EXPECT_EQ(cursor_radius(42000.0, 1600.0), 42000.0);
+  EXPECT_EQ(cursor_radius(5.0, 1600.0), 6400.0);
+  EXPECT_EQ(cursor_radius(5.0, 0.0), 5.0);
+  EXPECT_EQ(cursor_radius(std::numeric_limits<double>::quiet_NaN(), 2.0), 8.0);
+}
+
+TEST(BrushControl, NoteSaysWhyDabsWereNotStored)
+{
+  EXPECT_EQ(stroke_note({ 12, 0, -1 }, 42426.4, "m"), "Last stroke: 12 dabs.");
+  EXPECT_EQ(stroke_note({ 0, 0, -1 }, 1, ""), "");
+  EXPECT_EQ(stroke_note({ 0, 3, 12400.0 }, 5.0, "m"),
+    "Last stroke painted nothing: 3 dabs reached no vertex within the brush radius (5 m), "
+    "the nearest vertex was 12.4 km away, and were not stored: enlarge the brush.");
+  EXPECT_EQ(stroke_note({ 10, 1, -1 }, 2.0, ""),
+    "Last stroke: 10 dabs; 1 dab reached no vertex within the brush radius (2 scene units), "
+    "and was not stored: paint on the surface.");
+}
+
+TEST(BrushControl, StrokesComeOffTheListsAndBack)
+{
+  std::vector<double> dabs = { 1, 2, 3, 4, 5, 6 }, points = { 7, 1, 1 };
+  const std::size_t d0 = dabs.size(), p0 = points.size();
+  dabs.insert(dabs.end(), { 10, 20, 30, 4, 0, 1 });
+  points.insert(points.end(), { 8, 0, 1, 9, 0, 0.5 });
+  const Stroke stroke = stroke_between(dabs, points, d0, p0);
+  EXPECT_EQ(stroke.dabs.size(), 6u);
+  EXPECT_EQ(stroke.point_dabs.size(), 6u);
+  const auto after_dabs = dabs, after_points = points;
+  ASSERT_TRUE(remove_stroke(stroke, dabs, points));
+  EXPECT_EQ(dabs, (std::vector<double>{ 1, 2, 3, 4, 5, 6 }));
+  EXPECT_EQ(points, (std::vector<double>{ 7, 1, 1 }));
+  EXPECT_FALSE(remove_stroke(stroke, dabs, points)); // already off
+  ASSERT_TRUE(restore_stroke(stroke, dabs, points));
+  EXPECT_EQ(dabs, after_dabs);
+  EXPECT_EQ(points, after_points);
+  EXPECT_FALSE(restore_stroke(stroke, dabs, points)); // already on
+  // Changed since (a Python user cleared Dabs): left alone.
+  dabs.clear();
+  EXPECT_FALSE(remove_stroke(stroke, dabs, points));
+  EXPECT_TRUE(dabs.empty());
+  EXPECT_EQ(points, after_points);
+}
+
+TEST(BrushControl, UndoTakesStrokesAndEditsInTheOrderMade)
+{
+  ActionHistory history;
+  const Stroke* stroke = nullptr;
+  // Nothing recorded: Undo and Redo are the deformation's (edits loaded from a state).
+  EXPECT_EQ(history.next_undo(&stroke), ActionHistory::Kind::edit);
+  EXPECT_EQ(stroke, nullptr);
+  history.push_edit();
+  Stroke s;
+  s.dabs = { 1, 2, 3, 4, 5, 6 };
+  history.push_stroke(s);
+  EXPECT_EQ(history.strokes(), 1u);
+  ASSERT_EQ(history.next_undo(&stroke), ActionHistory::Kind::stroke);
+  EXPECT_EQ(stroke->dabs, s.dabs);
+  history.undone(true);
+  EXPECT_EQ(history.next_undo(), ActionHistory::Kind::edit);
+  history.undone(true);
+  ASSERT_EQ(history.next_redo(), ActionHistory::Kind::edit);
+  history.redone(true);
+  ASSERT_EQ(history.next_redo(&stroke), ActionHistory::Kind::stroke);
+  history.redone(true);
+  EXPECT_EQ(history.next_undo(), ActionHistory::Kind::stroke);
+  // Undo, then a new stroke: the undone one is forgotten.
+  history.undone(true);
+  history.push_stroke(s);
+  EXPECT_EQ(history.next_redo(&stroke), ActionHistory::Kind::edit);
+  EXPECT_EQ(stroke, nullptr);
+  // A stroke that could not be undone is dropped, not kept for Redo.
+  history.undone(false);
+  EXPECT_EQ(history.strokes(), 0u);
+  EXPECT_EQ(history.next_redo(&stroke), ActionHistory::Kind::edit);
+  EXPECT_EQ(stroke, nullptr);
+}
