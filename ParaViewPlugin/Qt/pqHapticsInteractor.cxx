@@ -167,6 +167,7 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
     this->Hands[i] = std::move(hand);
   }
   this->Stats = Figures();
+  this->OpenStrokes = 0;
   this->FramePeriodSeconds = 0.0;
   this->LastFrameEnd = std::chrono::steady_clock::time_point();
   this->FpsSince = std::chrono::steady_clock::now();
@@ -272,14 +273,33 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
     this->Stats.displacedAtRelease = this->Proxies.numberOfDisplacedPoints();
     this->LastEdit = this->Proxies.runEdit(interactor::EditCommand::commit);
     this->ReleaseCommits += this->LastEdit.changed ? 1 : 0;
+    if (this->LastEdit.changed)
+    {
+      this->History.push_edit();
+    }
     Q_EMIT this->editsChanged();
+  }
+  if (actions.begin_stroke)
+  {
+    this->beginStroke();
   }
   if (!actions.dabs.empty())
   {
     // Dabs land on the surface the user sees: while a hand drags, or once edits are
     // committed, it is not the paint filter's input.
-    this->Proxies.appendDabs(
+    const interactor::StrokeOutcome o = this->Proxies.appendDabs(
       actions.dabs, this->anyHandDragging() || this->Proxies.numberOfEdits() > 0);
+    this->Outcome.stored += o.stored;
+    this->Outcome.unreached += o.unreached;
+    if (o.nearest >= 0.0)
+    {
+      this->Outcome.nearest =
+        this->Outcome.nearest < 0.0 ? o.nearest : std::min(this->Outcome.nearest, o.nearest);
+    }
+  }
+  if (actions.end_stroke)
+  {
+    this->endStroke();
   }
   if (actions.begin_hold)
   {
@@ -357,7 +377,18 @@ interactor::EditResult pqHapticsInteractor::runEdit(interactor::EditCommand comm
       hand->controller.cancel();
     }
   }
-  this->LastEdit = this->Proxies.runEdit(command);
+  if (!this->strokeEdit(command))
+  {
+    this->LastEdit = this->Proxies.runEdit(command);
+    if (command == interactor::EditCommand::undo)
+    {
+      this->History.undone(this->LastEdit.changed);
+    }
+    else if (command == interactor::EditCommand::redo)
+    {
+      this->History.redone(this->LastEdit.changed);
+    }
+  }
   this->Proxies.render();
   Q_EMIT this->editsChanged();
   return this->LastEdit;
@@ -411,7 +442,7 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
 
 void pqHapticsInteractor::onFrame()
 {
-  this->Proxies.refresh();
+  this->refreshBrush();
   pqRenderView* view = this->Proxies.view();
   vtkSMRenderViewProxy* viewProxy = view ? view->getRenderViewProxy() : nullptr;
   const interactor::CameraFrame camera = this->Proxies.camera();
@@ -449,8 +480,12 @@ void pqHapticsInteractor::onFrame()
                                   : hand.controller.held() ? Eigen::Vector3d(0.2, 1.0, 0.3)
                                                            : Eigen::Vector3d(0.2, 0.6, 1.0);
     hand.sphere->SetCenter(world.position.data());
-    hand.sphere->SetRadius(painting ? this->Brush.radius : 0.004 * mapping.scale());
+    hand.sphere->SetRadius(
+      painting ? this->brushCursorRadius(world.position, camera) : 0.004 * mapping.scale());
     hand.cursor->GetProperty()->SetColor(color.x(), color.y(), color.z());
+    // A cage while painting: the paint under the brush shows through (a translucent
+    // sphere would turn on depth peeling, slower than the frame).
+    hand.cursor->GetProperty()->SetRepresentation(painting ? VTK_WIREFRAME : VTK_SURFACE);
     hand.cursor->SetVisibility(hand.kind != Mouse || world.button);
     hand.setRenderer(viewProxy ? viewProxy->GetRenderer() : nullptr);
     if (hand.device)

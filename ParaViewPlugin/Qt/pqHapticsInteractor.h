@@ -5,6 +5,7 @@
 // the proxies (pqHapticsProxies), moves the stylus cursors, renders, and publishes the
 // scene snapshot (grasp anchor, stiffness) back to the servo loop for the force.
 // After ParaView's CAVEInteraction plugin: device thread -> snapshot -> QTimer.
+#include "BrushControl.h"
 #include "HapticsControl.h"
 #include "PullControl.h"
 #include "geoshaping/haptics/force_model.h"
@@ -77,6 +78,16 @@ public:
   // How a mouse pull moves the grasp (PullControl.h); can change mid-pull.
   void setPullConstraint(geoshaping::interactor::PullConstraint c) { this->Pull = c; }
   geoshaping::interactor::PullConstraint pullConstraint() const { return this->Pull; }
+  // The brush fitted to the data (pqHapticsInteractorBrush.cxx): the radius is the paint's
+  // BrushRadius (kept in the state) or, while that is 0, 3 % of the data's diagonal.
+  // refreshBrush() reads both and the scene's unit; setBrushRadius() sets the property
+  // (0: back to the default).
+  void refreshBrush();
+  void setBrushRadius(double radius);
+  bool brushRadiusIsDefault() const { return this->BrushRadiusIsDefault; }
+  const std::string& sceneUnit() const { return this->SceneUnit; }
+  // What the last stroke did: its dabs, and why some were not stored (BrushControl.h).
+  const QString& brushNote() const { return this->BrushNote; }
   const Figures& figures() const { return this->Stats; }
   // True when every device hand replays a trace and all of them are over.
   bool replaysFinished() const;
@@ -101,6 +112,12 @@ public:
 Q_SIGNALS:
   void frameDone();
   void editsChanged();
+  // A stroke (one undo step: the dock's Undo removes it whole) began or ended. A ParaView
+  // undo set for strokes opens and closes here: the stroke is endStroke()'s record of
+  // the Dabs and PointDabs it appended (pqHapticsProxies::removeStroke/restoreStroke).
+  void strokeBegun();
+  void strokeEnded(const geoshaping::interactor::Stroke& stroke);
+  void brushChanged(); // radius, unit or note
   // A device hand touched a swatch of the 3D palette (second button held): the brush
   // now paints `value`.
   void paletteValuePicked(double value);
@@ -118,6 +135,13 @@ private:
     const geoshaping::interactor::StylusState& world);
   void updateFigures();
   bool anyHandDragging() const;
+  void beginStroke();
+  void endStroke();
+  // Undo or redo of a stroke when it is the dock's next step; false: the deformation's.
+  bool strokeEdit(geoshaping::interactor::EditCommand command);
+  // The paint cursor's radius at `at`: the brush's, at least a few pixels on screen.
+  double brushCursorRadius(
+    const Eigen::Vector3d& at, const geoshaping::interactor::CameraFrame& camera) const;
 
   std::array<std::unique_ptr<Hand>, 2> Hands;
   pqHapticsProxies Proxies;
@@ -134,4 +158,10 @@ private:
   std::uint64_t Sequence = 0;
   geoshaping::interactor::EditResult LastEdit;
   int ReleaseCommits = 0;
+  geoshaping::interactor::ActionHistory History; // the dock's undo order
+  int OpenStrokes = 0;                           // hands painting a stroke
+  geoshaping::interactor::StrokeOutcome Outcome; // of the open stroke
+  bool BrushRadiusIsDefault = true;
+  std::string SceneUnit;
+  QString BrushNote;
 };

@@ -381,12 +381,22 @@ void pqHapticsProxies::setDisplacement(const Eigen::Vector3d& d)
   }
 }
 
-void pqHapticsProxies::appendDabs(const std::vector<std::array<double, 6>>& dabs, bool onShown)
+geoshaping::interactor::StrokeOutcome pqHapticsProxies::appendDabs(
+  const std::vector<std::array<double, 6>>& dabs, bool onShown)
 {
+  geoshaping::interactor::StrokeOutcome outcome;
+  auto unreached = [&outcome](double nearest)
+  {
+    ++outcome.unreached;
+    if (nearest >= 0.0)
+    {
+      outcome.nearest = outcome.nearest < 0.0 ? nearest : std::min(outcome.nearest, nearest);
+    }
+  };
   vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
   if (!proxy || dabs.empty())
   {
-    return;
+    return outcome;
   }
   vtkStaticPointLocator* locator =
     onShown && proxy->GetProperty("PointDabs") ? this->shownLocator() : nullptr;
@@ -404,6 +414,15 @@ void pqHapticsProxies::appendDabs(const std::vector<std::array<double, 6>>& dabs
     {
       const double centre[3] = { dab[0], dab[1], dab[2] };
       locator->FindPointsWithinRadius(dab[3], centre, found);
+      if (found->GetNumberOfIds() == 0)
+      {
+        double nearest[3];
+        const vtkIdType id = locator->FindClosestPoint(centre);
+        shown->GetPoint(id >= 0 ? id : 0, nearest);
+        unreached(id >= 0 ? std::sqrt(vtkMath::Distance2BetweenPoints(nearest, centre)) : -1.0);
+        continue;
+      }
+      ++outcome.stored;
       ids.clear();
       distances.clear();
       for (vtkIdType k = 0; k < found->GetNumberOfIds(); ++k)
@@ -424,12 +443,20 @@ void pqHapticsProxies::appendDabs(const std::vector<std::array<double, 6>>& dabs
   {
     for (const auto& dab : dabs)
     {
+      double nearest = -1.0;
+      if (!this->reachesInput(dab.data(), dab[3], nearest))
+      {
+        unreached(nearest);
+        continue;
+      }
+      ++outcome.stored;
       this->Dabs.insert(this->Dabs.end(), dab.begin(), dab.end());
     }
     vtkSMPropertyHelper(proxy, "Dabs")
       .Set(this->Dabs.data(), static_cast<unsigned int>(this->Dabs.size()));
   }
-  this->PaintModified = true;
+  this->PaintModified = this->PaintModified || outcome.stored > 0;
+  return outcome;
 }
 
 geoshaping::interactor::EditResult pqHapticsProxies::runEdit(

@@ -1,0 +1,212 @@
+// pqHapticsProxies: the brush fitted to the data, and strokes as undoable steps.
+#include "pqHapticsProxies.h"
+
+#include <pqOutputPort.h>
+#include <pqUndoStack.h>
+
+#include <vtkAlgorithm.h>
+#include <vtkFieldData.h>
+#include <vtkMath.h>
+#include <vtkPVDataInformation.h>
+#include <vtkPVDataSetAttributesInformation.h>
+#include <vtkPointSet.h>
+#include <vtkPoints.h>
+#include <vtkSMPropertyHelper.h>
+#include <vtkSMProxy.h>
+#include <vtkStringArray.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace interactor = geoshaping::interactor;
+
+namespace
+{
+vtkPointSet* clientInput(pqPipelineSource* source)
+{
+  vtkSMProxy* proxy = source ? source->getProxy() : nullptr;
+  auto* algorithm = proxy ? vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject()) : nullptr;
+  return algorithm && algorithm->GetNumberOfInputPorts() > 0
+           ? vtkPointSet::SafeDownCast(algorithm->GetInputDataObject(0, 0))
+           : nullptr;
+}
+
+// The paint's output bounds (its input's points), from the data information: also
+// against a remote server.
+bool paintBounds(pqPipelineSource* paint, double bounds[6])
+{
+  pqOutputPort* port = paint ? paint->getOutputPort(0) : nullptr;
+  vtkPVDataInformation* info = port ? port->getDataInformation() : nullptr;
+  if (!info || info->GetNumberOfPoints() == 0)
+  {
+    return false;
+  }
+  info->GetBounds(bounds);
+  return true;
+}
+}
+
+double pqHapticsProxies::brushRadiusProperty() const
+{
+  vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
+  return proxy && proxy->GetProperty("BrushRadius")
+           ? vtkSMPropertyHelper(proxy, "BrushRadius").GetAsDouble()
+           : 0.0;
+}
+
+void pqHapticsProxies::setBrushRadiusProperty(double radius)
+{
+  vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
+  if (proxy && proxy->GetProperty("BrushRadius") && std::isfinite(radius) && radius >= 0.0)
+  {
+    // A setting of the tool, not an edit of the data: Ctrl+Z does not undo it.
+    pqScopedUndoExclude exclude;
+    vtkSMPropertyHelper(proxy, "BrushRadius").Set(radius);
+  }
+}
+
+double pqHapticsProxies::defaultBrushRadius() const
+{
+  double bounds[6];
+  return paintBounds(this->Paint, bounds) ? interactor::default_brush_radius(bounds) : 0.0;
+}
+
+std::string pqHapticsProxies::sceneUnit() const
+{
+  std::vector<std::string> axes;
+  bool projection = false;
+  if (vtkPointSet* input = clientInput(this->Paint))
+  {
+    vtkFieldData* fd = input->GetFieldData();
+    if (auto* units = vtkStringArray::SafeDownCast(fd->GetAbstractArray("AxisUnit")))
+    {
+      for (vtkIdType i = 0; i < units->GetNumberOfValues(); ++i)
+      {
+        axes.push_back(units->GetValue(i));
+      }
+    }
+    projection = fd->GetAbstractArray("Projection") != nullptr;
+  }
+  else if (pqOutputPort* port = this->Paint ? this->Paint->getOutputPort(0) : nullptr)
+  {
+    // Against a remote server only the arrays' names are known here.
+    vtkPVDataSetAttributesInformation* fields =
+      port->getDataInformation()->GetFieldDataInformation();
+    projection = fields && fields->GetArrayInformation("Projection");
+  }
+  return interactor::scene_unit(axes, projection);
+}
+
+bool pqHapticsProxies::reachesInput(const double centre[3], double radius, double& nearest)
+{
+  nearest = -1.0;
+  vtkPointSet* input = clientInput(this->Paint);
+  if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0)
+  {
+    // No client copy (a remote server): a dab whose sphere misses the bounding box reaches
+    // nothing.
+    double b[6];
+    if (!paintBounds(this->Paint, b))
+    {
+      return true;
+    }
+    double squared = 0.0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double out =
+        std::max({ b[2 * axis] - centre[axis], centre[axis] - b[2 * axis + 1], 0.0 });
+      squared += out * out;
+    }
+    return squared <= radius * radius;
+  }
+  const vtkMTimeType time = std::max(input->GetMTime(), input->GetPoints()->GetMTime());
+  if (!this->InputLocator || this->InputLocatorData != input || this->InputLocatorTime != time)
+  {
+    this->InputLocator = vtkSmartPointer<vtkStaticPointLocator>::New();
+    this->InputLocator->SetDataSet(input);
+    this->InputLocator->BuildLocator();
+    this->InputLocatorData = input;
+    this->InputLocatorTime = time;
+  }
+  const vtkIdType id = this->InputLocator->FindClosestPoint(centre);
+  if (id < 0)
+  {
+    return false;
+  }
+  double p[3];
+  input->GetPoint(id, p);
+  nearest = std::sqrt(vtkMath::Distance2BetweenPoints(p, centre));
+  return nearest <= radius;
+}
+
+namespace
+{
+// The lists as the proxy holds them now (a script may have changed them since).
+void readPaintLists(vtkSMProxy* proxy, std::vector<double>& dabs, std::vector<double>& pointDabs)
+{
+  dabs = vtkSMPropertyHelper(proxy, "Dabs").GetDoubleArray();
+  if (proxy->GetProperty("PointDabs"))
+  {
+    pointDabs = vtkSMPropertyHelper(proxy, "PointDabs").GetDoubleArray();
+  }
+}
+}
+
+void pqHapticsProxies::beginStroke()
+{
+  if (this->Paint)
+  {
+    readPaintLists(this->Paint->getProxy(), this->Dabs, this->PointDabs);
+  }
+  this->StrokeDabs = this->Dabs.size();
+  this->StrokePointDabs = this->PointDabs.size();
+}
+
+interactor::Stroke pqHapticsProxies::endStroke()
+{
+  return interactor::stroke_between(
+    this->Dabs, this->PointDabs, this->StrokeDabs, this->StrokePointDabs);
+}
+
+void pqHapticsProxies::setPaintLists()
+{
+  vtkSMProxy* proxy = this->Paint->getProxy();
+  vtkSMPropertyHelper(proxy, "Dabs")
+    .Set(this->Dabs.data(), static_cast<unsigned int>(this->Dabs.size()));
+  if (proxy->GetProperty("PointDabs"))
+  {
+    vtkSMPropertyHelper(proxy, "PointDabs")
+      .Set(this->PointDabs.data(), static_cast<unsigned int>(this->PointDabs.size()));
+  }
+  this->PaintModified = true;
+}
+
+bool pqHapticsProxies::removeStroke(const interactor::Stroke& stroke)
+{
+  if (!this->Paint)
+  {
+    return false;
+  }
+  readPaintLists(this->Paint->getProxy(), this->Dabs, this->PointDabs);
+  if (!interactor::remove_stroke(stroke, this->Dabs, this->PointDabs))
+  {
+    return false;
+  }
+  this->setPaintLists();
+  return true;
+}
+
+bool pqHapticsProxies::restoreStroke(const interactor::Stroke& stroke)
+{
+  if (!this->Paint)
+  {
+    return false;
+  }
+  readPaintLists(this->Paint->getProxy(), this->Dabs, this->PointDabs);
+  if (!interactor::restore_stroke(stroke, this->Dabs, this->PointDabs))
+  {
+    return false;
+  }
+  this->setPaintLists();
+  return true;
+}
