@@ -358,18 +358,24 @@ vtkStaticPointLocator* pqHapticsProxies::shownLocator()
     this->LocatorData = nullptr;
     return nullptr;
   }
-  const vtkMTimeType time = std::max(shown->GetMTime(), shown->GetPoints()->GetMTime());
-  if (!this->Locator || this->LocatorData != shown || this->LocatorTime != time)
+  return upToDate(shown, this->Locator, this->LocatorData, this->LocatorTime);
+}
+
+vtkStaticPointLocator* pqHapticsProxies::upToDate(vtkPointSet* data,
+  vtkSmartPointer<vtkStaticPointLocator>& locator, vtkPointSet*& of, vtkMTimeType& time)
+{
+  const vtkMTimeType now = std::max(data->GetMTime(), data->GetPoints()->GetMTime());
+  if (!locator || of != data || time != now)
   {
     // A static locator over ~10^4 points builds in well under a millisecond; the points
     // change every frame of a drag, so it is rebuilt only when a dab or grasp needs it.
-    this->Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
-    this->Locator->SetDataSet(shown);
-    this->Locator->BuildLocator();
-    this->LocatorData = shown;
-    this->LocatorTime = time;
+    locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+    locator->SetDataSet(data);
+    locator->BuildLocator();
+    of = data;
+    time = now;
   }
-  return this->Locator;
+  return locator;
 }
 
 void pqHapticsProxies::setDisplacement(const Eigen::Vector3d& d)

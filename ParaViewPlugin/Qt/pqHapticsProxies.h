@@ -19,6 +19,7 @@
 #include <vtkWeakPointer.h>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 class vtkDataSet;
@@ -129,7 +130,13 @@ private:
   // Whether a dab at `centre` reaches a vertex of the paint's input within `radius`;
   // `nearest` is then the distance to its nearest vertex (-1 when unknown).
   bool reachesInput(const double centre[3], double radius, double& nearest);
-  void setPaintLists();
+  // Reads Dabs and PointDabs from the proxy, changes them, and sets them back if
+  // `change` says it did.
+  bool changePaintLists(
+    const std::function<bool(std::vector<double>& dabs, std::vector<double>& pointDabs)>& change);
+  // `locator` over `data`, rebuilt when `data` or its points changed since (`of`, `time`).
+  static vtkStaticPointLocator* upToDate(vtkPointSet* data,
+    vtkSmartPointer<vtkStaticPointLocator>& locator, vtkPointSet*& of, vtkMTimeType& time);
   vtkSmartPointer<vtkStaticPointLocator> InputLocator;
   vtkMTimeType InputLocatorTime = 0;
   vtkPointSet* InputLocatorData = nullptr;

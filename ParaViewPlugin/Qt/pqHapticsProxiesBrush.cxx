@@ -119,16 +119,9 @@ bool pqHapticsProxies::reachesInput(const double centre[3], double radius, doubl
     }
     return squared <= radius * radius;
   }
-  const vtkMTimeType time = std::max(input->GetMTime(), input->GetPoints()->GetMTime());
-  if (!this->InputLocator || this->InputLocatorData != input || this->InputLocatorTime != time)
-  {
-    this->InputLocator = vtkSmartPointer<vtkStaticPointLocator>::New();
-    this->InputLocator->SetDataSet(input);
-    this->InputLocator->BuildLocator();
-    this->InputLocatorData = input;
-    this->InputLocatorTime = time;
-  }
-  const vtkIdType id = this->InputLocator->FindClosestPoint(centre);
+  const vtkIdType id =
+    upToDate(input, this->InputLocator, this->InputLocatorData, this->InputLocatorTime)
+      ->FindClosestPoint(centre);
   if (id < 0)
   {
     return false;
@@ -168,9 +161,19 @@ interactor::Stroke pqHapticsProxies::endStroke()
     this->Dabs, this->PointDabs, this->StrokeDabs, this->StrokePointDabs);
 }
 
-void pqHapticsProxies::setPaintLists()
+bool pqHapticsProxies::changePaintLists(
+  const std::function<bool(std::vector<double>&, std::vector<double>&)>& change)
 {
-  vtkSMProxy* proxy = this->Paint->getProxy();
+  vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
+  if (!proxy)
+  {
+    return false;
+  }
+  readPaintLists(proxy, this->Dabs, this->PointDabs);
+  if (!change(this->Dabs, this->PointDabs))
+  {
+    return false;
+  }
   vtkSMPropertyHelper(proxy, "Dabs")
     .Set(this->Dabs.data(), static_cast<unsigned int>(this->Dabs.size()));
   if (proxy->GetProperty("PointDabs"))
@@ -179,34 +182,17 @@ void pqHapticsProxies::setPaintLists()
       .Set(this->PointDabs.data(), static_cast<unsigned int>(this->PointDabs.size()));
   }
   this->PaintModified = true;
+  return true;
 }
 
 bool pqHapticsProxies::removeStroke(const interactor::Stroke& stroke)
 {
-  if (!this->Paint)
-  {
-    return false;
-  }
-  readPaintLists(this->Paint->getProxy(), this->Dabs, this->PointDabs);
-  if (!interactor::remove_stroke(stroke, this->Dabs, this->PointDabs))
-  {
-    return false;
-  }
-  this->setPaintLists();
-  return true;
+  return this->changePaintLists([&stroke](std::vector<double>& dabs, std::vector<double>& points)
+    { return interactor::remove_stroke(stroke, dabs, points); });
 }
 
 bool pqHapticsProxies::restoreStroke(const interactor::Stroke& stroke)
 {
-  if (!this->Paint)
-  {
-    return false;
-  }
-  readPaintLists(this->Paint->getProxy(), this->Dabs, this->PointDabs);
-  if (!interactor::restore_stroke(stroke, this->Dabs, this->PointDabs))
-  {
-    return false;
-  }
-  this->setPaintLists();
-  return true;
+  return this->changePaintLists([&stroke](std::vector<double>& dabs, std::vector<double>& points)
+    { return interactor::restore_stroke(stroke, dabs, points); });
 }

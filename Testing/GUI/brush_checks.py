@@ -9,6 +9,8 @@ import numpy as np
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
+from run_gui_test import read_results
+
 SIDE = 1.0e6  # m
 N = 51  # vertices per side: 20 km apart
 RELIEF = 2000.0  # m
@@ -64,14 +66,6 @@ def prepare(mode, out, env):
     env["GEOSHAPING_GUI_SURFACE"] = out + ".ts"
     if mode in ("brush_fast", "brush_undo"):
         env["GEOSHAPING_GUI_FALLOFF"] = "Constant"  # every vertex under a dab gets its share
-
-
-def read_results(path):
-    results = {}
-    for line in open(path):
-        key, _, value = line.partition(" = ")
-        results[key.strip()] = value.strip()
-    return results
 
 
 def snapshot(out, name):
@@ -159,13 +153,13 @@ def check_fast(out):
     cover = stroke_cover(rows[:, :3], path, radius)
     beyond = np.min([distance_to_segment(rows[:, :3], path[0], path[1])], axis=0) > radius * (1 + 1e-9)
     m = rows[:, 6]
+    assert cover.sum() >= 50, "%d vertices within 0.98 radius (%.1f m) of the path" % (cover.sum(), radius)
     print("fast stroke: %.1f km between two frames (%.1f radii), radius %.1f m; %d vertices "
           "within 0.98 radius of the path: %d painted 1 exactly, smallest %.9g; %d vertices "
           "changed beyond the radius" % (length / 1e3, length / radius, radius, cover.sum(),
                                           (m[cover] == 1.0).sum(), m[cover].min(),
                                           (m[beyond] != INITIAL).sum()))
     assert length > 8 * radius, (length, radius)
-    assert cover.sum() >= 50, cover.sum()
     assert np.all(m[cover] == 1.0), "gaps or a weaker value along the stroke"
     assert np.all(m[beyond] == INITIAL), "painted beyond the brush"
 
@@ -176,12 +170,12 @@ def check_undo(out):
     path = [p for kind, p in picks(out)][-3:]  # the stroke's press and moves (after the pull's)
     cover = stroke_cover(stroke[:, 3:6], path, radius)  # painted where it is shown
     rest, pulled = stroke[:, :3], stroke[:, 3:6]
+    assert cover.sum() >= 20, "%d vertices within 0.98 radius (%.1f m) of the path" % (cover.sum(), radius)
     print("after a pull and a black stroke: edits %s, %d vertices moved; %d vertices within "
           "0.98 radius of the stroke, %d of them exactly 0, largest %.9g; %s point-dab values" % (
               results["edit_history"], (np.abs(pulled - rest).max(axis=1) > 0).sum(), cover.sum(),
               (stroke[cover, 6] == 0.0).sum(), stroke[cover, 6].max(), results["point_dab_values"]))
     assert results["edit_history"] == "1" and np.any(pulled != rest), "the pull was not committed"
-    assert cover.sum() >= 20, cover.sum()
     assert np.all(stroke[cover, 6] == 0.0), "the black swatch did not paint 0"
     black = (image(out + "-stroke.png").max(axis=1) < 16).mean()
     print("black pixels in the view: %.2f %%" % (100 * black))
