@@ -68,6 +68,28 @@ double cursor_radius(double brush_radius, double scene_per_pixel)
   return std::isfinite(brush_radius) ? std::max(brush_radius, least) : least;
 }
 
+namespace
+{
+// The smaller of two distances, < 0 meaning not known.
+double leastKnown(double a, double b)
+{
+  return a < 0.0 ? b : (b < 0.0 ? a : std::min(a, b));
+}
+}
+
+void StrokeOutcome::add_unreached(double distance)
+{
+  ++unreached;
+  nearest = leastKnown(nearest, distance);
+}
+
+void StrokeOutcome::add(const StrokeOutcome& other)
+{
+  stored += other.stored;
+  unreached += other.unreached;
+  nearest = leastKnown(nearest, other.nearest);
+}
+
 std::string stroke_note(const StrokeOutcome& outcome, double radius, const std::string& unit)
 {
   if (outcome.unreached == 0)

@@ -41,6 +41,10 @@ struct StrokeOutcome
   std::size_t stored = 0;
   std::size_t unreached = 0;
   double nearest = -1.0; // the least distance from an unreached dab to a vertex
+
+  // One more dab that reached no vertex, `distance` from the nearest (< 0: not known).
+  void add_unreached(double distance);
+  void add(const StrokeOutcome& other);
 };
 std::string stroke_note(const StrokeOutcome& outcome, double radius, const std::string& unit);
 

@@ -287,15 +287,8 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
   {
     // Dabs land on the surface the user sees: while a hand drags, or once edits are
     // committed, it is not the paint filter's input.
-    const interactor::StrokeOutcome o = this->Proxies.appendDabs(
-      actions.dabs, this->anyHandDragging() || this->Proxies.numberOfEdits() > 0);
-    this->Outcome.stored += o.stored;
-    this->Outcome.unreached += o.unreached;
-    if (o.nearest >= 0.0)
-    {
-      this->Outcome.nearest =
-        this->Outcome.nearest < 0.0 ? o.nearest : std::min(this->Outcome.nearest, o.nearest);
-    }
+    this->Outcome.add(this->Proxies.appendDabs(
+      actions.dabs, this->anyHandDragging() || this->Proxies.numberOfEdits() > 0));
   }
   if (actions.end_stroke)
   {

@@ -391,14 +391,6 @@ geoshaping::interactor::StrokeOutcome pqHapticsProxies::appendDabs(
   const std::vector<std::array<double, 6>>& dabs, bool onShown)
 {
   geoshaping::interactor::StrokeOutcome outcome;
-  auto unreached = [&outcome](double nearest)
-  {
-    ++outcome.unreached;
-    if (nearest >= 0.0)
-    {
-      outcome.nearest = outcome.nearest < 0.0 ? nearest : std::min(outcome.nearest, nearest);
-    }
-  };
   vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
   if (!proxy || dabs.empty())
   {
@@ -425,7 +417,8 @@ geoshaping::interactor::StrokeOutcome pqHapticsProxies::appendDabs(
         double nearest[3];
         const vtkIdType id = locator->FindClosestPoint(centre);
         shown->GetPoint(id >= 0 ? id : 0, nearest);
-        unreached(id >= 0 ? std::sqrt(vtkMath::Distance2BetweenPoints(nearest, centre)) : -1.0);
+        outcome.add_unreached(
+          id >= 0 ? std::sqrt(vtkMath::Distance2BetweenPoints(nearest, centre)) : -1.0);
         continue;
       }
       ++outcome.stored;
@@ -452,7 +445,7 @@ geoshaping::interactor::StrokeOutcome pqHapticsProxies::appendDabs(
       double nearest = -1.0;
       if (!this->reachesInput(dab.data(), dab[3], nearest))
       {
-        unreached(nearest);
+        outcome.add_unreached(nearest);
         continue;
       }
       ++outcome.stored;

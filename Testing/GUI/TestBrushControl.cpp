@@ -61,6 +61,25 @@ TEST(BrushControl, NoteSaysWhyDabsWereNotStored)
     "and was not stored: paint on the surface.");
 }
 
+TEST(BrushControl, OutcomesAddUpWithTheNearestKnownDistance)
+{
+  StrokeOutcome total;
+  total.add_unreached(-1.0);
+  EXPECT_EQ(total.nearest, -1.0);
+  StrokeOutcome frame;
+  frame.stored = 3;
+  frame.add_unreached(12.0);
+  frame.add_unreached(8.0);
+  total.add(frame);
+  EXPECT_EQ(total.stored, 3u);
+  EXPECT_EQ(total.unreached, 3u);
+  EXPECT_EQ(total.nearest, 8.0);
+  total.add(StrokeOutcome{ 2, 0, -1.0 });
+  EXPECT_EQ(total.stored, 5u);
+  EXPECT_EQ(total.unreached, 3u);
+  EXPECT_EQ(total.nearest, 8.0);
+}
+
 TEST(BrushControl, StrokesComeOffTheListsAndBack)
 {
   std::vector<double> dabs = { 1, 2, 3, 4, 5, 6 }, points = { 7, 1, 1 };
