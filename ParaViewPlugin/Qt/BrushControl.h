@@ -1,8 +1,7 @@
 #pragma once
 // The brush of the Haptics dock fitted to the data, free of Qt, VTK and ParaView so that
 // it is unit tested (Testing/GUI/TestBrushControl.cpp): the default radius, the scene's
-// length unit, the cursor's size on screen, what to tell when dabs reach nothing, and the
-// dock's undo order of strokes and committed edits.
+// length unit, the cursor's size on screen, and what to tell when dabs reach nothing.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -47,62 +46,5 @@ struct StrokeOutcome
   void add(const StrokeOutcome& other);
 };
 std::string stroke_note(const StrokeOutcome& outcome, double radius, const std::string& unit);
-
-// The dabs one stroke appended to MalleabilityPaint's Dabs and PointDabs lists.
-struct Stroke
-{
-  std::size_t dabs_begin = 0; // the lists' sizes when the stroke began
-  std::size_t point_dabs_begin = 0;
-  std::vector<double> dabs; // what the stroke appended to each
-  std::vector<double> point_dabs;
-  bool empty() const { return dabs.empty() && point_dabs.empty(); }
-};
-
-// The stroke over lists `dabs`, `point_dabs` that held `dabs_begin`, `point_dabs_begin`
-// values when it began.
-Stroke stroke_between(const std::vector<double>& dabs, const std::vector<double>& point_dabs,
-  std::size_t dabs_begin, std::size_t point_dabs_begin);
-// Removes the stroke from the lists; false (lists unchanged) when they no longer end with
-// it (changed since, e.g. from Python).
-bool remove_stroke(
-  const Stroke& stroke, std::vector<double>& dabs, std::vector<double>& point_dabs);
-// Appends it again; false (lists unchanged) when they do not hold what they held when the
-// stroke began.
-bool restore_stroke(
-  const Stroke& stroke, std::vector<double>& dabs, std::vector<double>& point_dabs);
-
-// The dock's Undo and Redo order: the user's strokes and committed edits, latest last.
-// Undo takes the latest done action (an edit when none is recorded: the deformation's own
-// list may hold edits made elsewhere or loaded from a state) and moves it to the redoable
-// ones; a new action forgets the redoable ones.
-class ActionHistory
-{
-public:
-  enum class Kind
-  {
-    edit,
-    stroke
-  };
-  void push_edit();
-  void push_stroke(Stroke stroke);
-  // The action Undo (Redo) acts on; `stroke` is set for a stroke.
-  Kind next_undo(const Stroke** stroke = nullptr) const;
-  Kind next_redo(const Stroke** stroke = nullptr) const;
-  // After Undo (Redo) has been carried out: `done` moves the action over, otherwise it
-  // is dropped (it could not be undone: e.g. the edits were reset).
-  void undone(bool done);
-  void redone(bool done);
-  std::size_t strokes() const;
-  void clear();
-
-private:
-  struct Action
-  {
-    Kind kind;
-    Stroke stroke;
-  };
-  std::vector<Action> done_;
-  std::vector<Action> undone_;
-};
 
 } // namespace geoshaping::interactor

@@ -167,7 +167,6 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
     this->Hands[i] = std::move(hand);
   }
   this->Stats = Figures();
-  this->OpenStrokes = 0;
   this->FramePeriodSeconds = 0.0;
   this->LastFrameEnd = std::chrono::steady_clock::time_point();
   this->FpsSince = std::chrono::steady_clock::now();
@@ -183,6 +182,9 @@ void pqHapticsInteractor::stop()
   {
     hand.reset();
   }
+  this->OpenStrokes = 0;
+  this->StrokeExclude.reset(); // a stroke cut short by Stop is no step
+  this->StrokeStep.reset();
   this->Proxies.render();
 }
 
@@ -273,10 +275,6 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
     this->Stats.displacedAtRelease = this->Proxies.numberOfDisplacedPoints();
     this->LastEdit = this->Proxies.runEdit(interactor::EditCommand::commit);
     this->ReleaseCommits += this->LastEdit.changed ? 1 : 0;
-    if (this->LastEdit.changed)
-    {
-      this->History.push_edit();
-    }
     Q_EMIT this->editsChanged();
   }
   if (actions.begin_stroke)
@@ -373,14 +371,6 @@ interactor::EditResult pqHapticsInteractor::runEdit(interactor::EditCommand comm
   if (!this->strokeEdit(command))
   {
     this->LastEdit = this->Proxies.runEdit(command);
-    if (command == interactor::EditCommand::undo)
-    {
-      this->History.undone(this->LastEdit.changed);
-    }
-    else if (command == interactor::EditCommand::redo)
-    {
-      this->History.redone(this->LastEdit.changed);
-    }
   }
   this->Proxies.render();
   Q_EMIT this->editsChanged();

@@ -10,6 +10,7 @@
 #include "PullControl.h"
 #include "geoshaping/haptics/force_model.h"
 #include "pqHapticsProxies.h"
+#include "undo_step.h"
 
 #include <QObject>
 #include <QString>
@@ -112,11 +113,6 @@ public:
 Q_SIGNALS:
   void frameDone();
   void editsChanged();
-  // A stroke (one undo step: the dock's Undo removes it whole) began or ended. A ParaView
-  // undo set for strokes opens and closes here: the stroke is endStroke()'s record of
-  // the Dabs and PointDabs it appended (pqHapticsProxies::removeStroke/restoreStroke).
-  void strokeBegun();
-  void strokeEnded(const geoshaping::interactor::Stroke& stroke);
   void brushChanged(); // radius, unit or note
   // A device hand touched a swatch of the 3D palette (second button held): the brush
   // now paints `value`.
@@ -137,7 +133,8 @@ private:
   bool anyHandDragging() const;
   void beginStroke();
   void endStroke();
-  // Undo or redo of a stroke when it is the dock's next step; false: the deformation's.
+  // Undo or redo of a stroke, when ParaView's next step that way is a stroke of the
+  // target's paint (pqHapticsInteractorBrush.cxx); false: not a stroke.
   bool strokeEdit(geoshaping::interactor::EditCommand command);
   // The paint cursor's radius at `at`: the brush's, at least a few pixels on screen.
   double brushCursorRadius(
@@ -158,9 +155,12 @@ private:
   std::uint64_t Sequence = 0;
   geoshaping::interactor::EditResult LastEdit;
   int ReleaseCommits = 0;
-  geoshaping::interactor::ActionHistory History; // the dock's undo order
-  int OpenStrokes = 0;                           // hands painting a stroke
-  geoshaping::interactor::StrokeOutcome Outcome; // of the open stroke
+  // A stroke is one step of ParaView's undo stack ("Paint Stroke": the paint proxy's
+  // state from the first press to the last release of the hands painting it).
+  std::unique_ptr<geoshaping::undo::Step> StrokeStep;
+  std::unique_ptr<geoshaping::undo::Exclude> StrokeExclude; // held while a stroke is open
+  int OpenStrokes = 0;                                      // hands painting a stroke
+  geoshaping::interactor::StrokeOutcome Outcome;            // of the open stroke
   bool BrushRadiusIsDefault = true;
   std::string SceneUnit;
   QString BrushNote;

@@ -1,7 +1,14 @@
-// pqHapticsInteractor: the brush fitted to the data, strokes as undo steps.
+// pqHapticsInteractor: the brush fitted to the data; a stroke is one step of ParaView's
+// undo stack, which the dock's Undo and Redo step through as Edit > Undo does.
 #include "pqHapticsInteractor.h"
 
+#include <pqApplicationCore.h>
+#include <pqPipelineSource.h>
 #include <pqRenderView.h>
+#include <pqUndoStack.h>
+
+#include <vtkSMRemoteObjectUpdateUndoElement.h>
+#include <vtkUndoSet.h>
 
 #include <vtkRenderer.h>
 #include <vtkSMRenderViewProxy.h>
@@ -9,6 +16,12 @@
 #include <cmath>
 
 namespace interactor = geoshaping::interactor;
+
+namespace
+{
+// The label of a stroke's step on ParaView's undo stack (Edit > Undo Paint Stroke).
+const char* const StrokeLabel = "Paint Stroke";
+}
 
 void pqHapticsInteractor::refreshBrush()
 {
@@ -39,12 +52,19 @@ void pqHapticsInteractor::setBrushRadius(double radius)
 
 void pqHapticsInteractor::beginStroke()
 {
-  if (this->OpenStrokes++ == 0)
+  if (this->OpenStrokes++ > 0)
   {
-    this->Proxies.beginStroke();
-    this->Outcome = interactor::StrokeOutcome();
-    Q_EMIT this->strokeBegun();
+    return; // the other hand's stroke is open: one stroke, one step
   }
+  this->Proxies.beginStroke();
+  this->Outcome = interactor::StrokeOutcome();
+  // Tracked before the stroke pushes anything: Edit > Undo gives back this state.
+  this->StrokeStep = std::make_unique<geoshaping::undo::Step>(StrokeLabel);
+  pqPipelineSource* paint = this->Proxies.paint();
+  this->StrokeStep->track(paint ? paint->getProxy() : nullptr);
+  // Nothing else is a step until the stroke ends: what the paint sets off meanwhile (the
+  // colour map growing to the painted range) would otherwise come before it on the stack.
+  this->StrokeExclude = std::make_unique<geoshaping::undo::Exclude>();
 }
 
 void pqHapticsInteractor::endStroke()
@@ -53,51 +73,61 @@ void pqHapticsInteractor::endStroke()
   {
     return;
   }
-  const interactor::Stroke stroke = this->Proxies.endStroke();
-  if (!stroke.empty())
+  if (pqPipelineSource* paint = this->Outcome.stored > 0 ? this->Proxies.paint() : nullptr)
   {
-    this->History.push_stroke(stroke);
+    // The stroke's last dabs pushed (as a frame does: not a step), then the stroke is one.
+    paint->getProxy()->UpdateVTKObjects();
   }
+  this->StrokeExclude.reset();
+  if (this->Outcome.stored > 0)
+  {
+    this->StrokeStep->finish();
+  }
+  this->StrokeStep.reset();
   this->BrushNote = QString::fromStdString(
     interactor::stroke_note(this->Outcome, this->Brush.radius, this->SceneUnit));
-  Q_EMIT this->strokeEnded(stroke);
   Q_EMIT this->brushChanged();
 }
 
 bool pqHapticsInteractor::strokeEdit(interactor::EditCommand command)
 {
   const bool undo = command == interactor::EditCommand::undo;
-  const interactor::Stroke* stroke = nullptr;
-  const interactor::ActionHistory::Kind next = undo ? this->History.next_undo(&stroke)
-                                               : command == interactor::EditCommand::redo
-                                                 ? this->History.next_redo(&stroke)
-                                                 : interactor::ActionHistory::Kind::edit;
-  if (this->OpenStrokes > 0 && command != interactor::EditCommand::commit)
+  if (!undo && command != interactor::EditCommand::redo)
   {
-    // Its record begins with the lists as they were: they must not change under it.
+    return false;
+  }
+  if (this->OpenStrokes > 0)
+  {
+    // Its step begins with the paint as it was: it must not change under it.
     this->LastEdit.changed = false;
     this->LastEdit.message = "a stroke is being painted: release it first";
     return true;
   }
-  if (next != interactor::ActionHistory::Kind::stroke)
+  pqUndoStack* stack = pqApplicationCore::instance()->getUndoStack();
+  const bool next = stack && (undo ? stack->canUndo() : stack->canRedo());
+  const QString label = next ? (undo ? stack->undoLabel() : stack->redoLabel()) : QString();
+  vtkUndoSet* step = next ? geoshaping::undo::next_step(!undo) : nullptr;
+  pqPipelineSource* paint = this->Proxies.paint();
+  auto* element = step && step->GetNumberOfElements() == 1
+                    ? vtkSMRemoteObjectUpdateUndoElement::SafeDownCast(step->GetElement(0))
+                    : nullptr;
+  if (label != StrokeLabel || !element || !paint ||
+      element->GetGlobalId() != paint->getProxy()->GetGlobalID())
   {
     return false;
   }
-  const bool done =
-    undo ? this->Proxies.removeStroke(*stroke) : this->Proxies.restoreStroke(*stroke);
+  // Exactly Edit > Undo / Redo: the paint proxy's lists as they were before / after.
   if (undo)
   {
-    this->History.undone(done);
+    stack->undo();
   }
   else
   {
-    this->History.redone(done);
+    stack->redo();
   }
-  this->LastEdit.changed = done;
+  this->LastEdit.changed = true;
   this->LastEdit.edits = static_cast<std::size_t>(this->Proxies.numberOfEdits());
-  this->LastEdit.message =
-    std::string(done ? "paint stroke " : "the paint changed since the stroke, not ") +
-    (undo ? "undone" : "redone");
+  this->LastEdit.message = undo ? "paint stroke undone" : "paint stroke redone";
   return true;
 }
 

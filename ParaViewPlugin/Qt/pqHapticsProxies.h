@@ -19,7 +19,6 @@
 #include <vtkWeakPointer.h>
 
 #include <array>
-#include <functional>
 #include <vector>
 
 class vtkDataSet;
@@ -72,11 +71,10 @@ public:
   double defaultBrushRadius() const;
   // The scene's length unit from the paint input's field data ("" when unknown).
   std::string sceneUnit() const;
-  // A stroke's dabs, from its begin to its end, as one step the dock can undo and redo.
+  // A stroke begins: the dabs it appends go after the lists the proxy holds now (an undo
+  // through ParaView's stack may have changed them since the last stroke).
   void beginStroke();
-  geoshaping::interactor::Stroke endStroke();
-  bool removeStroke(const geoshaping::interactor::Stroke& stroke);
-  bool restoreStroke(const geoshaping::interactor::Stroke& stroke);
+  pqPipelineSource* paint() const { return this->Paint; }
   // Commit / undo / redo / reset, keeping the client's EditHistory in step
   // (docs/editing.md); pushes the proxy. Render afterwards.
   geoshaping::interactor::EditResult runEdit(geoshaping::interactor::EditCommand command);
@@ -125,15 +123,9 @@ private:
   vtkStaticPointLocator* shownLocator();
   std::vector<double> Dabs;
   std::vector<double> PointDabs;
-  std::size_t StrokeDabs = 0; // the lists' sizes when the stroke began
-  std::size_t StrokePointDabs = 0;
   // Whether a dab at `centre` reaches a vertex of the paint's input within `radius`;
   // `nearest` is then the distance to its nearest vertex (-1 when unknown).
   bool reachesInput(const double centre[3], double radius, double& nearest);
-  // Reads Dabs and PointDabs from the proxy, changes them, and sets them back if
-  // `change` says it did.
-  bool changePaintLists(
-    const std::function<bool(std::vector<double>& dabs, std::vector<double>& pointDabs)>& change);
   // `locator` over `data`, rebuilt when `data` or its points changed since (`of`, `time`).
   static vtkStaticPointLocator* upToDate(vtkPointSet* data,
     vtkSmartPointer<vtkStaticPointLocator>& locator, vtkPointSet*& of, vtkMTimeType& time);

@@ -1,8 +1,8 @@
-// pqHapticsProxies: the brush fitted to the data, and strokes as undoable steps.
+// pqHapticsProxies: the brush fitted to the data.
 #include "pqHapticsProxies.h"
+#include "undo_step.h"
 
 #include <pqOutputPort.h>
-#include <pqUndoStack.h>
 
 #include <vtkAlgorithm.h>
 #include <vtkFieldData.h>
@@ -60,7 +60,7 @@ void pqHapticsProxies::setBrushRadiusProperty(double radius)
   if (proxy && proxy->GetProperty("BrushRadius") && std::isfinite(radius) && radius >= 0.0)
   {
     // A setting of the tool, not an edit of the data: Ctrl+Z does not undo it.
-    pqScopedUndoExclude exclude;
+    const geoshaping::undo::Exclude setting;
     vtkSMPropertyHelper(proxy, "BrushRadius").Set(radius);
   }
 }
@@ -132,67 +132,16 @@ bool pqHapticsProxies::reachesInput(const double centre[3], double radius, doubl
   return nearest <= radius;
 }
 
-namespace
-{
-// The lists as the proxy holds them now (a script may have changed them since).
-void readPaintLists(vtkSMProxy* proxy, std::vector<double>& dabs, std::vector<double>& pointDabs)
-{
-  dabs = vtkSMPropertyHelper(proxy, "Dabs").GetDoubleArray();
-  if (proxy->GetProperty("PointDabs"))
-  {
-    pointDabs = vtkSMPropertyHelper(proxy, "PointDabs").GetDoubleArray();
-  }
-}
-}
-
 void pqHapticsProxies::beginStroke()
-{
-  if (this->Paint)
-  {
-    readPaintLists(this->Paint->getProxy(), this->Dabs, this->PointDabs);
-  }
-  this->StrokeDabs = this->Dabs.size();
-  this->StrokePointDabs = this->PointDabs.size();
-}
-
-interactor::Stroke pqHapticsProxies::endStroke()
-{
-  return interactor::stroke_between(
-    this->Dabs, this->PointDabs, this->StrokeDabs, this->StrokePointDabs);
-}
-
-bool pqHapticsProxies::changePaintLists(
-  const std::function<bool(std::vector<double>&, std::vector<double>&)>& change)
 {
   vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
   if (!proxy)
   {
-    return false;
+    return;
   }
-  readPaintLists(proxy, this->Dabs, this->PointDabs);
-  if (!change(this->Dabs, this->PointDabs))
-  {
-    return false;
-  }
-  vtkSMPropertyHelper(proxy, "Dabs")
-    .Set(this->Dabs.data(), static_cast<unsigned int>(this->Dabs.size()));
+  this->Dabs = vtkSMPropertyHelper(proxy, "Dabs").GetDoubleArray();
   if (proxy->GetProperty("PointDabs"))
   {
-    vtkSMPropertyHelper(proxy, "PointDabs")
-      .Set(this->PointDabs.data(), static_cast<unsigned int>(this->PointDabs.size()));
+    this->PointDabs = vtkSMPropertyHelper(proxy, "PointDabs").GetDoubleArray();
   }
-  this->PaintModified = true;
-  return true;
-}
-
-bool pqHapticsProxies::removeStroke(const interactor::Stroke& stroke)
-{
-  return this->changePaintLists([&stroke](std::vector<double>& dabs, std::vector<double>& points)
-    { return interactor::remove_stroke(stroke, dabs, points); });
-}
-
-bool pqHapticsProxies::restoreStroke(const interactor::Stroke& stroke)
-{
-  return this->changePaintLists([&stroke](std::vector<double>& dabs, std::vector<double>& points)
-    { return interactor::restore_stroke(stroke, dabs, points); });
 }

@@ -27,11 +27,13 @@ SCRIPTS = {
     # Two frames far apart (about 450 km, ten radii): the stroke fills the way.
     "brush_fast": "swatch 10; press 0.4 0.4 ctrl; move 0.6 0.6; release; wait; snapshot stroke",
     # A pull, then a black stroke on the pulled surface; the dock's Undo takes the stroke
-    # off first, then the pull; Redo puts them back in order.
+    # off first, then the pull; Redo puts them back in order; Edit > Undo (Ctrl+Z) takes
+    # the stroke off as the dock's Undo does, Edit > Redo puts it back.
     "brush_undo": "press 0.5 0.55; move 0.5 0.57; move 0.5 0.6; release; wait; swatch 0; "
                   "press 0.42 0.45 ctrl; move 0.47 0.45; move 0.52 0.46; release; wait; "
                   "snapshot stroke; undo; snapshot undo1; undo; snapshot undo2; redo; "
-                  "snapshot redo1; redo; snapshot redo2",
+                  "snapshot redo1; redo; snapshot redo2; editundo; snapshot editundo; "
+                  "editredo; snapshot editredo",
 }
 
 
@@ -180,7 +182,8 @@ def check_undo(out):
     black = (image(out + "-stroke.png").max(axis=1) < 16).mean()
     print("black pixels in the view: %.2f %%" % (100 * black))
     assert black > 0.002, black
-    steps = {name: snapshot(out, name) for name in ("undo1", "undo2", "redo1", "redo2")}
+    steps = {name: snapshot(out, name)
+             for name in ("undo1", "undo2", "redo1", "redo2", "editundo", "editredo")}
     for name, (texts, rows) in steps.items():
         print("%s: edits %s, %d vertices painted, shape %s; dock %r" % (
             name, texts["edit_history"], (rows[:, 6] != INITIAL).sum(),
@@ -196,6 +199,11 @@ def check_undo(out):
     assert np.array_equal(rows[:, 3:6], pulled) and np.all(rows[:, 6] == INITIAL), "Redo: the pull first"
     t, rows = steps["redo2"]
     assert np.array_equal(rows[:, 6], stroke[:, 6]), "the second Redo did not put the stroke back"
+    t, rows = steps["editundo"]
+    assert np.all(rows[:, 6] == INITIAL) and np.array_equal(rows[:, 3:6], pulled), \
+        "Edit > Undo did not take the stroke off (alone)"
+    t, rows = steps["editredo"]
+    assert np.array_equal(rows[:, 6], stroke[:, 6]), "Edit > Redo did not put the stroke back"
 
 
 def check(mode, out):

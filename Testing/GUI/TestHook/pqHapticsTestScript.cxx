@@ -4,8 +4,10 @@
 #include "pqHapticsProxies.h"
 
 #include <pqActiveObjects.h>
+#include <pqApplicationCore.h>
 #include <pqPipelineSource.h>
 #include <pqRenderView.h>
+#include <pqUndoStack.h>
 #include <pqView.h>
 
 #include <vtkAlgorithm.h>
@@ -83,6 +85,14 @@ bool pqHapticsTestScript::step()
       button->click();
     }
   }
+  else if (verb == "editundo" || verb == "editredo")
+  {
+    // What Edit > Undo / Redo (Ctrl+Z / Ctrl+Y) do.
+    if (pqUndoStack* stack = pqApplicationCore::instance()->getUndoStack())
+    {
+      verb == "editundo" ? stack->undo() : stack->redo();
+    }
+  }
   else if (verb == "snapshot" && words.size() > 1)
   {
     this->snapshot(words[1]);
@@ -113,6 +123,7 @@ void pqHapticsTestScript::mouse(const QStringList& words)
     words[0] == "press" ? vtkCommand::LeftButtonPressEvent : vtkCommand::MouseMoveEvent);
   // The point the mouse hand took (the same pick, in the same render, as pqHapticsMouse).
   double p[3], normal[3];
+  const pqScopedUndoExclude pick; // the test's pick is no step of the undo stack
   QFile file(this->Output + ".picks");
   if (proxy->ConvertDisplayToPointOnSurface(display, p, normal) &&
       file.open(QIODevice::Append | QIODevice::Text))

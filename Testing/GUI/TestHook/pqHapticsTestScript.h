@@ -8,6 +8,7 @@
 //   swatch I           clicks the dock's malleability swatch I (0 ... 10)
 //   radius R           types R into the dock's brush radius
 //   undo | redo        clicks the dock's Undo / Redo
+//   editundo | editredo  Edit > Undo / Redo (ParaView's undo stack, Ctrl+Z / Ctrl+Y)
 //   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
 //                      brush, the paint lists' sizes, the dock's texts) and <out>-NAME.png
