@@ -72,6 +72,8 @@ HandActions HandController::finish()
   {
     actions.release = tool_ == Tool::deform;
     actions.end_hold = tool_ == Tool::hold_and_turn;
+    actions.end_stroke = tool_ == Tool::paint;
+    stroke_.end();
   }
   held_ = false;
   return actions;
@@ -113,13 +115,20 @@ HandActions HandController::update(const StylusState& stylus, const Brush& brush
       break;
     case Tool::paint:
     {
-      const double spacing = 0.25 * brush.radius;
-      if (pressed || (stylus.position - last_dab_).norm() >= spacing)
+      actions.begin_stroke = pressed;
+      std::vector<Eigen::Vector3d> centres;
+      if (pressed)
       {
-        const Eigen::Vector3d& p = stylus.position;
+        stroke_.begin(stylus.position, centres);
+      }
+      else
+      {
+        stroke_.move_to(stylus.position, brush.radius, centres);
+      }
+      for (const Eigen::Vector3d& p : centres)
+      {
         actions.dabs.push_back({ p.x(), p.y(), p.z(), brush.radius,
           std::clamp(brush.value, 0.0, 1.0), std::clamp(brush.strength, 0.0, 1.0) });
-        last_dab_ = p;
       }
       break;
     }

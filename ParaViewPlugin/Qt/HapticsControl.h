@@ -2,6 +2,8 @@
 // The haptic interactor's decisions, free of Qt, VTK and ParaView so that they are unit
 // tested (Testing/GUI/TestHapticsControl.cpp): where the device workspace sits in the
 // scene, and what one hand asks of the pipeline each frame.
+#include "geoshaping/brush_stroke.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -67,9 +69,9 @@ struct StylusState
 
 struct Brush
 {
-  double radius = 5.0;   // scene units
+  double radius = 5.0;   // scene units (the interactor sets it: BrushControl.h)
   double value = 1.0;    // malleability painted, [0, 1]
-  double strength = 0.5; // per dab, [0, 1]
+  double strength = 1.0; // per dab, [0, 1]: 1 paints `value` itself under the dab's centre
 };
 
 // A rigid motion x -> rotation * (x - pivot) + pivot + translation.
@@ -90,6 +92,8 @@ struct HandActions
   Eigen::Vector3d displacement = Eigen::Vector3d::Zero();
   bool release = false;                    // Deform released (the shape stays as it is)
   std::vector<std::array<double, 6>> dabs; // Paint: x y z radius value strength
+  bool begin_stroke = false;               // Paint press: a stroke (one undo step) begins
+  bool end_stroke = false;                 // Paint released: the stroke is over
   bool begin_hold = false;                 // Hold-and-turn press: remember the object's pose
   bool set_motion = false;                 // Hold-and-turn held: motion since the press
   RigidMotion motion;
@@ -97,8 +101,9 @@ struct HandActions
 };
 
 // The per-hand state machine. Deform: the press grasps, holding drags by the stylus
-// motion since the press, releasing stops. Paint: a dab at the press and then one each
-// time the stylus has moved a quarter of the brush radius. Hold-and-turn: the object
+// motion since the press, releasing stops. Paint: a stroke from the press to the
+// release, its dabs a quarter of the brush radius apart along the stylus's path, also
+// between two frames (geoshaping/brush_stroke.h). Hold-and-turn: the object
 // follows the stylus's translation and rotation since the press (6 DoF, about the
 // stylus tip). Changing the tool ends what the old tool was doing.
 class HandController
@@ -120,7 +125,7 @@ private:
   bool held_ = false;
   Eigen::Vector3d press_position_ = Eigen::Vector3d::Zero();
   Eigen::Quaterniond press_orientation_ = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d last_dab_ = Eigen::Vector3d::Zero();
+  BrushStroke stroke_;
 };
 
 // The 3D palette near the stylus: 11 swatches of malleability 0, 0.1 ... 1 that appear

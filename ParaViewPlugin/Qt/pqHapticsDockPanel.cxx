@@ -1,5 +1,6 @@
 #include "pqHapticsDockPanel.h"
 
+#include "pqHapticsBrushPanel.h"
 #include "pqHapticsDockRows.h"
 
 #include "geoshaping/brush.h"
@@ -94,13 +95,8 @@ void pqHapticsDockPanel::build()
   help->setObjectName("Help");
   help->setWordWrap(true);
   layout->addWidget(help);
+  layout->addWidget(new pqHapticsBrushPanel(this->Interactor, body));
   auto* brush = new QFormLayout();
-  this->Radius = new QDoubleSpinBox(body);
-  this->Radius->setRange(0.001, 1e6);
-  this->Radius->setDecimals(3);
-  this->Radius->setValue(this->Interactor->brush().radius);
-  this->Radius->setToolTip("Brush radius in scene units (the Dabs radius of MalleabilityPaint).");
-  brush->addRow("Brush radius", this->Radius);
   this->Record = new QLineEdit(body);
   this->Record->setObjectName("Record");
   this->Record->setPlaceholderText("none");
@@ -151,13 +147,6 @@ void pqHapticsDockPanel::build()
   pqHapticsTipLabels(body);
 
   QObject::connect(this->StartStop, &QPushButton::clicked, this, &pqHapticsDockPanel::onStartStop);
-  QObject::connect(this->Radius, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-    [this](double radius)
-    {
-      interactor::Brush b = this->Interactor->brush();
-      b.radius = radius;
-      this->Interactor->setBrush(b);
-    });
   this->setPaintValue(this->Interactor->brush().value);
 }
 

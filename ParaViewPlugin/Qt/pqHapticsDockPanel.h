@@ -57,7 +57,6 @@ private:
 
   pqHapticsInteractor* Interactor = nullptr;
   HandWidgets Hands[2];
-  QDoubleSpinBox* Radius = nullptr;
   QLineEdit* Record = nullptr;
   QLabel* PaintValue = nullptr;
   QList<QToolButton*> Swatches;

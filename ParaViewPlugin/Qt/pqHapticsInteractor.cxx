@@ -182,6 +182,9 @@ void pqHapticsInteractor::stop()
   {
     hand.reset();
   }
+  this->OpenStrokes = 0;
+  this->StrokeExclude.reset(); // a stroke cut short by Stop is no step
+  this->StrokeStep.reset();
   this->Proxies.render();
 }
 
@@ -274,12 +277,20 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
     this->ReleaseCommits += this->LastEdit.changed ? 1 : 0;
     Q_EMIT this->editsChanged();
   }
+  if (actions.begin_stroke)
+  {
+    this->beginStroke();
+  }
   if (!actions.dabs.empty())
   {
     // Dabs land on the surface the user sees: while a hand drags, or once edits are
     // committed, it is not the paint filter's input.
-    this->Proxies.appendDabs(
-      actions.dabs, this->anyHandDragging() || this->Proxies.numberOfEdits() > 0);
+    this->Outcome.add(this->Proxies.appendDabs(
+      actions.dabs, this->anyHandDragging() || this->Proxies.numberOfEdits() > 0));
+  }
+  if (actions.end_stroke)
+  {
+    this->endStroke();
   }
   if (actions.begin_hold)
   {
@@ -357,7 +368,10 @@ interactor::EditResult pqHapticsInteractor::runEdit(interactor::EditCommand comm
       hand->controller.cancel();
     }
   }
-  this->LastEdit = this->Proxies.runEdit(command);
+  if (!this->strokeEdit(command))
+  {
+    this->LastEdit = this->Proxies.runEdit(command);
+  }
   this->Proxies.render();
   Q_EMIT this->editsChanged();
   return this->LastEdit;
@@ -411,7 +425,7 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
 
 void pqHapticsInteractor::onFrame()
 {
-  this->Proxies.refresh();
+  this->refreshBrush();
   pqRenderView* view = this->Proxies.view();
   vtkSMRenderViewProxy* viewProxy = view ? view->getRenderViewProxy() : nullptr;
   const interactor::CameraFrame camera = this->Proxies.camera();
@@ -449,8 +463,12 @@ void pqHapticsInteractor::onFrame()
                                   : hand.controller.held() ? Eigen::Vector3d(0.2, 1.0, 0.3)
                                                            : Eigen::Vector3d(0.2, 0.6, 1.0);
     hand.sphere->SetCenter(world.position.data());
-    hand.sphere->SetRadius(painting ? this->Brush.radius : 0.004 * mapping.scale());
+    hand.sphere->SetRadius(
+      painting ? this->brushCursorRadius(world.position, camera) : 0.004 * mapping.scale());
     hand.cursor->GetProperty()->SetColor(color.x(), color.y(), color.z());
+    // A cage while painting: the paint under the brush shows through (a translucent
+    // sphere would turn on depth peeling, slower than the frame).
+    hand.cursor->GetProperty()->SetRepresentation(painting ? VTK_WIREFRAME : VTK_SURFACE);
     hand.cursor->SetVisibility(hand.kind != Mouse || world.button);
     hand.setRenderer(viewProxy ? viewProxy->GetRenderer() : nullptr);
     if (hand.device)

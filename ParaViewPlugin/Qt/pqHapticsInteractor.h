@@ -5,10 +5,12 @@
 // the proxies (pqHapticsProxies), moves the stylus cursors, renders, and publishes the
 // scene snapshot (grasp anchor, stiffness) back to the servo loop for the force.
 // After ParaView's CAVEInteraction plugin: device thread -> snapshot -> QTimer.
+#include "BrushControl.h"
 #include "HapticsControl.h"
 #include "PullControl.h"
 #include "geoshaping/haptics/force_model.h"
 #include "pqHapticsProxies.h"
+#include "undo_step.h"
 
 #include <QObject>
 #include <QString>
@@ -77,6 +79,16 @@ public:
   // How a mouse pull moves the grasp (PullControl.h); can change mid-pull.
   void setPullConstraint(geoshaping::interactor::PullConstraint c) { this->Pull = c; }
   geoshaping::interactor::PullConstraint pullConstraint() const { return this->Pull; }
+  // The brush fitted to the data (pqHapticsInteractorBrush.cxx): the radius is the paint's
+  // BrushRadius (kept in the state) or, while that is 0, 3 % of the data's diagonal.
+  // refreshBrush() reads both and the scene's unit; setBrushRadius() sets the property
+  // (0: back to the default).
+  void refreshBrush();
+  void setBrushRadius(double radius);
+  bool brushRadiusIsDefault() const { return this->BrushRadiusIsDefault; }
+  const std::string& sceneUnit() const { return this->SceneUnit; }
+  // What the last stroke did: its dabs, and why some were not stored (BrushControl.h).
+  const QString& brushNote() const { return this->BrushNote; }
   const Figures& figures() const { return this->Stats; }
   // True when every device hand replays a trace and all of them are over.
   bool replaysFinished() const;
@@ -101,6 +113,7 @@ public:
 Q_SIGNALS:
   void frameDone();
   void editsChanged();
+  void brushChanged(); // radius, unit or note
   // A device hand touched a swatch of the 3D palette (second button held): the brush
   // now paints `value`.
   void paletteValuePicked(double value);
@@ -118,6 +131,14 @@ private:
     const geoshaping::interactor::StylusState& world);
   void updateFigures();
   bool anyHandDragging() const;
+  void beginStroke();
+  void endStroke();
+  // Undo or redo of a stroke, when ParaView's next step that way is a stroke of the
+  // target's paint (pqHapticsInteractorBrush.cxx); false: not a stroke.
+  bool strokeEdit(geoshaping::interactor::EditCommand command);
+  // The paint cursor's radius at `at`: the brush's, at least a few pixels on screen.
+  double brushCursorRadius(
+    const Eigen::Vector3d& at, const geoshaping::interactor::CameraFrame& camera) const;
 
   std::array<std::unique_ptr<Hand>, 2> Hands;
   pqHapticsProxies Proxies;
@@ -134,4 +155,13 @@ private:
   std::uint64_t Sequence = 0;
   geoshaping::interactor::EditResult LastEdit;
   int ReleaseCommits = 0;
+  // A stroke is one step of ParaView's undo stack ("Paint Stroke": the paint proxy's
+  // state from the first press to the last release of the hands painting it).
+  std::unique_ptr<geoshaping::undo::Step> StrokeStep;
+  std::unique_ptr<geoshaping::undo::Exclude> StrokeExclude; // held while a stroke is open
+  int OpenStrokes = 0;                                      // hands painting a stroke
+  geoshaping::interactor::StrokeOutcome Outcome;            // of the open stroke
+  bool BrushRadiusIsDefault = true;
+  std::string SceneUnit;
+  QString BrushNote;
 };

@@ -1,5 +1,7 @@
 #include "pqHapticsMouse.h"
 
+#include "undo_step.h"
+
 #include <vtkCommand.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -75,6 +77,8 @@ bool pqHapticsMouse::pointOnSurface(
   const int display[2], Eigen::Vector3d& world, Eigen::Vector3d& normal) const
 {
   double p[3], n[3];
+  // The pick makes ParaView's selection proxies, whose changes are no undo step.
+  const geoshaping::undo::Exclude pick;
   if (!this->View || !this->View->ConvertDisplayToPointOnSurface(display, p, n))
   {
     return false;

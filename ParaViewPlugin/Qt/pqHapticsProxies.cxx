@@ -358,18 +358,24 @@ vtkStaticPointLocator* pqHapticsProxies::shownLocator()
     this->LocatorData = nullptr;
     return nullptr;
   }
-  const vtkMTimeType time = std::max(shown->GetMTime(), shown->GetPoints()->GetMTime());
-  if (!this->Locator || this->LocatorData != shown || this->LocatorTime != time)
+  return upToDate(shown, this->Locator, this->LocatorData, this->LocatorTime);
+}
+
+vtkStaticPointLocator* pqHapticsProxies::upToDate(vtkPointSet* data,
+  vtkSmartPointer<vtkStaticPointLocator>& locator, vtkPointSet*& of, vtkMTimeType& time)
+{
+  const vtkMTimeType now = std::max(data->GetMTime(), data->GetPoints()->GetMTime());
+  if (!locator || of != data || time != now)
   {
     // A static locator over ~10^4 points builds in well under a millisecond; the points
     // change every frame of a drag, so it is rebuilt only when a dab or grasp needs it.
-    this->Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
-    this->Locator->SetDataSet(shown);
-    this->Locator->BuildLocator();
-    this->LocatorData = shown;
-    this->LocatorTime = time;
+    locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+    locator->SetDataSet(data);
+    locator->BuildLocator();
+    of = data;
+    time = now;
   }
-  return this->Locator;
+  return locator;
 }
 
 void pqHapticsProxies::setDisplacement(const Eigen::Vector3d& d)
@@ -381,12 +387,14 @@ void pqHapticsProxies::setDisplacement(const Eigen::Vector3d& d)
   }
 }
 
-void pqHapticsProxies::appendDabs(const std::vector<std::array<double, 6>>& dabs, bool onShown)
+geoshaping::interactor::StrokeOutcome pqHapticsProxies::appendDabs(
+  const std::vector<std::array<double, 6>>& dabs, bool onShown)
 {
+  geoshaping::interactor::StrokeOutcome outcome;
   vtkSMProxy* proxy = this->Paint ? this->Paint->getProxy() : nullptr;
   if (!proxy || dabs.empty())
   {
-    return;
+    return outcome;
   }
   vtkStaticPointLocator* locator =
     onShown && proxy->GetProperty("PointDabs") ? this->shownLocator() : nullptr;
@@ -404,6 +412,16 @@ void pqHapticsProxies::appendDabs(const std::vector<std::array<double, 6>>& dabs
     {
       const double centre[3] = { dab[0], dab[1], dab[2] };
       locator->FindPointsWithinRadius(dab[3], centre, found);
+      if (found->GetNumberOfIds() == 0)
+      {
+        double nearest[3];
+        const vtkIdType id = locator->FindClosestPoint(centre);
+        shown->GetPoint(id >= 0 ? id : 0, nearest);
+        outcome.add_unreached(
+          id >= 0 ? std::sqrt(vtkMath::Distance2BetweenPoints(nearest, centre)) : -1.0);
+        continue;
+      }
+      ++outcome.stored;
       ids.clear();
       distances.clear();
       for (vtkIdType k = 0; k < found->GetNumberOfIds(); ++k)
@@ -424,12 +442,20 @@ void pqHapticsProxies::appendDabs(const std::vector<std::array<double, 6>>& dabs
   {
     for (const auto& dab : dabs)
     {
+      double nearest = -1.0;
+      if (!this->reachesInput(dab.data(), dab[3], nearest))
+      {
+        outcome.add_unreached(nearest);
+        continue;
+      }
+      ++outcome.stored;
       this->Dabs.insert(this->Dabs.end(), dab.begin(), dab.end());
     }
     vtkSMPropertyHelper(proxy, "Dabs")
       .Set(this->Dabs.data(), static_cast<unsigned int>(this->Dabs.size()));
   }
-  this->PaintModified = true;
+  this->PaintModified = this->PaintModified || outcome.stored > 0;
+  return outcome;
 }
 
 geoshaping::interactor::EditResult pqHapticsProxies::runEdit(

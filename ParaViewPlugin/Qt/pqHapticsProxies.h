@@ -2,6 +2,7 @@
 // The proxies the haptic interactor drives, and the few things it reads back. All
 // pipeline access of the interactor goes through here (vtkSMPropertyHelper ->
 // UpdateVTKObjects, as ParaView's CAVEInteraction plugin does).
+#include "BrushControl.h"
 #include "EditControl.h"
 #include "HapticsControl.h"
 #include "edit_commands.h"
@@ -55,8 +56,25 @@ public:
   // Dabs `x y z radius value strength`. When the shown surface differs from the paint's
   // input (`onShown`: a drag is held or edits are committed) and the session is builtin,
   // each dab becomes PointDabs on the vertices within its radius on the deformation's
-  // output (the surface the user sees); otherwise positional Dabs.
-  void appendDabs(const std::vector<std::array<double, 6>>& dabs, bool onShown);
+  // output (the surface the user sees); otherwise positional Dabs. A dab that reaches no
+  // vertex is not stored; the outcome counts both (pqHapticsProxiesBrush.cxx).
+  geoshaping::interactor::StrokeOutcome appendDabs(
+    const std::vector<std::array<double, 6>>& dabs, bool onShown);
+
+  // The brush fitted to the data (pqHapticsProxiesBrush.cxx, BrushControl.h).
+  // MalleabilityPaint's BrushRadius, kept in the state (0: not set); setting it is left
+  // out of ParaView's undo stack.
+  double brushRadiusProperty() const;
+  void setBrushRadiusProperty(double radius);
+  // The radius a brush has when none is set: 3 % of the paint input's diagonal (0
+  // without a paint or data).
+  double defaultBrushRadius() const;
+  // The scene's length unit from the paint input's field data ("" when unknown).
+  std::string sceneUnit() const;
+  // A stroke begins: the dabs it appends go after the lists the proxy holds now (an undo
+  // through ParaView's stack may have changed them since the last stroke).
+  void beginStroke();
+  pqPipelineSource* paint() const { return this->Paint; }
   // Commit / undo / redo / reset, keeping the client's EditHistory in step
   // (docs/editing.md); pushes the proxy. Render afterwards.
   geoshaping::interactor::EditResult runEdit(geoshaping::interactor::EditCommand command);
@@ -105,6 +123,15 @@ private:
   vtkStaticPointLocator* shownLocator();
   std::vector<double> Dabs;
   std::vector<double> PointDabs;
+  // Whether a dab at `centre` reaches a vertex of the paint's input within `radius`;
+  // `nearest` is then the distance to its nearest vertex (-1 when unknown).
+  bool reachesInput(const double centre[3], double radius, double& nearest);
+  // `locator` over `data`, rebuilt when `data` or its points changed since (`of`, `time`).
+  static vtkStaticPointLocator* upToDate(vtkPointSet* data,
+    vtkSmartPointer<vtkStaticPointLocator>& locator, vtkPointSet*& of, vtkMTimeType& time);
+  vtkSmartPointer<vtkStaticPointLocator> InputLocator;
+  vtkMTimeType InputLocatorTime = 0;
+  vtkPointSet* InputLocatorData = nullptr;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   vtkMTimeType LocatorTime = 0;
   vtkPointSet* LocatorData = nullptr;

@@ -139,6 +139,34 @@ TEST(HandController, PaintDabsAtThePressAndEveryQuarterRadius)
   EXPECT_TRUE(hand.update(at(Vector3d(5, 0, 0), false), brush).dabs.empty());
 }
 
+TEST(HandController, AStrokeIsOneStepAndAFastMoveIsFilled)
+{
+  HandController hand;
+  hand.set_tool(Tool::paint);
+  Brush brush;
+  brush.radius = 2.0;
+  brush.value = 0.0;
+  EXPECT_EQ(brush.strength, 1.0); // full strength by default: a swatch paints its value
+  HandActions press = hand.update(at(Vector3d(0, 0, 0), true), brush);
+  EXPECT_TRUE(press.begin_stroke);
+  EXPECT_FALSE(press.end_stroke);
+  // The next frame is 10 radii away: 40 dabs fill the way, half a unit apart.
+  HandActions fast = hand.update(at(Vector3d(0, 20, 0), true), brush);
+  EXPECT_FALSE(fast.begin_stroke);
+  ASSERT_EQ(fast.dabs.size(), 40u);
+  for (std::size_t i = 0; i < fast.dabs.size(); ++i)
+  {
+    EXPECT_EQ(fast.dabs[i], (std::array<double, 6>{ 0, 0.5 * (i + 1), 0, 2.0, 0.0, 1.0 })) << i;
+  }
+  HandActions release = hand.update(at(Vector3d(0, 20, 0), false), brush);
+  EXPECT_TRUE(release.end_stroke);
+  EXPECT_FALSE(release.release);
+  EXPECT_TRUE(release.dabs.empty());
+  // A tool change ends a stroke as a release does.
+  EXPECT_TRUE(hand.update(at(Vector3d(0, 0, 0), true), brush).begin_stroke);
+  EXPECT_TRUE(hand.set_tool(Tool::deform).end_stroke);
+}
+
 TEST(HandController, HoldAndTurnFollowsTheStylusInSixDegreesOfFreedom)
 {
   HandController hand;

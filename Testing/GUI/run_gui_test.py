@@ -303,6 +303,9 @@ def main():
         if os.path.exists(out + suffix):
             os.remove(out + suffix)
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
+    if mode.startswith("brush_"):
+        import brush_checks
+        brush_checks.prepare(mode, out, env)
     if mode == "touch":
         env["GEOSHAPING_HAPTICS_REPLAY"] = out + ".trace"
         normal = write_touch_trace(out + ".trace")
@@ -310,7 +313,7 @@ def main():
         env["GEOSHAPING_HAPTICS_REPLAY"] = out + ".trace"
         env["GEOSHAPING_HAPTICS_TOOL1"] = "hold_and_turn"
         write_turn_trace(out + ".trace")
-    setup = os.environ["GEOSHAPING_GUI_SETUP"]
+    setup = env["GEOSHAPING_GUI_SETUP"]
     if mode == "pull":
         setup = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_setup_pull.py")
     if mode == "bimanual":
@@ -333,6 +336,10 @@ def main():
     assert results["started"] == "1" and results["timed_out"] == "0", results
     assert results["dock_visible"] == "1" and results["dock_title"] == "Haptics", results
     assert int(results["frames"]) >= 5, "too few interactor frames"
+    if mode.startswith("brush_"):
+        brush_checks.check(mode, out)
+        print("GUI brush test passed; screenshots:", out + "-*.png")
+        return
     if mode == "openhaptics":
         check_openhaptics_fault(results)
         check_recording(results, out, None)

@@ -94,3 +94,19 @@ check(column_labels(fresh, "StretchCurve") == ["Malleability", "Stretch"] and
 check(column_labels(paint, "Dabs") == ["x", "y", "z", "Radius", "Value", "Strength"] and
       column_labels(paint, "PointDabs") == ["Point Id", "Value", "Weight"],
       "the dab tables have column labels")
+
+# The Haptics dock's brush radius lives on the paint proxy, so a state file keeps it
+# (0, the default: 3 % of the data's diagonal, docs/interactor.md).
+import os  # noqa: E402
+
+check(paint.BrushRadius == 0.0, "BrushRadius is 0 (fitted to the data) by default")
+check(paint.SMProxy.GetProperty("BrushRadius").GetPanelVisibility() == "never",
+      "BrushRadius is the dock's, not on the properties panel")
+paint.BrushRadius = 40000.0
+state = os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "brush-radius.pvsm")
+SaveState(state)  # noqa: F405
+ResetSession()  # noqa: F405
+load(ns=globals())
+LoadState(state)  # noqa: F405
+loaded = [s for s in GetSources().values() if s.GetXMLName() == "MalleabilityPaint"]  # noqa: F405
+check(len(loaded) == 1 and loaded[0].BrushRadius == 40000.0, "LoadState gives BrushRadius back")

@@ -2,6 +2,7 @@
 
 #include "pqHapticsDockPanel.h"
 #include "pqHapticsProxies.h"
+#include "pqHapticsTestScript.h"
 #include "pqHapticsUndoChecks.h"
 #include "pqPullTestDriver.h"
 
@@ -54,6 +55,11 @@ pqHapticsTestHook::pqHapticsTestHook(
   , Trace2(qEnvironmentVariable("GEOSHAPING_HAPTICS_REPLAY2"))
   , Output(output)
 {
+  const QString script = qEnvironmentVariable("GEOSHAPING_HAPTICS_MOUSE_SCRIPT");
+  if (trace == "mouse" && !script.isEmpty())
+  {
+    this->Script = std::make_shared<pqHapticsTestScript>(dock, script, output);
+  }
   auto* timer = new QTimer(this);
   QObject::connect(timer, &QTimer::timeout, this, &pqHapticsTestHook::poll);
   timer->start(100);
@@ -112,6 +118,14 @@ void pqHapticsTestHook::poll()
     }
     this->Started = this->Dock->start();
     if (!this->Started && !this->Output.isEmpty())
+    {
+      this->writeResults();
+    }
+    return;
+  }
+  if (this->Script)
+  {
+    if (this->Script->step() && !this->Output.isEmpty())
     {
       this->writeResults();
     }

@@ -12,6 +12,8 @@
 //                                           "state": hand 1 is the mouse, not dragged,
 //                                           after GEOSHAPING_GUI_STATE=<file.pvsm> is
 //                                           loaded as File > Load State does;
+//   GEOSHAPING_HAPTICS_MOUSE_SCRIPT=<steps>  with "mouse": the hook plays these steps
+//                                           instead of its drag (pqHapticsTestScript.h);
 //   GEOSHAPING_HAPTICS_TOOL1=hold_and_turn  hand 1 holds and turns the object instead;
 //   GEOSHAPING_HAPTICS_REPLAY2=<trace>      hand 2 replays this trace with the Paint tool
 //                                           (two hands at once);
@@ -25,6 +27,7 @@
 
 class pqHapticsDockPanel;
 class pqPullTestDriver;
+class pqHapticsTestScript;
 class QTextStream;
 class vtkPointSet;
 
@@ -47,6 +50,7 @@ private:
   void checkEdits(QTextStream& out, vtkPointSet* input, vtkPointSet* output);
 
   pqHapticsDockPanel* Dock;
+  std::shared_ptr<pqHapticsTestScript> Script;
   QString Trace;
   QString Trace2;
   QString Output;

@@ -1,0 +1,222 @@
+#include "pqHapticsTestScript.h"
+
+#include "pqHapticsDockPanel.h"
+#include "pqHapticsProxies.h"
+
+#include <pqActiveObjects.h>
+#include <pqApplicationCore.h>
+#include <pqPipelineSource.h>
+#include <pqRenderView.h>
+#include <pqUndoStack.h>
+#include <pqView.h>
+
+#include <vtkAlgorithm.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkPointSet.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkSMPropertyHelper.h>
+#include <vtkSMProxy.h>
+#include <vtkSMRenderViewProxy.h>
+
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
+#include <QPixmap>
+#include <QPushButton>
+#include <QTextStream>
+#include <QToolButton>
+#include <QWidget>
+
+pqHapticsTestScript::pqHapticsTestScript(
+  pqHapticsDockPanel* dock, const QString& script, const QString& output)
+  : Dock(dock)
+  , Output(output)
+{
+  for (const QString& step : script.split(';', Qt::SkipEmptyParts))
+  {
+    if (!step.trimmed().isEmpty())
+    {
+      this->Steps << step.trimmed();
+    }
+  }
+}
+
+bool pqHapticsTestScript::step()
+{
+  // One interactor frame after each step that it must see (a mouse event, Undo): the
+  // frame timer runs at its own pace, slower on a loaded machine than these polls.
+  const int frames = this->Dock->interactor()->figures().frames;
+  if (frames < this->AfterFrame)
+  {
+    return false;
+  }
+  if (this->Next >= this->Steps.size())
+  {
+    return true;
+  }
+  this->AfterFrame = frames + 1;
+  const QStringList words = this->Steps[this->Next++].split(' ', Qt::SkipEmptyParts);
+  const QString& verb = words[0];
+  if (verb == "press" || verb == "move" || verb == "release")
+  {
+    this->mouse(words);
+  }
+  else if (verb == "swatch" && words.size() > 1)
+  {
+    if (auto* swatch = this->Dock->findChild<QToolButton*>("Swatch" + words[1]))
+    {
+      swatch->click();
+    }
+  }
+  else if (verb == "radius" && words.size() > 1)
+  {
+    if (auto* radius = this->Dock->findChild<QDoubleSpinBox*>("BrushRadius"))
+    {
+      radius->setValue(words[1].toDouble());
+    }
+  }
+  else if (verb == "undo" || verb == "redo")
+  {
+    if (auto* button =
+          this->Dock->findChild<QPushButton*>(verb == "undo" ? "UndoEdit" : "RedoEdit"))
+    {
+      button->click();
+    }
+  }
+  else if (verb == "editundo" || verb == "editredo")
+  {
+    // What Edit > Undo / Redo (Ctrl+Z / Ctrl+Y) do.
+    if (pqUndoStack* stack = pqApplicationCore::instance()->getUndoStack())
+    {
+      verb == "editundo" ? stack->undo() : stack->redo();
+    }
+  }
+  else if (verb == "snapshot" && words.size() > 1)
+  {
+    this->snapshot(words[1]);
+  }
+  return false;
+}
+
+void pqHapticsTestScript::mouse(const QStringList& words)
+{
+  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
+  vtkSMRenderViewProxy* proxy = view ? view->getRenderViewProxy() : nullptr;
+  vtkRenderWindowInteractor* interactor = proxy ? proxy->GetInteractor() : nullptr;
+  if (!interactor)
+  {
+    return;
+  }
+  if (words[0] == "release")
+  {
+    interactor->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
+    return;
+  }
+  const int* size = interactor->GetSize();
+  int display[2] = { static_cast<int>(words.value(1).toDouble() * size[0]),
+    static_cast<int>(words.value(2).toDouble() * size[1]) };
+  const bool ctrl = words.value(3) == "ctrl";
+  interactor->SetEventInformation(display[0], display[1], ctrl ? 1 : 0, 0);
+  interactor->InvokeEvent(
+    words[0] == "press" ? vtkCommand::LeftButtonPressEvent : vtkCommand::MouseMoveEvent);
+  // The point the mouse hand took (the same pick, in the same render, as pqHapticsMouse).
+  double p[3], normal[3];
+  const pqScopedUndoExclude pick; // the test's pick is no step of the undo stack
+  QFile file(this->Output + ".picks");
+  if (proxy->ConvertDisplayToPointOnSurface(display, p, normal) &&
+      file.open(QIODevice::Append | QIODevice::Text))
+  {
+    QTextStream(&file) << words[0] << " " << QString::number(p[0], 'g', 17) << " "
+                       << QString::number(p[1], 'g', 17) << " " << QString::number(p[2], 'g', 17)
+                       << "\n";
+  }
+}
+
+namespace
+{
+vtkPointSet* output(pqPipelineSource* source, bool input)
+{
+  auto* algorithm =
+    source ? vtkAlgorithm::SafeDownCast(source->getProxy()->GetClientSideObject()) : nullptr;
+  if (!algorithm)
+  {
+    return nullptr;
+  }
+  return vtkPointSet::SafeDownCast(
+    input ? algorithm->GetInputDataObject(0, 0) : algorithm->GetOutputDataObject(0));
+}
+
+QString text(QWidget* dock, const char* name)
+{
+  if (auto* label = dock->findChild<QLabel*>(name))
+  {
+    return label->text().replace('\n', " / ");
+  }
+  if (auto* spin = dock->findChild<QDoubleSpinBox*>(name))
+  {
+    return spin->text();
+  }
+  return "(missing)";
+}
+}
+
+void pqHapticsTestScript::snapshot(const QString& name)
+{
+  const QString prefix = this->Output + "-" + name;
+  pqPipelineSource* paint = pqHapticsFindSource("MalleabilityPaint");
+  pqPipelineSource* deformation = pqHapticsFindSource("ChainMailDeformation");
+  vtkPointSet* rest = output(paint, true);
+  vtkPointSet* painted = output(paint, false);
+  vtkPointSet* shown = output(deformation, false);
+  vtkDataArray* m = painted ? painted->GetPointData()->GetArray("Malleability") : nullptr;
+  QFile csv(prefix + ".csv");
+  if (rest && shown && m && rest->GetNumberOfPoints() == shown->GetNumberOfPoints() &&
+      csv.open(QIODevice::WriteOnly | QIODevice::Text))
+  {
+    QTextStream out(&csv);
+    out << "x y z sx sy sz m\n";
+    for (vtkIdType i = 0; i < rest->GetNumberOfPoints(); ++i)
+    {
+      double p[3], s[3];
+      rest->GetPoint(i, p);
+      shown->GetPoint(i, s);
+      for (double v : { p[0], p[1], p[2], s[0], s[1], s[2] })
+      {
+        out << QString::number(v, 'g', 17) << " ";
+      }
+      out << QString::number(m->GetTuple1(i), 'g', 9) << "\n";
+    }
+  }
+  QFile file(prefix + ".txt");
+  if (file.open(QIODevice::WriteOnly | QIODevice::Text))
+  {
+    QTextStream out(&file);
+    const pqHapticsInteractor* interactor = this->Dock->interactor();
+    out << "brush_radius = " << QString::number(interactor->brush().radius, 'g', 17) << "\n";
+    out << "brush_value = " << interactor->brush().value << "\n";
+    out << "brush_strength = " << interactor->brush().strength << "\n";
+    if (vtkSMProxy* proxy = paint ? paint->getProxy() : nullptr)
+    {
+      out << "BrushRadius = " << vtkSMPropertyHelper(proxy, "BrushRadius").GetAsDouble() << "\n";
+      out << "Falloff = " << vtkSMPropertyHelper(proxy, "Falloff").GetAsInt() << "\n";
+      out << "dab_values = " << vtkSMPropertyHelper(proxy, "Dabs").GetNumberOfElements() << "\n";
+      out << "point_dab_values = " << vtkSMPropertyHelper(proxy, "PointDabs").GetNumberOfElements()
+          << "\n";
+    }
+    if (vtkSMProxy* proxy = deformation ? deformation->getProxy() : nullptr)
+    {
+      out << "edit_history = " << vtkSMPropertyHelper(proxy, "EditHistory").GetNumberOfElements()
+          << "\n";
+    }
+    for (const char* label : { "BrushRadius", "BrushRadiusAbout", "BrushNote", "Edits" })
+    {
+      out << "label_" << label << " = " << text(this->Dock, label) << "\n";
+    }
+  }
+  if (pqView* view = pqActiveObjects::instance().activeView())
+  {
+    view->widget()->grab().save(prefix + ".png");
+  }
+}

@@ -1,0 +1,41 @@
+#pragma once
+// A mouse script for the GUI tests of painting (GEOSHAPING_HAPTICS_MOUSE_SCRIPT, with
+// GEOSHAPING_HAPTICS_REPLAY=mouse): steps separated by ';', one per poll of the hook,
+// positions as fractions of the render view (x right, y up):
+//   press X Y [ctrl]   left button down (with Ctrl: paint), the pick written to <out>.picks
+//   move X Y           the mouse moves there (button held), the pick written too
+//   release            left button up
+//   swatch I           clicks the dock's malleability swatch I (0 ... 10)
+//   radius R           types R into the dock's brush radius
+//   undo | redo        clicks the dock's Undo / Redo
+//   editundo | editredo  Edit > Undo / Redo (ParaView's undo stack, Ctrl+Z / Ctrl+Y)
+//   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
+//                      surface's x y z, the painted malleability), <out>-NAME.txt (the
+//                      brush, the paint lists' sizes, the dock's texts) and <out>-NAME.png
+//                      (the render view)
+//   wait               nothing this poll
+// Each step waits for one interactor frame after the previous one, so that the frames
+// see every event whatever the machine's speed. When the steps are over, step() returns
+// true and the hook writes its results.
+#include <QString>
+#include <QStringList>
+
+class pqHapticsDockPanel;
+
+class pqHapticsTestScript
+{
+public:
+  pqHapticsTestScript(pqHapticsDockPanel* dock, const QString& script, const QString& output);
+  bool step();
+
+private:
+  void snapshot(const QString& name);
+  void mouse(const QStringList& words);
+
+  pqHapticsDockPanel* Dock;
+  QStringList Steps;
+  QString Output;
+  int Next = 0;
+  int AfterFrame = 1; // the interactor's frame count the next step waits for (the first
+                      // frame attaches the mouse)
+};

@@ -1,0 +1,30 @@
+"""paraview --script for the GUI tests of the brush: the surface GEOSHAPING_GUI_SURFACE
+(a GOCAD TSurf written by brush_checks.py) opened with the plugin's reader, through
+MalleabilityPaint (Falloff GEOSHAPING_GUI_FALLOFF, else the default) into
+ChainMailDeformation, coloured with the black-body map, seen from above."""
+import os
+
+from paraview.simple import *
+
+import geoshaping_presets  # ParaViewPlugin/Python, on PYTHONPATH
+
+surface = OpenDataFile(os.environ["GEOSHAPING_GUI_SURFACE"])
+paint = MalleabilityPaint(Input=surface)
+if os.environ.get("GEOSHAPING_GUI_FALLOFF"):
+    paint.Falloff = os.environ["GEOSHAPING_GUI_FALLOFF"]
+deformation = ChainMailDeformation(Input=paint)
+deformation.MalleabilityArray = ["POINTS", "Malleability"]
+view = GetActiveViewOrCreate("RenderView")
+display = Show(deformation, view)
+geoshaping_presets.show_malleability(display)
+view.OrientationAxesVisibility = 0
+Render(view)  # paraview.simple resets the camera on the first render: set it after
+bounds = surface.GetDataInformation().GetBounds()
+centre = [0.5 * (bounds[2 * i] + bounds[2 * i + 1]) for i in range(3)]
+view.CameraFocalPoint = centre
+view.CameraPosition = [centre[0], centre[1], centre[2] + 1.0]
+view.CameraViewUp = [0.0, 1.0, 0.0]
+view.CameraParallelProjection = 0
+view.ResetCamera()
+SetActiveSource(deformation)
+Render(view)
