@@ -144,6 +144,8 @@ void ChainMailDeformer::set_mesh(
     nodes_[i].rank = 0;
   }
   slot_.assign(un, 0);
+  mark_.assign(un, 0);
+  mark_base_ = 1;
   pinned_.clear();
   pinned_inner_.clear();
   gid_.clear();
@@ -157,7 +159,39 @@ void ChainMailDeformer::set_mesh(
   obstacles_.reset();
   sliding_.clear();
   rigid_of_.clear();
+  build_sponsor_rows();
   set_uniform_malleability(0.5);
+}
+
+void ChainMailDeformer::build_sponsor_rows()
+{
+  const std::size_t n = nodes_.size();
+  sponsor_offsets_.assign(n + 1, 0);
+  for (index_t c : neighbors_)
+    ++sponsor_offsets_[std::size_t(c) + 1];
+  for (std::size_t i = 0; i < n; ++i)
+    sponsor_offsets_[i + 1] += sponsor_offsets_[i];
+  sponsor_ids_.resize(neighbors_.size());
+  std::vector<std::uint32_t> fill(sponsor_offsets_.begin(), sponsor_offsets_.end() - 1);
+  for (std::size_t s = 0; s < n; ++s)
+    for (std::uint32_t e = offsets_[s]; e < offsets_[s + 1]; ++e)
+      sponsor_ids_[fill[std::size_t(neighbors_[e])]++] = index_t(s);
+  auto before = [&](index_t a, index_t b)
+  {
+    const std::int64_t ga =
+      gid_.empty() ? std::int64_t(outer_of_[std::size_t(a)]) : gid_[std::size_t(a)];
+    const std::int64_t gb =
+      gid_.empty() ? std::int64_t(outer_of_[std::size_t(b)]) : gid_[std::size_t(b)];
+    return ga != gb ? ga < gb : a < b;
+  };
+  for (std::size_t c = 0; c < n; ++c)
+    std::sort(sponsor_ids_.begin() + sponsor_offsets_[c],
+      sponsor_ids_.begin() + sponsor_offsets_[c + 1], before);
+  if (sponsor_offsets_ == offsets_ && sponsor_ids_ == neighbors_)
+  {
+    std::vector<std::uint32_t>().swap(sponsor_offsets_);
+    std::vector<index_t>().swap(sponsor_ids_);
+  }
 }
 
 template<class T>
@@ -258,6 +292,7 @@ void ChainMailDeformer::set_global_ids(const std::int64_t* gid)
   gid_.clear();
   if (gid)
     to_inner(gid_, gid, outer_of_, [](std::int64_t g) { return g; });
+  build_sponsor_rows();
 }
 
 void ChainMailDeformer::set_owned(const std::uint8_t* mask)
@@ -391,12 +426,15 @@ void ChainMailDeformer::skip_to_superstep(std::uint32_t n)
 
 std::size_t ChainMailDeformer::superstep(const SuperstepKey& key)
 {
-  std::size_t begin, end;
-  if (!supersteps_.pop(key, begin, end))
+  Superstep group;
+  if (!supersteps_.pop(key, group))
     return 0;
   const SuperstepRoot root = SuperstepQueue::root_of(key);
-  return frame_kind_ == ValidRegionFrame::link ? examine<ValidRegionFrame::link>(begin, end, root)
-                                               : examine<ValidRegionFrame::axes>(begin, end, root);
+  if (frame_kind_ == ValidRegionFrame::link)
+    examine<ValidRegionFrame::link>(group, root);
+  else
+    examine<ValidRegionFrame::axes>(group, root);
+  return group.entries;
 }
 
 void ChainMailDeformer::end_superstep()
@@ -404,12 +442,20 @@ void ChainMailDeformer::end_superstep()
   const bool banded = queue_kind_ == QueueKind::fifo_priority;
   auto gid = [&](index_t i)
   { return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)]; };
-  for (std::size_t slot = superstep_begin_; slot < moved_rec_.size(); ++slot)
+  if (mark_base_ > std::numeric_limits<std::uint32_t>::max() - std::uint32_t(nodes_.size()))
+  {
+    std::fill(mark_.begin(), mark_.end(), 0u);
+    mark_base_ = 1;
+  }
+  const std::size_t first = superstep_begin_, last = moved_rec_.size();
+  bool sponsored = false; // the first sponsor's band and root are the superstep's
+  std::uint32_t band = 0;
+  SuperstepRoot root;
+  for (std::size_t slot = first; slot < last; ++slot)
   {
     const index_t s = moved_rec_[slot].vertex;
-    const index_t s_rank = banded ? nodes_[std::size_t(s)].rank : 0;
-    const std::uint32_t s_band = banded ? rank_band_[std::size_t(s_rank)] : 0u;
-    const std::int64_t s_gid = gid(s);
+    const std::uint32_t s_band = banded ? rank_band_[std::size_t(nodes_[std::size_t(s)].rank)] : 0u;
+    bool checked = false;
     for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
     {
       const index_t c = neighbors_[e];
@@ -417,19 +463,41 @@ void ChainMailDeformer::end_superstep()
       if (node.stamp == frame_ || (!pinned_inner_.empty() && pinned_inner_[std::size_t(c)]) ||
           (!ghost_.empty() && ghost_[std::size_t(c)]))
         continue;
+      if (!checked)
+      {
+        checked = true;
+        if (!sponsored)
+        {
+          sponsored = true;
+          band = s_band;
+          root = moved_root_[slot];
+        }
+        else if (s_band != band || !(moved_root_[slot] == root))
+          throw std::logic_error(
+            "ChainMailDeformer: the sponsors of a superstep must share a band and a root");
+      }
+      const std::uint32_t m = mark_[std::size_t(c)] - mark_base_;
+      if (m < supersteps_.pending_size())
+      {
+        ++supersteps_.pending(m).entries;
+        continue;
+      }
+      mark_[std::size_t(c)] = mark_base_ + std::uint32_t(supersteps_.pending_size());
       const index_t c_rank = banded ? node.rank : 0;
       const std::uint32_t c_band = banded ? rank_band_[std::size_t(c_rank)] : 0u;
       const std::int64_t c_gid = gid(c);
       // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base.
-      const SuperstepRoot root = c_band < s_band    ? SuperstepRoot{ superstep_ + 1, c_gid }
-                                 : c_band == s_band ? moved_root_[slot]
+      const SuperstepRoot c_root = c_band < band    ? SuperstepRoot{ superstep_ + 1, c_gid }
+                                   : c_band == band ? root
                                                     : SuperstepRoot{};
-      supersteps_.push(c_gid, s_gid, root, c_band, std::uint32_t(c_rank), c, index_t(slot));
-      prefetch(neighbors_.data() + offsets_[std::size_t(c)]); // read by move() if c moves
+      supersteps_.push({ c_gid, c_root, c_band, std::uint32_t(c_rank), c, 1 });
+      prefetch(sponsor_ids_.empty() ? neighbors_.data() + offsets_[std::size_t(c)]
+                                    : sponsor_ids_.data() + sponsor_offsets_[std::size_t(c)]);
     }
   }
-  supersteps_.seal(superstep_ + 1);
-  superstep_begin_ = moved_rec_.size();
+  mark_base_ += std::uint32_t(supersteps_.pending_size());
+  supersteps_.seal(superstep_ + 1, { std::uint32_t(first), std::uint32_t(last) });
+  superstep_begin_ = last;
   ++superstep_;
 }
 
@@ -446,23 +514,37 @@ Eigen::Vector3d ChainMailDeformer::required_displacement(
 }
 
 template<ValidRegionFrame Frame>
-std::size_t ChainMailDeformer::examine(
-  std::size_t begin, std::size_t end, const SuperstepRoot& root)
+void ChainMailDeformer::examine(const Superstep& group, const SuperstepRoot& root)
 {
-  const Candidate* const entries = supersteps_.entries();
-  for (std::size_t k = begin; k < end; ++k)
+  // A candidate's entries are its sponsors moved in the sponsoring superstep (slots
+  // [tag[0], tag[1])), in sponsor id order: the first that moves it wins.
+  const index_t* const candidates = supersteps_.entries();
+  const std::uint32_t first = group.tag[0], span = group.tag[1] - group.tag[0];
+  const bool own_rows = sponsor_ids_.empty();
+  const std::uint32_t* const offsets = own_rows ? offsets_.data() : sponsor_offsets_.data();
+  const index_t* const sponsors = own_rows ? neighbors_.data() : sponsor_ids_.data();
+  for (std::size_t k = group.begin; k < group.end; ++k)
   {
-    const Candidate& e = entries[k];
-    const Node& c = nodes_[std::size_t(e.vertex)];
-    if (c.stamp == frame_) // moved by an earlier entry (a sponsor of lower id) or superstep
+    const index_t c = candidates[k];
+    const Node& node = nodes_[std::size_t(c)];
+    if (node.stamp == frame_) // moved by an earlier superstep
       continue;
-    const MovedRecord& s = moved_rec_[std::size_t(e.sponsor)];
-    const Eigen::Vector3d target =
-      required_displacement<Frame>(c, nodes_[std::size_t(s.vertex)], s.disp);
-    if (!target.isZero(0.0))
-      move(e.vertex, target, e.sponsor, root);
+    for (std::uint32_t e = offsets[std::size_t(c)]; e < offsets[std::size_t(c) + 1]; ++e)
+    {
+      const index_t s = sponsors[e];
+      const Node& sponsor = nodes_[std::size_t(s)];
+      const auto slot = std::uint32_t(slot_[std::size_t(s)]);
+      if (sponsor.stamp != frame_ || slot - first >= span)
+        continue;
+      const Eigen::Vector3d target =
+        required_displacement<Frame>(node, sponsor, moved_rec_[slot].disp);
+      if (!target.isZero(0.0))
+      {
+        move(c, target, index_t(slot), root);
+        break;
+      }
+    }
   }
-  return end - begin;
 }
 
 template<class Queue>
@@ -678,6 +760,8 @@ std::size_t ChainMailDeformer::memory_bytes() const
          (inner_of_.capacity() + outer_of_.capacity()) * sizeof(index_t) +
          caller_adjacency_bytes() + offsets_.capacity() * sizeof(std::uint32_t) +
          neighbors_.capacity() * sizeof(index_t) + supersteps_.memory_bytes() +
+         sponsor_offsets_.capacity() * sizeof(std::uint32_t) +
+         sponsor_ids_.capacity() * sizeof(index_t) + mark_.capacity() * sizeof(std::uint32_t) +
          rank_band_.capacity() * sizeof(std::uint32_t) + gid_.capacity() * sizeof(std::int64_t) +
          ghost_.capacity() + (obstacles_ ? obstacles_->memory_bytes() : 0) +
          rigid_of_.capacity() * sizeof(index_t) + rigid_first_.capacity() * sizeof(std::uint32_t) +

@@ -281,7 +281,11 @@ private:
   };
 
   template<ValidRegionFrame Frame>
-  std::size_t examine(std::size_t begin, std::size_t end, const SuperstepRoot& root);
+  void examine(const Superstep& group, const SuperstepRoot& root);
+  // Rows of the sponsors a candidate's entries come from (who lists it as a neighbour),
+  // each in (global id, internal id) order; left empty when they are the neighbour rows
+  // (a symmetric adjacency whose rows are in global id order: the usual case).
+  void build_sponsor_rows();
   // Where candidate c must move given sponsor s moved by sponsor_u (see propagate()).
   template<ValidRegionFrame Frame>
   Eigen::Vector3d required_displacement(
@@ -293,10 +297,12 @@ private:
   void build_rigid_components();
 
   mutable std::shared_ptr<const Adjacency> caller_adjacency_; // built by adjacency()
-  std::vector<std::uint32_t> offsets_; // internal CSR: rows in internal order, each row's
-  std::vector<index_t> neighbors_;     // neighbours in the caller's order, internal ids
-  std::vector<index_t> inner_of_;      // caller id -> internal id
-  std::vector<index_t> outer_of_;      // internal id -> caller id
+  std::vector<std::uint32_t> offsets_;         // internal CSR: rows in internal order, each row's
+  std::vector<index_t> neighbors_;             // neighbours in the caller's order, internal ids
+  std::vector<std::uint32_t> sponsor_offsets_; // CSR of build_sponsor_rows(), internal ids;
+  std::vector<index_t> sponsor_ids_;           // empty: offsets_ and neighbors_
+  std::vector<index_t> inner_of_;              // caller id -> internal id
+  std::vector<index_t> outer_of_;              // internal id -> caller id
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   std::vector<Node> nodes_;               // by internal id
   std::vector<index_t> slot_;             // by internal id: slot when moved this frame
@@ -334,6 +340,10 @@ private:
   std::vector<std::uint8_t> sliding_;       // by internal id; empty when none
   double last_fraction_ = 1.0;              // of the last gated move
   std::size_t blocked_ = 0;
+  // By internal id: mark_base_ + its index among the candidates pushed in the current
+  // end_superstep(), so each is pushed once; older values are below mark_base_.
+  std::vector<std::uint32_t> mark_;
+  std::uint32_t mark_base_ = 1;
   std::uint32_t superstep_ = 0;     // the current superstep of the frame
   std::size_t superstep_begin_ = 0; // slot of its first move
 };
