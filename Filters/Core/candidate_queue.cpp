@@ -133,7 +133,7 @@ void SuperstepQueue::sort_fully()
     std::sort(words_.begin(), words_.begin() + std::ptrdiff_t(k), less);
 }
 
-void SuperstepQueue::seal(std::uint32_t generation, const std::array<std::uint32_t, 2>& tag)
+void SuperstepQueue::seal(std::uint32_t generation)
 {
   if (pending_.empty())
     return;
@@ -156,11 +156,11 @@ void SuperstepQueue::seal(std::uint32_t generation, const std::array<std::uint32
       const SuperstepEntry& e = pending_[words_[j].index];
       if (e.band != first.band || !(e.root == first.root))
         break;
-      pool_.push_back(e.vertex);
+      pool_.push_back({ e.vertex, index_t(e.sponsors) });
       entries += e.entries;
     }
     file({ key(first.band, first.root, generation), std::uint32_t(begin),
-      std::uint32_t(pool_.size()), tag, entries, nil });
+      std::uint32_t(pool_.size()), entries, nil });
     begin = pool_.size();
     i = j;
   }
@@ -230,7 +230,6 @@ bool SuperstepQueue::pop(const SuperstepKey& k, Superstep& out)
     return false;
   out.begin = g.begin;
   out.end = g.end;
-  out.tag = g.tag;
   out.entries = g.entries;
   free_.push_back(chain.head);
   chain.head = g.next;

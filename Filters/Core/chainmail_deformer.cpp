@@ -159,39 +159,7 @@ void ChainMailDeformer::set_mesh(
   obstacles_.reset();
   sliding_.clear();
   rigid_of_.clear();
-  build_sponsor_rows();
   set_uniform_malleability(0.5);
-}
-
-void ChainMailDeformer::build_sponsor_rows()
-{
-  const std::size_t n = nodes_.size();
-  sponsor_offsets_.assign(n + 1, 0);
-  for (index_t c : neighbors_)
-    ++sponsor_offsets_[std::size_t(c) + 1];
-  for (std::size_t i = 0; i < n; ++i)
-    sponsor_offsets_[i + 1] += sponsor_offsets_[i];
-  sponsor_ids_.resize(neighbors_.size());
-  std::vector<std::uint32_t> fill(sponsor_offsets_.begin(), sponsor_offsets_.end() - 1);
-  for (std::size_t s = 0; s < n; ++s)
-    for (std::uint32_t e = offsets_[s]; e < offsets_[s + 1]; ++e)
-      sponsor_ids_[fill[std::size_t(neighbors_[e])]++] = index_t(s);
-  auto before = [&](index_t a, index_t b)
-  {
-    const std::int64_t ga =
-      gid_.empty() ? std::int64_t(outer_of_[std::size_t(a)]) : gid_[std::size_t(a)];
-    const std::int64_t gb =
-      gid_.empty() ? std::int64_t(outer_of_[std::size_t(b)]) : gid_[std::size_t(b)];
-    return ga != gb ? ga < gb : a < b;
-  };
-  for (std::size_t c = 0; c < n; ++c)
-    std::sort(sponsor_ids_.begin() + sponsor_offsets_[c],
-      sponsor_ids_.begin() + sponsor_offsets_[c + 1], before);
-  if (sponsor_offsets_ == offsets_ && sponsor_ids_ == neighbors_)
-  {
-    std::vector<std::uint32_t>().swap(sponsor_offsets_);
-    std::vector<index_t>().swap(sponsor_ids_);
-  }
 }
 
 template<class T>
@@ -292,7 +260,6 @@ void ChainMailDeformer::set_global_ids(const std::int64_t* gid)
   gid_.clear();
   if (gid)
     to_inner(gid_, gid, outer_of_, [](std::int64_t g) { return g; });
-  build_sponsor_rows();
 }
 
 void ChainMailDeformer::set_owned(const std::uint8_t* mask)
@@ -392,6 +359,7 @@ void ChainMailDeformer::begin_frame()
 {
   reset();
   supersteps_.clear();
+  links_.clear();
   superstep_ = 0;
   superstep_begin_ = 0;
   blocked_ = 0;
@@ -440,69 +408,101 @@ std::size_t ChainMailDeformer::superstep(const SuperstepKey& key)
 void ChainMailDeformer::end_superstep()
 {
   const bool banded = queue_kind_ == QueueKind::fifo_priority;
+  const std::int64_t* const gids = gid_.empty() ? nullptr : gid_.data();
   auto gid = [&](index_t i)
-  { return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)]; };
+  { return gids ? gids[std::size_t(i)] : std::int64_t(outer_of_[std::size_t(i)]); };
+  const std::uint8_t* const pinned = pinned_inner_.empty() ? nullptr : pinned_inner_.data();
+  const std::uint8_t* const ghost = ghost_.empty() ? nullptr : ghost_.data();
   if (mark_base_ > std::numeric_limits<std::uint32_t>::max() - std::uint32_t(nodes_.size()))
   {
     std::fill(mark_.begin(), mark_.end(), 0u);
     mark_base_ = 1;
   }
+  if (links_.size() + neighbors_.size() > nil_link)
+    throw std::length_error("ChainMailDeformer: more than 2^32 entries in a frame");
   const std::size_t first = superstep_begin_, last = moved_rec_.size();
   bool sponsored = false; // the first sponsor's band and root are the superstep's
   std::uint32_t band = 0;
   SuperstepRoot root;
+  // Slots in id order (always, but for ghosts and aliases a driver moved): a sponsor
+  // joins the end of its candidates' lists.
+  bool in_order = true;
+  std::int64_t last_gid = std::numeric_limits<std::int64_t>::min();
+  tails_.clear();
   for (std::size_t slot = first; slot < last; ++slot)
   {
     const index_t s = moved_rec_[slot].vertex;
-    const std::uint32_t s_band = banded ? rank_band_[std::size_t(nodes_[std::size_t(s)].rank)] : 0u;
-    bool checked = false;
+    const std::int64_t s_gid = gid(s);
+    in_order = in_order && s_gid > last_gid;
+    last_gid = s_gid;
+    const std::size_t pushed = links_.size();
     for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
     {
       const index_t c = neighbors_[e];
       const Node& node = nodes_[std::size_t(c)];
-      if (node.stamp == frame_ || (!pinned_inner_.empty() && pinned_inner_[std::size_t(c)]) ||
-          (!ghost_.empty() && ghost_[std::size_t(c)]))
+      if (node.stamp == frame_ || (pinned && pinned[std::size_t(c)]) ||
+          (ghost && ghost[std::size_t(c)]))
         continue;
-      if (!checked)
-      {
-        checked = true;
-        if (!sponsored)
-        {
-          sponsored = true;
-          band = s_band;
-          root = moved_root_[slot];
-        }
-        else if (s_band != band || !(moved_root_[slot] == root))
-          throw std::logic_error(
-            "ChainMailDeformer: the sponsors of a superstep must share a band and a root");
-      }
+      const auto link = std::uint32_t(links_.size());
+      links_.push_back({ index_t(slot), nil_link });
       const std::uint32_t m = mark_[std::size_t(c)] - mark_base_;
-      if (m < supersteps_.pending_size())
+      if (m < tails_.size())
       {
-        ++supersteps_.pending(m).entries;
+        SuperstepEntry& pending = supersteps_.pending(m);
+        ++pending.entries;
+        if (in_order)
+        {
+          links_[tails_[m]].next = link;
+          tails_[m] = link;
+          continue;
+        }
+        // Insert by sponsor id (ties by slot, which grows: after the equals).
+        std::uint32_t* at = &pending.sponsors;
+        while (*at != nil_link && gid(moved_rec_[std::size_t(links_[*at].slot)].vertex) <= s_gid)
+          at = &links_[*at].next;
+        links_[link].next = *at;
+        *at = link;
+        if (links_[link].next == nil_link)
+          tails_[m] = link;
         continue;
       }
-      mark_[std::size_t(c)] = mark_base_ + std::uint32_t(supersteps_.pending_size());
+      if (!sponsored)
+      {
+        sponsored = true;
+        band = banded ? rank_band_[std::size_t(nodes_[std::size_t(s)].rank)] : 0u;
+        root = moved_root_[slot];
+      }
+      mark_[std::size_t(c)] = mark_base_ + std::uint32_t(tails_.size());
+      tails_.push_back(link);
       const index_t c_rank = banded ? node.rank : 0;
       const std::uint32_t c_band = banded ? rank_band_[std::size_t(c_rank)] : 0u;
-      const std::int64_t c_gid = gid(c);
       // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base.
-      const SuperstepRoot c_root = c_band < band    ? SuperstepRoot{ superstep_ + 1, c_gid }
-                                   : c_band == band ? root
-                                                    : SuperstepRoot{};
-      supersteps_.push({ c_gid, c_root, c_band, std::uint32_t(c_rank), c, 1 });
-      prefetch(sponsor_ids_.empty() ? neighbors_.data() + offsets_[std::size_t(c)]
-                                    : sponsor_ids_.data() + sponsor_offsets_[std::size_t(c)]);
+      SuperstepEntry& entry = supersteps_.emplace();
+      entry.candidate_gid = gid(c);
+      entry.root = c_band < band    ? SuperstepRoot{ superstep_ + 1, entry.candidate_gid }
+                   : c_band == band ? root
+                                    : SuperstepRoot{};
+      entry.band = c_band;
+      entry.order = std::uint32_t(c_rank);
+      entry.vertex = c;
+      entry.sponsors = link;
+      entry.entries = 1;
     }
+    // Every sponsor of a candidate falls in the superstep's group: they must agree.
+    if (links_.size() > pushed && sponsored &&
+        ((banded && rank_band_[std::size_t(nodes_[std::size_t(s)].rank)] != band) ||
+          !(moved_root_[slot] == root)))
+      throw std::logic_error(
+        "ChainMailDeformer: the sponsors of a superstep must share a band and a root");
   }
-  mark_base_ += std::uint32_t(supersteps_.pending_size());
-  supersteps_.seal(superstep_ + 1, { std::uint32_t(first), std::uint32_t(last) });
+  mark_base_ += std::uint32_t(tails_.size());
+  supersteps_.seal(superstep_ + 1);
   superstep_begin_ = last;
   ++superstep_;
 }
 
 template<ValidRegionFrame Frame>
-Eigen::Vector3d ChainMailDeformer::required_displacement(
+inline Eigen::Vector3d ChainMailDeformer::required_displacement(
   const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const
 {
   // The nearest point of c's valid region w.r.t. s to c's rest position
@@ -516,31 +516,25 @@ Eigen::Vector3d ChainMailDeformer::required_displacement(
 template<ValidRegionFrame Frame>
 void ChainMailDeformer::examine(const Superstep& group, const SuperstepRoot& root)
 {
-  // A candidate's entries are its sponsors moved in the sponsoring superstep (slots
-  // [tag[0], tag[1])), in sponsor id order: the first that moves it wins.
-  const index_t* const candidates = supersteps_.entries();
-  const std::uint32_t first = group.tag[0], span = group.tag[1] - group.tag[0];
-  const bool own_rows = sponsor_ids_.empty();
-  const std::uint32_t* const offsets = own_rows ? offsets_.data() : sponsor_offsets_.data();
-  const index_t* const sponsors = own_rows ? neighbors_.data() : sponsor_ids_.data();
+  // A candidate's entries are its list of sponsors, in sponsor id order: the first that
+  // moves it wins.
+  const Candidate* const candidates = supersteps_.entries();
   for (std::size_t k = group.begin; k < group.end; ++k)
   {
-    const index_t c = candidates[k];
+    const index_t c = candidates[k].vertex;
     const Node& node = nodes_[std::size_t(c)];
     if (node.stamp == frame_) // moved by an earlier superstep
       continue;
-    for (std::uint32_t e = offsets[std::size_t(c)]; e < offsets[std::size_t(c) + 1]; ++e)
+    for (auto link = std::uint32_t(candidates[k].sponsor); link != nil_link;
+         link = links_[link].next)
     {
-      const index_t s = sponsors[e];
-      const Node& sponsor = nodes_[std::size_t(s)];
-      const auto slot = std::uint32_t(slot_[std::size_t(s)]);
-      if (sponsor.stamp != frame_ || slot - first >= span)
-        continue;
+      const index_t slot = links_[link].slot;
+      const MovedRecord& s = moved_rec_[std::size_t(slot)];
       const Eigen::Vector3d target =
-        required_displacement<Frame>(node, sponsor, moved_rec_[slot].disp);
+        required_displacement<Frame>(node, nodes_[std::size_t(s.vertex)], s.disp);
       if (!target.isZero(0.0))
       {
-        move(c, target, index_t(slot), root);
+        move(c, target, slot, root);
         break;
       }
     }
@@ -760,11 +754,11 @@ std::size_t ChainMailDeformer::memory_bytes() const
          (inner_of_.capacity() + outer_of_.capacity()) * sizeof(index_t) +
          caller_adjacency_bytes() + offsets_.capacity() * sizeof(std::uint32_t) +
          neighbors_.capacity() * sizeof(index_t) + supersteps_.memory_bytes() +
-         sponsor_offsets_.capacity() * sizeof(std::uint32_t) +
-         sponsor_ids_.capacity() * sizeof(index_t) + mark_.capacity() * sizeof(std::uint32_t) +
-         rank_band_.capacity() * sizeof(std::uint32_t) + gid_.capacity() * sizeof(std::int64_t) +
-         ghost_.capacity() + (obstacles_ ? obstacles_->memory_bytes() : 0) +
-         rigid_of_.capacity() * sizeof(index_t) + rigid_first_.capacity() * sizeof(std::uint32_t) +
+         mark_.capacity() * sizeof(std::uint32_t) + links_.capacity() * sizeof(SponsorLink) +
+         tails_.capacity() * sizeof(std::uint32_t) + rank_band_.capacity() * sizeof(std::uint32_t) +
+         gid_.capacity() * sizeof(std::int64_t) + ghost_.capacity() +
+         (obstacles_ ? obstacles_->memory_bytes() : 0) + rigid_of_.capacity() * sizeof(index_t) +
+         rigid_first_.capacity() * sizeof(std::uint32_t) +
          rigid_members_.capacity() * sizeof(index_t) +
          rigid_stamp_.capacity() * sizeof(std::uint32_t) +
          rigid_disp_.capacity() * sizeof(Eigen::Vector3d) + rank_rigid_.capacity() +

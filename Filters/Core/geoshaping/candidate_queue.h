@@ -98,18 +98,17 @@ public:
 //
 // The queue holds candidates, not entries: the sponsors of one generation are the
 // vertices moved in one superstep, which share a band and a root, so all the entries of
-// a candidate in a generation fall in one group, and the deformer finds their sponsors
-// again from the candidate's neighbours (those moved in the sponsoring superstep, in
-// sponsor id order). A pushed candidate carries how many entries it stands for; a
-// group carries an opaque range given to seal() (the deformer's: the sponsors' slots).
+// a candidate in a generation fall in one group. A pushed candidate carries how many
+// entries it stands for and an opaque word (the deformer's: the head of its list of
+// sponsors, kept in sponsor id order as they are pushed).
 //
 // band is the bit pattern of a float in [0, 1] (+0 for -0), whose unsigned order is the
 // numeric order, so pieces with different sets of malleability values agree on it.
 //
 // Cost: a frame of K pushed candidates (K <= the sum of the degrees of the moved
 // vertices) filed in S supersteps with R distinct (band, root)s costs O(K + S + R log R)
-// time in the usual case, O(K log K + S + R log R) at worst; memory is 4 K bytes, plus
-// 56 bytes per candidate of the largest generation (scratch), plus 48 bytes per pending
+// time in the usual case, O(K log K + S + R log R) at worst; memory is 8 K bytes, plus
+// 56 bytes per candidate of the largest generation (scratch), plus 40 bytes per pending
 // group and ~60 per (band, root). How, for the k candidates of one generation (seal):
 //
 // 1. They wait in a scratch buffer reused between generations and frames.
@@ -128,7 +127,7 @@ public:
 //    seals (an entry's root follows from its band alone: same band as the sponsors:
 //    theirs; lower: its own; higher: the base). Otherwise a comparison sort on the full
 //    key, O(k log k): the order is the full key's whatever the path.
-// 4. The sorted candidates, 4 bytes each, are appended to the pool, one group per
+// 4. The sorted candidates, 8 bytes each, are appended to the pool, one group per
 //    (band, root). Groups are chained per (band, root) in filing order, which is their
 //    key order since generations only grow; a binary heap holds the chains, whose order
 //    is their (band, root) and never changes. A superstep continuing its own chain (the
@@ -152,22 +151,22 @@ struct SuperstepEntry
   std::int64_t candidate_gid;
   SuperstepRoot root;
   std::uint32_t band;
-  std::uint32_t order;       // non-decreasing in band (a hint for the cheap sort; 0 if unknown)
-  index_t vertex;            // the candidate (the deformer's internal id)
-  std::uint32_t entries = 1; // (candidate, sponsor) entries it stands for
+  std::uint32_t order;        // non-decreasing in band (a hint for the cheap sort; 0 if unknown)
+  index_t vertex;             // the candidate (the deformer's internal id)
+  std::uint32_t entries = 1;  // (candidate, sponsor) entries it stands for
+  std::uint32_t sponsors = 0; // opaque, popped with the vertex (as Candidate::sponsor)
 };
 
 // (band, root, generation) as three words compared in lexicographic order, so pieces
 // can reduce it as plain integers.
 using SuperstepKey = std::array<std::uint64_t, 3>;
 
-// A popped group: its candidates are entries()[begin, end), sorted by (candidate id,
-// vertex), valid until the next seal; `tag` is what seal() was given; `entries` the
-// (candidate, sponsor) entries its candidates stand for.
+// A popped group: its candidates are entries()[begin, end) (vertex and the opaque
+// word), sorted by (candidate id, vertex), valid until the next seal; `entries` the
+// (candidate, sponsor) entries they stand for.
 struct Superstep
 {
   std::size_t begin = 0, end = 0;
-  std::array<std::uint32_t, 2> tag{};
   std::size_t entries = 0;
 };
 
@@ -185,12 +184,14 @@ public:
     return { std::uint32_t(k[0]), std::int64_t(k[1] ^ (std::uint64_t(1) << 63)) };
   }
   void push(const SuperstepEntry& e) { pending_.push_back(e); }
+  // A new entry to fill in place.
+  SuperstepEntry& emplace() { return pending_.emplace_back(); }
   // The candidates pushed since the last seal (to count more entries for one of them).
   std::size_t pending_size() const { return pending_.size(); }
   SuperstepEntry& pending(std::size_t i) { return pending_[i]; }
   // Files the candidates pushed since the last seal as `generation`, which must exceed
-  // the previous seal's since clear() (std::invalid_argument otherwise), with `tag`.
-  void seal(std::uint32_t generation, const std::array<std::uint32_t, 2>& tag = {});
+  // the previous seal's since clear() (std::invalid_argument otherwise).
+  void seal(std::uint32_t generation);
   // The lowest pending key, `none` when nothing is pending (drops finished chains: not
   // safe to call from two threads at once).
   SuperstepKey top() const
@@ -200,12 +201,12 @@ public:
   }
   // Removes the group `key` if it is the lowest.
   bool pop(const SuperstepKey& key, Superstep& out);
-  const index_t* entries() const { return pool_.data(); }
+  const Candidate* entries() const { return pool_.data(); }
   // Empties the queue, keeping the buffers.
   void clear();
   std::size_t memory_bytes() const
   {
-    return pool_.capacity() * sizeof(index_t) + pending_.capacity() * sizeof(SuperstepEntry) +
+    return pool_.capacity() * sizeof(Candidate) + pending_.capacity() * sizeof(SuperstepEntry) +
            (words_.capacity() + scratch_.capacity()) * sizeof(Word) +
            count_.capacity() * sizeof(std::uint32_t) + groups_.capacity() * sizeof(Group) +
            free_.capacity() * sizeof(std::uint32_t) + chains_.capacity() * sizeof(Chain) +
@@ -220,7 +221,6 @@ private:
   {
     SuperstepKey key;
     std::uint32_t begin, end; // in pool_, which holds fewer than 2^32 entries (checked)
-    std::array<std::uint32_t, 2> tag;
     std::uint32_t entries;
     std::uint32_t next; // the chain's next group, nil at its tail
   };
@@ -271,7 +271,7 @@ private:
   // A chain whose last group popped stays on the heap until it is found on top with
   // none filed meanwhile: the next superstep most often refills it (same band and root).
   void drop_done_chains() const;
-  std::vector<index_t> pool_;
+  std::vector<Candidate> pool_;
   std::vector<SuperstepEntry> pending_;     // the generation being pushed
   std::vector<Word> words_, scratch_;       // its sort order
   std::vector<std::uint32_t> count_;        // radix counters

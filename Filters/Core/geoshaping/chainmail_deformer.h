@@ -282,13 +282,10 @@ private:
 
   template<ValidRegionFrame Frame>
   void examine(const Superstep& group, const SuperstepRoot& root);
-  // Rows of the sponsors a candidate's entries come from (who lists it as a neighbour),
-  // each in (global id, internal id) order; left empty when they are the neighbour rows
-  // (a symmetric adjacency whose rows are in global id order: the usual case).
-  void build_sponsor_rows();
   // Where candidate c must move given sponsor s moved by sponsor_u (see propagate()).
+  // Inlined into the loops that call it: a call costs as much as the box.
   template<ValidRegionFrame Frame>
-  Eigen::Vector3d required_displacement(
+  [[gnu::always_inline]] Eigen::Vector3d required_displacement(
     const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const;
   void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,
     const SuperstepRoot& root = {});
@@ -297,12 +294,10 @@ private:
   void build_rigid_components();
 
   mutable std::shared_ptr<const Adjacency> caller_adjacency_; // built by adjacency()
-  std::vector<std::uint32_t> offsets_;         // internal CSR: rows in internal order, each row's
-  std::vector<index_t> neighbors_;             // neighbours in the caller's order, internal ids
-  std::vector<std::uint32_t> sponsor_offsets_; // CSR of build_sponsor_rows(), internal ids;
-  std::vector<index_t> sponsor_ids_;           // empty: offsets_ and neighbors_
-  std::vector<index_t> inner_of_;              // caller id -> internal id
-  std::vector<index_t> outer_of_;              // internal id -> caller id
+  std::vector<std::uint32_t> offsets_; // internal CSR: rows in internal order, each row's
+  std::vector<index_t> neighbors_;     // neighbours in the caller's order, internal ids
+  std::vector<index_t> inner_of_;      // caller id -> internal id
+  std::vector<index_t> outer_of_;      // internal id -> caller id
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   std::vector<Node> nodes_;               // by internal id
   std::vector<index_t> slot_;             // by internal id: slot when moved this frame
@@ -344,6 +339,17 @@ private:
   // end_superstep(), so each is pushed once; older values are below mark_base_.
   std::vector<std::uint32_t> mark_;
   std::uint32_t mark_base_ = 1;
+  // A queued candidate's sponsors: a list in sponsor id order through `links_` (the
+  // frame's, by push), headed by the candidate's Candidate::sponsor; `tails_` by index
+  // among the candidates pushed in the current end_superstep().
+  struct SponsorLink
+  {
+    index_t slot;       // the sponsor's
+    std::uint32_t next; // nil_link at the end
+  };
+  static constexpr std::uint32_t nil_link = ~std::uint32_t(0);
+  std::vector<SponsorLink> links_;
+  std::vector<std::uint32_t> tails_;
   std::uint32_t superstep_ = 0;     // the current superstep of the frame
   std::size_t superstep_begin_ = 0; // slot of its first move
 };
