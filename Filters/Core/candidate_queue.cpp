@@ -30,8 +30,9 @@ namespace
 // The full key of an entry, ties (duplicate ids on a piece) by vertex and sponsor.
 inline bool before(const SuperstepEntry& a, const SuperstepEntry& b)
 {
-  return std::tie(a.band, a.root.generation, a.root.gid, a.candidate_gid, a.vertex) <
-         std::tie(b.band, b.root.generation, b.root.gid, b.candidate_gid, b.vertex);
+  return std::tie(a.band, a.root.generation, a.root.gid, a.candidate_gid, a.sponsor_gid, a.vertex,
+           a.sponsor) < std::tie(b.band, b.root.generation, b.root.gid, b.candidate_gid,
+                          b.sponsor_gid, b.vertex, b.sponsor);
 }
 
 // Sizes a scratch buffer to at least n (its tail beyond n is left as it is).
@@ -78,15 +79,13 @@ bool SuperstepQueue::sort_cheaply()
                     (std::uint64_t(e.candidate_gid) - std::uint64_t(min_id)),
       std::uint32_t(i) };
   }
-  // Insertion sort while it makes few moves (a generation comes nearly sorted: the
-  // neighbours of vertices taken in id order); past the budget a radix sort of all.
-  std::size_t moves = 0;
-  const std::size_t budget = 8 * k;
-  std::size_t i = 1;
-  for (; i < k && moves <= budget; ++i)
-    for (std::size_t j = i; j > 0 && words_[j].key < words_[j - 1].key; --j, ++moves)
-      std::swap(words_[j], words_[j - 1]);
-  if (i < k)
+  if (k < 64) // insertion sort: stable, and cheaper than the counters of a radix pass
+  {
+    for (std::size_t i = 1; i < k; ++i)
+      for (std::size_t j = i; j > 0 && words_[j].key < words_[j - 1].key; --j)
+        std::swap(words_[j], words_[j - 1]);
+  }
+  else
   {
     // LSD radix sort: ceil(bits / 11) stable counting passes of equal width (at most
     // 2^11 counters), a pass skipped when its digit is the same in all words.
@@ -98,19 +97,25 @@ bool SuperstepQueue::sort_cheaply()
     for (int shift = 0; shift < bits; shift += width)
     {
       std::fill(count_.begin(), count_.end(), 0);
-      for (std::size_t w = 0; w < k; ++w)
-        ++count_[(words_[w].key >> shift) & mask];
+      for (std::size_t i = 0; i < k; ++i)
+        ++count_[(words_[i].key >> shift) & mask];
       if (count_[(words_[0].key >> shift) & mask] == k)
         continue;
       std::uint32_t sum = 0;
       for (std::uint32_t& c : count_)
         sum += std::exchange(c, sum);
-      for (std::size_t w = 0; w < k; ++w)
-        scratch_[count_[(words_[w].key >> shift) & mask]++] = words_[w];
+      for (std::size_t i = 0; i < k; ++i)
+        scratch_[count_[(words_[i].key >> shift) & mask]++] = words_[i];
       words_.swap(scratch_);
     }
   }
-  // The check on the full key.
+  // Runs of one word (one candidate) by sponsor id, then the check on the full key.
+  for (std::size_t i = 1; i < k; ++i)
+    for (std::size_t j = i;
+         j > 0 && words_[j].key == words_[j - 1].key &&
+         pending_[words_[j].index].sponsor_gid < pending_[words_[j - 1].index].sponsor_gid;
+         --j)
+      std::swap(words_[j], words_[j - 1]);
   for (std::size_t i = 1; i < k; ++i)
     if (before(pending_[words_[i].index], pending_[words_[i - 1].index]))
       return false;
@@ -150,17 +155,15 @@ void SuperstepQueue::seal(std::uint32_t generation)
   {
     const SuperstepEntry& first = pending_[words_[i].index];
     std::size_t j = i;
-    std::uint32_t entries = 0;
     for (; j < k; ++j)
     {
       const SuperstepEntry& e = pending_[words_[j].index];
       if (e.band != first.band || !(e.root == first.root))
         break;
-      pool_.push_back({ e.vertex, index_t(e.sponsors) });
-      entries += e.entries;
+      pool_.push_back({ e.vertex, e.sponsor });
     }
     file({ key(first.band, first.root, generation), std::uint32_t(begin),
-      std::uint32_t(pool_.size()), entries, nil });
+      std::uint32_t(pool_.size()) });
     begin = pool_.size();
     i = j;
   }
@@ -218,7 +221,7 @@ void SuperstepQueue::drop_done_chains() const
   }
 }
 
-bool SuperstepQueue::pop(const SuperstepKey& k, Superstep& out)
+bool SuperstepQueue::pop(const SuperstepKey& k, std::size_t& begin, std::size_t& end)
 {
   drop_done_chains();
   if (heap_.empty())
@@ -228,9 +231,8 @@ bool SuperstepQueue::pop(const SuperstepKey& k, Superstep& out)
   const Group& g = groups_[chain.head];
   if (g.key[0] != k[0] || g.key[1] != k[1] || g.key[2] != k[2])
     return false;
-  out.begin = g.begin;
-  out.end = g.end;
-  out.entries = g.entries;
+  begin = g.begin;
+  end = g.end;
   free_.push_back(chain.head);
   chain.head = g.next;
   last_ = c;

@@ -144,8 +144,6 @@ void ChainMailDeformer::set_mesh(
     nodes_[i].rank = 0;
   }
   slot_.assign(un, 0);
-  mark_.assign(un, 0);
-  mark_base_ = 1;
   pinned_.clear();
   pinned_inner_.clear();
   gid_.clear();
@@ -359,7 +357,6 @@ void ChainMailDeformer::begin_frame()
 {
   reset();
   supersteps_.clear();
-  links_.clear();
   superstep_ = 0;
   superstep_begin_ = 0;
   blocked_ = 0;
@@ -394,115 +391,50 @@ void ChainMailDeformer::skip_to_superstep(std::uint32_t n)
 
 std::size_t ChainMailDeformer::superstep(const SuperstepKey& key)
 {
-  Superstep group;
-  if (!supersteps_.pop(key, group))
+  std::size_t begin, end;
+  if (!supersteps_.pop(key, begin, end))
     return 0;
   const SuperstepRoot root = SuperstepQueue::root_of(key);
-  if (frame_kind_ == ValidRegionFrame::link)
-    examine<ValidRegionFrame::link>(group, root);
-  else
-    examine<ValidRegionFrame::axes>(group, root);
-  return group.entries;
+  return frame_kind_ == ValidRegionFrame::link ? examine<ValidRegionFrame::link>(begin, end, root)
+                                               : examine<ValidRegionFrame::axes>(begin, end, root);
 }
 
 void ChainMailDeformer::end_superstep()
 {
   const bool banded = queue_kind_ == QueueKind::fifo_priority;
-  const std::int64_t* const gids = gid_.empty() ? nullptr : gid_.data();
   auto gid = [&](index_t i)
-  { return gids ? gids[std::size_t(i)] : std::int64_t(outer_of_[std::size_t(i)]); };
-  const std::uint8_t* const pinned = pinned_inner_.empty() ? nullptr : pinned_inner_.data();
-  const std::uint8_t* const ghost = ghost_.empty() ? nullptr : ghost_.data();
-  if (mark_base_ > std::numeric_limits<std::uint32_t>::max() - std::uint32_t(nodes_.size()))
-  {
-    std::fill(mark_.begin(), mark_.end(), 0u);
-    mark_base_ = 1;
-  }
-  if (links_.size() + neighbors_.size() > nil_link)
-    throw std::length_error("ChainMailDeformer: more than 2^32 entries in a frame");
-  const std::size_t first = superstep_begin_, last = moved_rec_.size();
-  bool sponsored = false; // the first sponsor's band and root are the superstep's
-  std::uint32_t band = 0;
-  SuperstepRoot root;
-  // Slots in id order (always, but for ghosts and aliases a driver moved): a sponsor
-  // joins the end of its candidates' lists.
-  bool in_order = true;
-  std::int64_t last_gid = std::numeric_limits<std::int64_t>::min();
-  tails_.clear();
-  for (std::size_t slot = first; slot < last; ++slot)
+  { return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)]; };
+  for (std::size_t slot = superstep_begin_; slot < moved_rec_.size(); ++slot)
   {
     const index_t s = moved_rec_[slot].vertex;
+    const index_t s_rank = banded ? nodes_[std::size_t(s)].rank : 0;
+    const std::uint32_t s_band = banded ? rank_band_[std::size_t(s_rank)] : 0u;
     const std::int64_t s_gid = gid(s);
-    in_order = in_order && s_gid > last_gid;
-    last_gid = s_gid;
-    const std::size_t pushed = links_.size();
     for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
     {
       const index_t c = neighbors_[e];
       const Node& node = nodes_[std::size_t(c)];
-      if (node.stamp == frame_ || (pinned && pinned[std::size_t(c)]) ||
-          (ghost && ghost[std::size_t(c)]))
+      if (node.stamp == frame_ || (!pinned_inner_.empty() && pinned_inner_[std::size_t(c)]) ||
+          (!ghost_.empty() && ghost_[std::size_t(c)]))
         continue;
-      const auto link = std::uint32_t(links_.size());
-      links_.push_back({ index_t(slot), nil_link });
-      const std::uint32_t m = mark_[std::size_t(c)] - mark_base_;
-      if (m < tails_.size())
-      {
-        SuperstepEntry& pending = supersteps_.pending(m);
-        ++pending.entries;
-        if (in_order)
-        {
-          links_[tails_[m]].next = link;
-          tails_[m] = link;
-          continue;
-        }
-        // Insert by sponsor id (ties by slot, which grows: after the equals).
-        std::uint32_t* at = &pending.sponsors;
-        while (*at != nil_link && gid(moved_rec_[std::size_t(links_[*at].slot)].vertex) <= s_gid)
-          at = &links_[*at].next;
-        links_[link].next = *at;
-        *at = link;
-        if (links_[link].next == nil_link)
-          tails_[m] = link;
-        continue;
-      }
-      if (!sponsored)
-      {
-        sponsored = true;
-        band = banded ? rank_band_[std::size_t(nodes_[std::size_t(s)].rank)] : 0u;
-        root = moved_root_[slot];
-      }
-      mark_[std::size_t(c)] = mark_base_ + std::uint32_t(tails_.size());
-      tails_.push_back(link);
       const index_t c_rank = banded ? node.rank : 0;
       const std::uint32_t c_band = banded ? rank_band_[std::size_t(c_rank)] : 0u;
+      const std::int64_t c_gid = gid(c);
       // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base.
-      SuperstepEntry& entry = supersteps_.emplace();
-      entry.candidate_gid = gid(c);
-      entry.root = c_band < band    ? SuperstepRoot{ superstep_ + 1, entry.candidate_gid }
-                   : c_band == band ? root
-                                    : SuperstepRoot{};
-      entry.band = c_band;
-      entry.order = std::uint32_t(c_rank);
-      entry.vertex = c;
-      entry.sponsors = link;
-      entry.entries = 1;
+      const SuperstepRoot root = c_band < s_band    ? SuperstepRoot{ superstep_ + 1, c_gid }
+                                 : c_band == s_band ? moved_root_[slot]
+                                                    : SuperstepRoot{};
+      supersteps_.push(c_gid, s_gid, root, c_band, std::uint32_t(c_rank), c, index_t(slot));
+      prefetch(neighbors_.data() + offsets_[std::size_t(c)]); // read by move() if c moves
     }
-    // Every sponsor of a candidate falls in the superstep's group: they must agree.
-    if (links_.size() > pushed && sponsored &&
-        ((banded && rank_band_[std::size_t(nodes_[std::size_t(s)].rank)] != band) ||
-          !(moved_root_[slot] == root)))
-      throw std::logic_error(
-        "ChainMailDeformer: the sponsors of a superstep must share a band and a root");
   }
-  mark_base_ += std::uint32_t(tails_.size());
   supersteps_.seal(superstep_ + 1);
-  superstep_begin_ = last;
+  superstep_begin_ = moved_rec_.size();
   ++superstep_;
 }
 
 template<ValidRegionFrame Frame>
-inline Eigen::Vector3d ChainMailDeformer::required_displacement(
+Eigen::Vector3d ChainMailDeformer::required_displacement(
   const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const
 {
   // The nearest point of c's valid region w.r.t. s to c's rest position
@@ -514,31 +446,23 @@ inline Eigen::Vector3d ChainMailDeformer::required_displacement(
 }
 
 template<ValidRegionFrame Frame>
-void ChainMailDeformer::examine(const Superstep& group, const SuperstepRoot& root)
+std::size_t ChainMailDeformer::examine(
+  std::size_t begin, std::size_t end, const SuperstepRoot& root)
 {
-  // A candidate's entries are its list of sponsors, in sponsor id order: the first that
-  // moves it wins.
-  const Candidate* const candidates = supersteps_.entries();
-  for (std::size_t k = group.begin; k < group.end; ++k)
+  const Candidate* const entries = supersteps_.entries();
+  for (std::size_t k = begin; k < end; ++k)
   {
-    const index_t c = candidates[k].vertex;
-    const Node& node = nodes_[std::size_t(c)];
-    if (node.stamp == frame_) // moved by an earlier superstep
+    const Candidate& e = entries[k];
+    const Node& c = nodes_[std::size_t(e.vertex)];
+    if (c.stamp == frame_) // moved by an earlier entry (a sponsor of lower id) or superstep
       continue;
-    for (auto link = std::uint32_t(candidates[k].sponsor); link != nil_link;
-         link = links_[link].next)
-    {
-      const index_t slot = links_[link].slot;
-      const MovedRecord& s = moved_rec_[std::size_t(slot)];
-      const Eigen::Vector3d target =
-        required_displacement<Frame>(node, nodes_[std::size_t(s.vertex)], s.disp);
-      if (!target.isZero(0.0))
-      {
-        move(c, target, slot, root);
-        break;
-      }
-    }
+    const MovedRecord& s = moved_rec_[std::size_t(e.sponsor)];
+    const Eigen::Vector3d target =
+      required_displacement<Frame>(c, nodes_[std::size_t(s.vertex)], s.disp);
+    if (!target.isZero(0.0))
+      move(e.vertex, target, e.sponsor, root);
   }
+  return end - begin;
 }
 
 template<class Queue>
@@ -754,11 +678,9 @@ std::size_t ChainMailDeformer::memory_bytes() const
          (inner_of_.capacity() + outer_of_.capacity()) * sizeof(index_t) +
          caller_adjacency_bytes() + offsets_.capacity() * sizeof(std::uint32_t) +
          neighbors_.capacity() * sizeof(index_t) + supersteps_.memory_bytes() +
-         mark_.capacity() * sizeof(std::uint32_t) + links_.capacity() * sizeof(SponsorLink) +
-         tails_.capacity() * sizeof(std::uint32_t) + rank_band_.capacity() * sizeof(std::uint32_t) +
-         gid_.capacity() * sizeof(std::int64_t) + ghost_.capacity() +
-         (obstacles_ ? obstacles_->memory_bytes() : 0) + rigid_of_.capacity() * sizeof(index_t) +
-         rigid_first_.capacity() * sizeof(std::uint32_t) +
+         rank_band_.capacity() * sizeof(std::uint32_t) + gid_.capacity() * sizeof(std::int64_t) +
+         ghost_.capacity() + (obstacles_ ? obstacles_->memory_bytes() : 0) +
+         rigid_of_.capacity() * sizeof(index_t) + rigid_first_.capacity() * sizeof(std::uint32_t) +
          rigid_members_.capacity() * sizeof(index_t) +
          rigid_stamp_.capacity() * sizeof(std::uint32_t) +
          rigid_disp_.capacity() * sizeof(Eigen::Vector3d) + rank_rigid_.capacity() +

@@ -27,66 +27,60 @@ TEST(CandidateQueue, SuperstepsComeByBandRootAndGenerationEachSortedByIds)
 {
   SuperstepQueue q;
   const SuperstepRoot base{}, early{ 1, 50 }, late{ 1, 60 };
-  // (candidate gid, band, root, entries): generation 1, pushed in no particular order.
-  using In = std::tuple<std::int64_t, std::uint32_t, SuperstepRoot, std::uint32_t>;
-  for (auto [c, b, r, n] : { In{ 9, 2, base, 2 }, In{ 3, 1, base, 2 }, In{ 1, 2, base, 1 },
-         In{ 60, 1, late, 1 }, In{ 50, 1, early, 1 } })
-    q.push({ c, r, b, b, index_t(c), n });
+  // (candidate gid, sponsor gid, band, root): generation 1, pushed in no particular order.
+  using In = std::tuple<std::int64_t, std::int64_t, std::uint32_t, SuperstepRoot>;
+  for (auto [c, s, b, r] : { In{ 9, 4, 2, base }, In{ 3, 8, 1, base }, In{ 9, 2, 2, base },
+         In{ 1, 5, 2, base }, In{ 3, 1, 1, base }, In{ 60, 7, 1, late }, In{ 50, 7, 1, early } })
+    q.push({ c, s, r, b, b, index_t(c), index_t(s) });
   q.seal(1);
-  for (auto [c, b, r, n] : { In{ 7, 1, base, 1 }, In{ 2, 0, base, 3 } })
-    q.push({ c, r, b, b, index_t(c), n });
+  for (auto [c, s, b, r] : { In{ 7, 1, 1, base }, In{ 2, 2, 0, base } })
+    q.push({ c, s, r, b, b, index_t(c), index_t(s) });
   q.seal(2);
-  struct Got
-  {
-    SuperstepKey key;
-    std::vector<index_t> candidates;
-    std::size_t entries;
-    bool operator==(const Got& o) const
-    {
-      return key == o.key && candidates == o.candidates && entries == o.entries;
-    }
-  };
-  std::vector<Got> got;
+  using P = std::vector<std::pair<std::int64_t, std::int64_t>>;
+  std::vector<std::pair<SuperstepKey, P>> got;
   for (SuperstepKey key; (key = q.top()) != SuperstepQueue::none;)
   {
-    Superstep g;
+    std::size_t b, e;
     SuperstepKey later = key;
     ++later[2];
-    ASSERT_FALSE(q.pop(later, g)); // only the lowest key pops
-    ASSERT_TRUE(q.pop(key, g));
-    got.push_back({ key, {}, g.entries });
-    for (std::size_t k = g.begin; k < g.end; ++k)
-      got.back().candidates.push_back(q.entries()[k].vertex);
+    ASSERT_FALSE(q.pop(later, b, e)); // only the lowest key pops
+    ASSERT_TRUE(q.pop(key, b, e));
+    got.push_back({ key, {} });
+    for (std::size_t k = b; k < e; ++k)
+      got.back().second.push_back({ q.entries()[k].vertex, q.entries()[k].sponsor });
   }
-  const std::vector<Got> expected = { { SuperstepQueue::key(0, base, 2), { 2 }, 3 },
-    { SuperstepQueue::key(1, base, 1), { 3 }, 2 }, { SuperstepQueue::key(1, base, 2), { 7 }, 1 },
-    { SuperstepQueue::key(1, early, 1), { 50 }, 1 }, { SuperstepQueue::key(1, late, 1), { 60 }, 1 },
-    { SuperstepQueue::key(2, base, 1), { 1, 9 }, 3 } };
-  EXPECT_TRUE(got == expected);
+  const std::vector<std::pair<SuperstepKey, P>> expected = { { SuperstepQueue::key(0, base, 2),
+                                                               { { 2, 2 } } },
+    { SuperstepQueue::key(1, base, 1), { { 3, 1 }, { 3, 8 } } },
+    { SuperstepQueue::key(1, base, 2), { { 7, 1 } } },
+    { SuperstepQueue::key(1, early, 1), { { 50, 7 } } },
+    { SuperstepQueue::key(1, late, 1), { { 60, 7 } } },
+    { SuperstepQueue::key(2, base, 1), { { 1, 5 }, { 9, 2 }, { 9, 4 } } } };
+  EXPECT_EQ(got, expected);
   const SuperstepRoot negative{ 7, -12 };
   EXPECT_EQ(SuperstepQueue::root_of(SuperstepQueue::key(3, negative, 4)).gid, -12);
   q.clear();
   EXPECT_EQ(q.top(), SuperstepQueue::none);
   // Chains rely on generations growing: a seal that does not is refused.
-  q.push({ 1, base, 0, 0, 1 });
+  q.push({ 1, 2, base, 0, 0, 1, 2 });
   q.seal(5);
-  q.push({ 3, base, 0, 0, 3 });
+  q.push({ 3, 2, base, 0, 0, 3, 2 });
   EXPECT_THROW(q.seal(5), std::invalid_argument);
 }
 
 // The queue sorts a generation by a cheap 64-bit word (order hint, candidate id), radix
 // or insertion, and checks the result on the full key, falling back to a comparison
-// sort. Whatever the path, the groups and their candidates must be the full key's order:
-// compared here with a std::map over (band, root, generation | c id, vertex) on random
-// generations of 1 to 2,000 candidates (every sort path), with the hint
+// sort. Whatever the path, the groups and their entries must be the full key's order:
+// compared here with a std::map over (band, root, generation | c id, s id, vertex,
+// sponsor) on random generations of 1 to 2,000 entries (both sort paths), with the hint
 // right (the band's rank), constant, or reversed, ids of a small or the full 64-bit
-// range (the word does not fit), roots shared, per candidate, mixed, duplicated
-// candidate ids on different vertices, and generations pushed nearly sorted.
+// range (the word does not fit), roots shared, per candidate, mixed, and duplicated
+// (candidate, sponsor) ids on different vertices.
 TEST(CandidateQueue, SuperstepOrderIsTheFullKeysWhateverTheSortPath)
 {
   std::mt19937_64 rng(14);
   using Full = std::tuple<std::uint32_t, std::uint32_t, std::int64_t, std::uint32_t, std::int64_t,
-    index_t>; // band, root, generation, candidate id, vertex
+    std::int64_t, index_t, index_t>; // band, root, generation, ids, vertex, sponsor
   for (int trial = 0; trial < 60; ++trial)
   {
     const int hint = trial % 3; // 0: rank of the band, 1: constant, 2: reversed
@@ -101,20 +95,21 @@ TEST(CandidateQueue, SuperstepOrderIsTheFullKeysWhateverTheSortPath)
       {
         const std::uint32_t band_rank = std::uint32_t(rng() % 4);
         const std::uint32_t band = 0x3e800000u + band_rank * 0x100000u;
-        std::int64_t c = std::int64_t(rng() % 300);
-        if (trial % 6 == 5) // nearly sorted: ids grow with a little jitter
-          c = std::int64_t(i) + std::int64_t(rng() % 5);
+        std::int64_t c = std::int64_t(rng() % 300), s = std::int64_t(rng() % 300);
         if (wide)
+        {
           c = std::int64_t(rng());
+          s = std::int64_t(rng());
+        }
         SuperstepRoot root{ 2, 77 };
         if (roots == 1 || (roots > 1 && rng() % 3 == 0))
           root = { generation, c };
         if (roots > 2 && rng() % 4 == 0)
           root = {};
         const std::uint32_t order = hint == 0 ? band_rank : (hint == 1 ? 0 : 3 - band_rank);
-        const index_t vertex = index_t(rng() % 1000);
-        q.push({ c, root, band, order, vertex });
-        const Full full{ band, root.generation, root.gid, generation, c, vertex };
+        const index_t vertex = index_t(rng() % 1000), sponsor = index_t(rng() % 1000);
+        q.push({ c, s, root, band, order, vertex, sponsor });
+        const Full full{ band, root.generation, root.gid, generation, c, s, vertex, sponsor };
         ++expected[full];
       }
       q.seal(generation);
@@ -125,21 +120,20 @@ TEST(CandidateQueue, SuperstepOrderIsTheFullKeysWhateverTheSortPath)
     std::vector<Full> got;
     for (SuperstepKey key; (key = q.top()) != SuperstepQueue::none;)
     {
-      Superstep g;
-      ASSERT_TRUE(q.pop(key, g));
-      ASSERT_LT(g.begin, g.end);
-      ASSERT_EQ(g.entries, g.end - g.begin);
+      std::size_t b, e;
+      ASSERT_TRUE(q.pop(key, b, e));
+      ASSERT_LT(b, e);
       const SuperstepRoot root = SuperstepQueue::root_of(key);
-      for (std::size_t i = g.begin; i < g.end; ++i)
+      for (std::size_t i = b; i < e; ++i)
         got.push_back({ std::uint32_t(key[0] >> 32), root.generation, root.gid,
-          std::uint32_t(key[2]), 0, q.entries()[i].vertex });
+          std::uint32_t(key[2]), 0, 0, q.entries()[i].vertex, q.entries()[i].sponsor });
     }
     ASSERT_EQ(got.size(), want.size());
     for (std::size_t i = 0; i < got.size(); ++i)
     {
-      // The popped candidates carry the vertex only: compare it and the group.
+      // The popped entries carry (vertex, sponsor) only: compare those and the group.
       Full w = want[i];
-      std::get<4>(w) = 0;
+      std::get<4>(w) = std::get<5>(w) = 0;
       ASSERT_EQ(got[i], w) << "trial " << trial << " entry " << i;
     }
   }

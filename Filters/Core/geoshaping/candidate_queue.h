@@ -96,45 +96,42 @@ public:
 // g <= t: they never join the superstep that creates them, so the deformer queues them
 // after it ("seal").
 //
-// The queue holds candidates, not entries: the sponsors of one generation are the
-// vertices moved in one superstep, which share a band and a root, so all the entries of
-// a candidate in a generation fall in one group. A pushed candidate carries how many
-// entries it stands for and an opaque word (the deformer's: the head of its list of
-// sponsors, kept in sponsor id order as they are pushed).
-//
 // band is the bit pattern of a float in [0, 1] (+0 for -0), whose unsigned order is the
 // numeric order, so pieces with different sets of malleability values agree on it.
 //
-// Cost: a frame of K pushed candidates (K <= the sum of the degrees of the moved
-// vertices) filed in S supersteps with R distinct (band, root)s costs O(K + S + R log R)
-// time in the usual case, O(K log K + S + R log R) at worst; memory is 8 K bytes, plus
-// 56 bytes per candidate of the largest generation (scratch), plus 40 bytes per pending
-// group and ~60 per (band, root). How, for the k candidates of one generation (seal):
+// Cost: a frame of P pushes (P <= the sum of the degrees of the moved vertices) filed
+// in S supersteps with R distinct (band, root)s costs O(P + S + R log R) time in the
+// usual case, O(P log P + S + R log R) at worst; memory is 8 P bytes, plus 80 bytes per
+// entry of the largest generation (scratch), plus 40 bytes per pending group and ~60
+// per (band, root). How, for the k entries of one generation (seal):
 //
-// 1. They wait in a scratch buffer reused between generations and frames.
+// 1. They wait in a scratch buffer reused between generations and frames (its size is
+//    the largest generation, not P).
 // 2. k <= 16 (most FIFO Priority supersteps move 1-3 vertices): insertion sort on the
-//    full key below. Otherwise a cheap order on the 64-bit word
+//    full key below. Otherwise a cheap order: a stable LSD radix sort (passes of at
+//    most 11 bits) of the 64-bit word
 //      (order - min order) << b | (c id - min c id),   b = bit width of the c id range,
 //    `order` being any integer non-decreasing in band (the deformer passes the rank of
-//    the malleability among the piece's distinct values): insertion sort while it makes
-//    few moves (a generation arrives nearly sorted: the neighbours of vertices taken in
-//    id order), else a stable LSD radix sort (passes of at most 11 bits). O(k) for ids
-//    spanning less than 2^(64 - order bits); when the word does not fit in 64 bits, a
-//    comparison sort on the full key, O(k log k).
-// 3. Check: adjacent candidates in full-key order (band, root, c id, then vertex for
-//    duplicated ids). It holds when, within a band, the roots are all one root or all
-//    the candidates' own (generation, c id), which is every generation the deformer
-//    seals (an entry's root follows from its band alone: same band as the sponsors:
-//    theirs; lower: its own; higher: the base). Otherwise a comparison sort on the full
-//    key, O(k log k): the order is the full key's whatever the path.
-// 4. The sorted candidates, 8 bytes each, are appended to the pool, one group per
-//    (band, root). Groups are chained per (band, root) in filing order, which is their
-//    key order since generations only grow; a binary heap holds the chains, whose order
-//    is their (band, root) and never changes. A superstep continuing its own chain (the
-//    common case) pops and files without heap work; a new (band, root) costs a hash-map
-//    insert and O(log C) for C chains with pending groups.
+//    the malleability among the piece's distinct values); then each run of one word
+//    (one candidate) by sponsor id, by insertion (a run is at most c's degree long).
+//    O(k) for ids spanning less than 2^(64 - order bits) (two passes below 2^22); when
+//    the word does not fit in 64 bits, a comparison sort on the full key, O(k log k).
+// 3. Check: adjacent entries in full-key order (band, root, c id, s id, then vertex and
+//    sponsor for duplicated ids). It holds when, within a band, the roots are all one
+//    root or all the candidates' own (generation, c id), which is every generation the
+//    deformer seals: one superstep's moved vertices share a band and a root, so an
+//    entry's root follows from its band alone (same band: theirs; lower: its own;
+//    higher: the base). Otherwise (a caller mixing sponsors of different bands or roots
+//    in one generation, or a wrong `order`) a comparison sort on the full key,
+//    O(k log k): the order is the full key's whatever the path.
+// 4. The sorted (vertex, sponsor) pairs, 8 bytes each, are appended to the pool, one
+//    group per (band, root). Groups are chained per (band, root) in filing order, which
+//    is their key order since generations only grow; a binary heap holds the chains,
+//    whose order is their (band, root) and never changes. A superstep continuing its
+//    own chain (the common case) pops and files without heap work; a new (band, root)
+//    costs a hash-map insert and O(log C) for C chains with pending groups.
 //
-// The pool holds the whole frame's candidates (groups pop in key order, not in filing
+// The pool holds the whole frame's entries (groups pop in key order, not in filing
 // order); pool, scratch and heap keep their capacity between frames.
 struct SuperstepRoot
 {
@@ -149,26 +146,17 @@ struct SuperstepRoot
 struct SuperstepEntry
 {
   std::int64_t candidate_gid;
+  std::int64_t sponsor_gid;
   SuperstepRoot root;
   std::uint32_t band;
-  std::uint32_t order;        // non-decreasing in band (a hint for the cheap sort; 0 if unknown)
-  index_t vertex;             // the candidate (the deformer's internal id)
-  std::uint32_t entries = 1;  // (candidate, sponsor) entries it stands for
-  std::uint32_t sponsors = 0; // opaque, popped with the vertex (as Candidate::sponsor)
+  std::uint32_t order; // non-decreasing in band (a hint for the cheap sort; 0 if unknown)
+  index_t vertex;      // the candidate (the deformer's internal id)
+  index_t sponsor;     // the sponsor's slot
 };
 
 // (band, root, generation) as three words compared in lexicographic order, so pieces
 // can reduce it as plain integers.
 using SuperstepKey = std::array<std::uint64_t, 3>;
-
-// A popped group: its candidates are entries()[begin, end) (vertex and the opaque
-// word), sorted by (candidate id, vertex), valid until the next seal; `entries` the
-// (candidate, sponsor) entries they stand for.
-struct Superstep
-{
-  std::size_t begin = 0, end = 0;
-  std::size_t entries = 0;
-};
 
 class SuperstepQueue
 {
@@ -184,13 +172,21 @@ public:
     return { std::uint32_t(k[0]), std::int64_t(k[1] ^ (std::uint64_t(1) << 63)) };
   }
   void push(const SuperstepEntry& e) { pending_.push_back(e); }
-  // A new entry to fill in place.
-  SuperstepEntry& emplace() { return pending_.emplace_back(); }
-  // The candidates pushed since the last seal (to count more entries for one of them).
-  std::size_t pending_size() const { return pending_.size(); }
-  SuperstepEntry& pending(std::size_t i) { return pending_[i]; }
-  // Files the candidates pushed since the last seal as `generation`, which must exceed
-  // the previous seal's since clear() (std::invalid_argument otherwise).
+  // The same, written in place (no entry copied through the stack).
+  void push(std::int64_t candidate_gid, std::int64_t sponsor_gid, const SuperstepRoot& root,
+    std::uint32_t band, std::uint32_t order, index_t vertex, index_t sponsor)
+  {
+    SuperstepEntry& e = pending_.emplace_back();
+    e.candidate_gid = candidate_gid;
+    e.sponsor_gid = sponsor_gid;
+    e.root = root;
+    e.band = band;
+    e.order = order;
+    e.vertex = vertex;
+    e.sponsor = sponsor;
+  }
+  // Files the entries pushed since the last seal as `generation`, which must exceed the
+  // previous seal's since clear() (std::invalid_argument otherwise).
   void seal(std::uint32_t generation);
   // The lowest pending key, `none` when nothing is pending (drops finished chains: not
   // safe to call from two threads at once).
@@ -199,8 +195,9 @@ public:
     drop_done_chains();
     return heap_.empty() ? none : groups_[chains_[heap_.front()].head].key;
   }
-  // Removes the group `key` if it is the lowest.
-  bool pop(const SuperstepKey& key, Superstep& out);
+  // Removes the group `key` if it is the lowest: its entries are entries()[begin, end),
+  // sorted by (candidate id, sponsor id), valid until the next seal.
+  bool pop(const SuperstepKey& key, std::size_t& begin, std::size_t& end);
   const Candidate* entries() const { return pool_.data(); }
   // Empties the queue, keeping the buffers.
   void clear();
@@ -221,8 +218,7 @@ private:
   {
     SuperstepKey key;
     std::uint32_t begin, end; // in pool_, which holds fewer than 2^32 entries (checked)
-    std::uint32_t entries;
-    std::uint32_t next; // the chain's next group, nil at its tail
+    std::uint32_t next;       // the chain's next group, nil at its tail
   };
   // The groups of one (band, root) in filing order, which is their key order: a seal's
   // generation exceeds every earlier one. Chains differ in (band, root), so their order

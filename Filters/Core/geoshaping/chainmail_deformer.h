@@ -281,11 +281,10 @@ private:
   };
 
   template<ValidRegionFrame Frame>
-  void examine(const Superstep& group, const SuperstepRoot& root);
+  std::size_t examine(std::size_t begin, std::size_t end, const SuperstepRoot& root);
   // Where candidate c must move given sponsor s moved by sponsor_u (see propagate()).
-  // Inlined into the loops that call it: a call costs as much as the box.
   template<ValidRegionFrame Frame>
-  [[gnu::always_inline]] Eigen::Vector3d required_displacement(
+  Eigen::Vector3d required_displacement(
     const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const;
   void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,
     const SuperstepRoot& root = {});
@@ -335,21 +334,6 @@ private:
   std::vector<std::uint8_t> sliding_;       // by internal id; empty when none
   double last_fraction_ = 1.0;              // of the last gated move
   std::size_t blocked_ = 0;
-  // By internal id: mark_base_ + its index among the candidates pushed in the current
-  // end_superstep(), so each is pushed once; older values are below mark_base_.
-  std::vector<std::uint32_t> mark_;
-  std::uint32_t mark_base_ = 1;
-  // A queued candidate's sponsors: a list in sponsor id order through `links_` (the
-  // frame's, by push), headed by the candidate's Candidate::sponsor; `tails_` by index
-  // among the candidates pushed in the current end_superstep().
-  struct SponsorLink
-  {
-    index_t slot;       // the sponsor's
-    std::uint32_t next; // nil_link at the end
-  };
-  static constexpr std::uint32_t nil_link = ~std::uint32_t(0);
-  std::vector<SponsorLink> links_;
-  std::vector<std::uint32_t> tails_;
   std::uint32_t superstep_ = 0;     // the current superstep of the frame
   std::size_t superstep_begin_ = 0; // slot of its first move
 };
