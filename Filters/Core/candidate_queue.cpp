@@ -79,13 +79,13 @@ bool SuperstepQueue::sort_cheaply()
                     (std::uint64_t(e.candidate_gid) - std::uint64_t(min_id)),
       std::uint32_t(i) };
   }
-  if (k < 64) // insertion sort: stable, and cheaper than the counters of a radix pass
-  {
-    for (std::size_t i = 1; i < k; ++i)
-      for (std::size_t j = i; j > 0 && words_[j].key < words_[j - 1].key; --j)
-        std::swap(words_[j], words_[j - 1]);
-  }
-  else
+  // Insertion sort while it makes few moves (a generation comes nearly sorted: the
+  // neighbours of vertices taken in id order); past the budget a radix sort of all.
+  std::size_t moves = 0, i = 1;
+  for (const std::size_t budget = 4 * k; i < k && moves <= budget; ++i)
+    for (std::size_t j = i; j > 0 && words_[j].key < words_[j - 1].key; --j, ++moves)
+      std::swap(words_[j], words_[j - 1]);
+  if (i < k)
   {
     // LSD radix sort: ceil(bits / 11) stable counting passes of equal width (at most
     // 2^11 counters), a pass skipped when its digit is the same in all words.
@@ -97,15 +97,15 @@ bool SuperstepQueue::sort_cheaply()
     for (int shift = 0; shift < bits; shift += width)
     {
       std::fill(count_.begin(), count_.end(), 0);
-      for (std::size_t i = 0; i < k; ++i)
-        ++count_[(words_[i].key >> shift) & mask];
+      for (std::size_t w = 0; w < k; ++w)
+        ++count_[(words_[w].key >> shift) & mask];
       if (count_[(words_[0].key >> shift) & mask] == k)
         continue;
       std::uint32_t sum = 0;
       for (std::uint32_t& c : count_)
         sum += std::exchange(c, sum);
-      for (std::size_t i = 0; i < k; ++i)
-        scratch_[count_[(words_[i].key >> shift) & mask]++] = words_[i];
+      for (std::size_t w = 0; w < k; ++w)
+        scratch_[count_[(words_[w].key >> shift) & mask]++] = words_[w];
       words_.swap(scratch_);
     }
   }

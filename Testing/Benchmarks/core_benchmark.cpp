@@ -11,17 +11,23 @@
 // displaced region (1: it stops the vertices beyond it) and the same fault out of reach
 // (2: the gate's queries alone); BM_ObstacleBuild: the fault's tree, built once per
 // obstacle geometry.
+// BM_CoreVsNaive: the core's FIFO / FIFO Priority frame against the naive reference
+// (naive_chainmail.h, FIFO / FIFO-PQ) on one 1001 x 1001 painted grid, 10^3 to 10^6
+// displaced, timed interleaved (core, naive, core, ...) in thread CPU time: `speedup` =
+// naive / core.
 // BM_Envelope: the envelope refinement (ProjectionSolver::envelope, Axes) after the FIFO
 // Priority frame at the paper's scale, timed the same way (frame, envelope, frame, ...).
 #include "bench_scenes.h"
 #include "geoshaping/link_projection.h"
 #include "geoshaping/relaxation.h"
 #include "geoshaping/sample_scenes.h"
+#include "naive_chainmail.h"
 #include "test_sheets.h"
 
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <ctime>
 
 #include <map>
 #include <memory>
@@ -285,6 +291,65 @@ void BM_ObstacleBuild(benchmark::State& state)
   state.counters["bytes"] = double(o.memory_bytes());
 }
 
+// This thread's CPU time: on a loaded machine it leaves out the time other processes ran.
+double thread_seconds()
+{
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+void BM_CoreVsNaive(benchmark::State& state)
+{
+  struct NaiveScene
+  {
+    geoshaping::testing::Mesh mesh;
+    std::vector<float> m;
+    ChainMailDeformer core;
+    std::unique_ptr<bench::NaiveChainMail> naive;
+    index_t grasp = 0;
+    double pull = 0.0;
+  };
+  static std::map<std::size_t, std::unique_ptr<NaiveScene>> cache;
+  const auto queue = static_cast<QueueKind>(state.range(0));
+  const std::size_t target = std::size_t(state.range(1));
+  std::unique_ptr<NaiveScene>& s = cache[target];
+  if (!s)
+  {
+    constexpr index_t side = 1001;
+    s = std::make_unique<NaiveScene>();
+    s->mesh = bench::painted_grid(side, s->m);
+    s->core.set_mesh(s->mesh.xyz.data(), s->mesh.size(), s->mesh.adjacency);
+    s->core.set_malleability(s->m.data());
+    s->naive = std::make_unique<bench::NaiveChainMail>(
+      s->mesh.xyz.data(), s->mesh.adjacency, s->m.data(), s->core.transfer_function());
+    s->grasp = (side / 2) * side + side / 2;
+    s->pull = bench::pull_for_count(s->core, s->grasp, target);
+  }
+  s->core.set_queue(queue);
+  const bool banded = queue == QueueKind::fifo_priority;
+  const Eigen::Vector3d d(0.0, 0.0, s->pull);
+  double core_s = 0.0, naive_s = 0.0;
+  std::size_t core_moved = 0, naive_moved = 0;
+  for (auto _ : state)
+  {
+    const double t0 = thread_seconds();
+    core_moved = s->core.deform(s->grasp, d).moved;
+    const double t1 = thread_seconds();
+    naive_moved = s->naive->deform(s->grasp, d, banded);
+    const double t2 = thread_seconds();
+    core_s += t1 - t0;
+    naive_s += t2 - t1;
+  }
+  const double n = double(state.iterations());
+  state.counters["displaced"] = double(core_moved);
+  state.counters["naive_displaced"] = double(naive_moved);
+  state.counters["core_ms"] = 1e3 * core_s / n;
+  state.counters["naive_ms"] = 1e3 * naive_s / n;
+  state.counters["speedup"] = naive_s / core_s;
+  state.SetLabel(std::string(queue_name(queue)) + " vs naive");
+}
+
 void TableArgs(benchmark::internal::Benchmark* b)
 {
   for (int q = 0; q < 4; ++q)
@@ -304,6 +369,11 @@ BENCHMARK(BM_BfsFloor)
   ->ArgsProduct({ { 0 }, { 9152, 14088, 17289, 18225, 29241, 1000000 } })
   ->Unit(benchmark::kMillisecond)
   ->MinTime(0.2);
+
+BENCHMARK(BM_CoreVsNaive)
+  ->ArgsProduct({ { 0, 2 }, { 1000, 3000, 10000, 30000, 100000, 300000, 1000000 } })
+  ->Unit(benchmark::kMillisecond)
+  ->MinTime(0.5);
 
 BENCHMARK(BM_Relaxation)
   ->ArgsProduct({ { 0, 29241 }, { 1, 10, 100 } })

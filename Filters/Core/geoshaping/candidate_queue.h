@@ -108,14 +108,16 @@ public:
 // 1. They wait in a scratch buffer reused between generations and frames (its size is
 //    the largest generation, not P).
 // 2. k <= 16 (most FIFO Priority supersteps move 1-3 vertices): insertion sort on the
-//    full key below. Otherwise a cheap order: a stable LSD radix sort (passes of at
-//    most 11 bits) of the 64-bit word
+//    full key below. Otherwise a cheap order of the 64-bit word
 //      (order - min order) << b | (c id - min c id),   b = bit width of the c id range,
 //    `order` being any integer non-decreasing in band (the deformer passes the rank of
-//    the malleability among the piece's distinct values); then each run of one word
-//    (one candidate) by sponsor id, by insertion (a run is at most c's degree long).
-//    O(k) for ids spanning less than 2^(64 - order bits) (two passes below 2^22); when
-//    the word does not fit in 64 bits, a comparison sort on the full key, O(k log k).
+//    the malleability among the piece's distinct values): insertion sort while it has
+//    made at most 4 k moves (a generation comes nearly sorted, the neighbours of
+//    vertices taken in id order), past that a stable LSD radix sort (passes of at most
+//    11 bits); then each run of one word (one candidate) by sponsor id, by insertion (a
+//    run is at most c's degree long). O(k) for ids spanning less than
+//    2^(64 - order bits) (two passes below 2^22); when the word does not fit in 64
+//    bits, a comparison sort on the full key, O(k log k).
 // 3. Check: adjacent entries in full-key order (band, root, c id, s id, then vertex and
 //    sponsor for duplicated ids). It holds when, within a band, the roots are all one
 //    root or all the candidates' own (generation, c id), which is every generation the
