@@ -31,6 +31,17 @@ double coupling_stiffness(
   return limits.max_stiffness * (params.rigid_fraction * (1.0 - m) + params.soft_fraction * m);
 }
 
+void hold_grasp_back(SceneSnapshot& scene, const Eigen::Vector3d& stopped,
+  const ForceParams& params, const DeviceLimits& limits)
+{
+  if (!scene.grasping || !stopped.allFinite() || !(scene.grasp_stiffness > 0.0))
+    return;
+  const double k_g = scene.grasp_stiffness;
+  const double k_w = std::max(k_g, coupling_stiffness(0.0, params, limits));
+  scene.grasp_anchor = stopped + (k_g / k_w) * (scene.grasp_anchor - stopped);
+  scene.grasp_stiffness = k_w;
+}
+
 namespace
 {
 

@@ -350,8 +350,7 @@ public:
   /// the sliding mask (input array 2) lands on the obstacle point nearest its target,
   /// so it stays on the obstacle while it moves along it. The triangles' tree is built
   /// once per obstacle geometry. Refused with an error (output = input): an obstacle with
-  /// non-finite points or no triangle, obstacles with RefinementIterations or
-  /// RelaxationIterations above 0, obstacles on more than one process, a sliding mask
+  /// non-finite points or no triangle, obstacles on more than one process, a sliding mask
   /// that is not numeric point data with one value per point.
   void AddObstacleConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
   void SetObstacleConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }

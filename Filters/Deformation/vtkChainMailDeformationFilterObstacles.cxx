@@ -31,14 +31,6 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
     state.ObstacleSources.clear();
     return true;
   }
-  if (this->RefinementIterations > 0 || this->RelaxationIterations > 0)
-  {
-    // The passes do not know the obstacles: they could move a vertex through one.
-    vtkErrorMacro("Obstacles with RefinementIterations or RelaxationIterations above 0 are "
-                  "not supported (the passes could move a vertex through an obstacle); "
-                  "output is the undeformed input.");
-    return false;
-  }
   if (!state.Deformer.set_obstacle_clearance(this->ObstacleClearance))
   {
     vtkErrorMacro("ObstacleClearance " << this->ObstacleClearance

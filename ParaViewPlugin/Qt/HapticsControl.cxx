@@ -144,6 +144,17 @@ HandActions HandController::update(const StylusState& stylus, const Brush& brush
   return actions;
 }
 
+bool stopped_grasp(const Eigen::Vector3d& press, const Eigen::Vector3d& displacement,
+  double fraction, const Eigen::Vector3d* moved, Eigen::Vector3d& stopped)
+{
+  if (!(fraction < 1.0) || !(fraction >= 0.0))
+  {
+    return false;
+  }
+  stopped = press + (moved ? *moved : Eigen::Vector3d(fraction * displacement));
+  return stopped.allFinite();
+}
+
 double StylusPalette::update(bool button, const Eigen::Vector3d& stylus, double workspace_radius)
 {
   constexpr double none = std::numeric_limits<double>::quiet_NaN();

@@ -128,6 +128,17 @@ private:
   BrushStroke stroke_;
 };
 
+// Where a grasp an obstacle held back is, on the stylus's side, in the coordinates of
+// the object (docs/obstacles.md, docs/interactor.md "Forces"): `press` (the stylus at the
+// press) moved by what the grasp made of `displacement` in the filter's last update.
+// `fraction` is that update's LastGraspObstacleFraction: NaN (no grasp yet) or >= 1 (the
+// grasp went where the stylus put it) return false, and the coupling stays as it is.
+// `moved`, when known, is the grasped vertex's output position minus its position at the
+// press (builtin sessions; a sliding grasp's landed point included); otherwise the grasp
+// made fraction x displacement. Non-finite inputs return false.
+bool stopped_grasp(const Eigen::Vector3d& press, const Eigen::Vector3d& displacement,
+  double fraction, const Eigen::Vector3d* moved, Eigen::Vector3d& stopped);
+
 // The 3D palette near the stylus: 11 swatches of malleability 0, 0.1 ... 1 that appear
 // while the stylus's second button is held, in a row along the device's x axis (the
 // screen's right) 1 cm apart, 2 cm above (device y, the screen's up) where the button

@@ -41,6 +41,9 @@ struct pqHapticsInteractor::Hand
   double recordedUntil = -1.0;          // t of the last recorded sample
   std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
   Eigen::Vector3d anchor = Eigen::Vector3d::Zero(); // device frame
+  Eigen::Vector3d press = Eigen::Vector3d::Zero();  // the stylus at the press, object frame
+  bool pressVertexKnown = false; // builtin: the grasped vertex as shown at the press
+  Eigen::Vector3d pressVertex = Eigen::Vector3d::Zero();
   double stiffness = 0.0;
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkPolyDataMapper> mapper;
@@ -255,6 +258,8 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
     }
     if (hand.device)
     {
+      hand.press = actions.grasp_position;
+      hand.pressVertexKnown = this->Proxies.shownGraspedVertex(hand.pressVertex);
       const Eigen::Vector3d world =
         (this->Proxies.objectMatrix() * actions.grasp_position.homogeneous()).hnormalized();
       hand.anchor = hand.mapping.to_device(world);
@@ -400,6 +405,23 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   }
   scene.grasp_anchor = hand.anchor;
   scene.grasp_stiffness = hand.stiffness;
+  // An obstacle held the grasp back in the last update (which ran with
+  // RenderedDisplacement): the coupling pulls toward where the grasp stopped.
+  double fraction = 1.0;
+  Eigen::Vector3d moved = Eigen::Vector3d::Zero(), stopped;
+  if (scene.grasping && this->Proxies.lastGraspObstacleFraction(fraction))
+  {
+    const bool known = hand.pressVertexKnown && this->Proxies.shownGraspedVertex(moved);
+    moved -= hand.pressVertex;
+    if (interactor::stopped_grasp(
+          hand.press, this->RenderedDisplacement, fraction, known ? &moved : nullptr, stopped))
+    {
+      haptics::hold_grasp_back(scene,
+        hand.mapping.to_device(
+          (this->Proxies.objectMatrix() * stopped.homogeneous()).hnormalized()),
+        haptics::ForceParams(), hand.device->limits());
+    }
+  }
   // Contact: the surfaces near the stylus, in the device frame, in any winding (the
   // servo's proxy keeps the side the stylus came from). The shape being dragged is left
   // out while any hand drags it (the stylus would fight its own grasp, and its locator
@@ -497,6 +519,7 @@ void pqHapticsInteractor::onFrame()
   this->Stats.maxContactTriangles =
     std::max(this->Stats.maxContactTriangles, this->Stats.contactTriangles);
   this->Proxies.render();
+  this->RenderedDisplacement = this->LastDisplacement;
   this->updateFigures();
   Q_EMIT this->frameDone();
 }

@@ -147,6 +147,7 @@ private:
   geoshaping::interactor::PullConstraint Pull = geoshaping::interactor::PullConstraint::view_plane;
   Figures Stats;
   Eigen::Vector3d LastDisplacement = Eigen::Vector3d::Zero();
+  Eigen::Vector3d RenderedDisplacement = Eigen::Vector3d::Zero(); // of the last render
   Eigen::Matrix4d HoldStart = Eigen::Matrix4d::Identity();
   std::chrono::steady_clock::time_point FpsSince;
   std::chrono::steady_clock::time_point LastFrameEnd;

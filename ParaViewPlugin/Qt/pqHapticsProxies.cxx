@@ -584,6 +584,22 @@ bool pqHapticsProxies::lastGraspMalleability(double& malleability) const
   return true;
 }
 
+bool pqHapticsProxies::lastGraspObstacleFraction(double& fraction) const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (!proxy || !proxy->GetProperty("LastGraspObstacleFraction"))
+  {
+    return false;
+  }
+  proxy->UpdatePropertyInformation();
+  if (vtkSMPropertyHelper(proxy, "LastGraspPointId").GetAsIdType() < 0)
+  {
+    return false;
+  }
+  fraction = vtkSMPropertyHelper(proxy, "LastGraspObstacleFraction").GetAsDouble();
+  return true;
+}
+
 double pqHapticsProxies::lastDeformationMilliseconds() const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;

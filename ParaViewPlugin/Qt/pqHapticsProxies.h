@@ -108,6 +108,9 @@ public:
   // The malleability the filter's last update used at the grasped vertex, read from
   // the server (works against a remote server); false while there is no grasp yet.
   bool lastGraspMalleability(double& malleability) const;
+  // LastGraspObstacleFraction of the filter's last update, read from the server; false
+  // while there is no grasp yet.
+  bool lastGraspObstacleFraction(double& fraction) const;
 
   double lastDeformationMilliseconds() const;
   long long numberOfDisplacedPoints() const;

@@ -248,3 +248,27 @@ TEST(StylusPalette, StaysInsideTheWorkspace)
     EXPECT_DOUBLE_EQ(StylusPalette::value(i), i / 10.0);
   }
 }
+
+TEST(StoppedGrasp, AGraspHeldBackIsWhereItStoppedNotWhereTheStylusPutIt)
+{
+  const Vector3d press(1, 2, 3), displacement(10, 0, -4);
+  Vector3d stopped;
+  ASSERT_TRUE(stopped_grasp(press, displacement, 0.25, nullptr, stopped));
+  EXPECT_EQ(stopped, Vector3d(3.5, 2, 2));
+  // A sliding grasp lands off its straight path: the output says where.
+  const Vector3d landed(2, 0.5, -1);
+  ASSERT_TRUE(stopped_grasp(press, displacement, 0.5, &landed, stopped));
+  EXPECT_EQ(stopped, Vector3d(3, 2.5, 2));
+  // Stopped on the obstacle at the press.
+  ASSERT_TRUE(stopped_grasp(press, displacement, 0.0, nullptr, stopped));
+  EXPECT_EQ(stopped, press);
+}
+
+TEST(StoppedGrasp, AFreeGraspOrNoGraspLeavesTheCouplingAsItIs)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Vector3d stopped(7, 7, 7);
+  EXPECT_FALSE(stopped_grasp(Vector3d::Zero(), Vector3d(1, 0, 0), 1.0, nullptr, stopped));
+  EXPECT_FALSE(stopped_grasp(Vector3d::Zero(), Vector3d(1, 0, 0), nan, nullptr, stopped));
+  EXPECT_FALSE(stopped_grasp(Vector3d(nan, 0, 0), Vector3d(1, 0, 0), 0.5, nullptr, stopped));
+}

@@ -71,6 +71,42 @@ TEST(ForceModel, CouplingPullsTowardTheAnchorInProportionToTheDeformation)
   EXPECT_EQ(one.force.y(), 0.0);
 }
 
+TEST(ForceModel, AGraspHeldBackByAnObstaclePullsTowardWhereItStopped)
+{
+  const DeviceLimits limits; // k_max 1000 N/m: rigid coupling 800, soft 150
+  const ForceParams params;
+  // Soft grasp at the origin; the stylus 3 mm along x; an obstacle dipping across the
+  // drag stopped the grasp (it slid) at (1, 0.5, 0) mm.
+  const Eigen::Vector3d x(0.003, 0, 0), stopped(0.001, 0.0005, 0);
+  const SceneSnapshot free = grasp(Eigen::Vector3d::Zero(), 150.0);
+  SceneSnapshot held = free;
+  hold_grasp_back(held, stopped, params, limits);
+  const ForceResult before = compute_force(at(x), free, params, limits);
+  const ForceResult after = compute_force(at(x), held, params, limits);
+  // Without the rule: straight back along the drag, as if nothing were in the way.
+  EXPECT_NEAR(before.force.x(), -0.45, 1e-12);
+  EXPECT_EQ(before.force.y(), 0.0);
+  // With it: 150 (0 - stopped) + 800 (stopped - x), computed here term by term.
+  const Eigen::Vector3d expected = 150.0 * (-stopped) + 800.0 * (stopped - x);
+  EXPECT_NEAR(after.force.x(), expected.x(), 1e-12); // -1.75 N
+  EXPECT_NEAR(after.force.y(), expected.y(), 1e-12); // +0.325 N: toward the stopped grasp
+  EXPECT_GT(after.force.y(), 0.0);
+  // At the stopped grasp only the deformation made pulls.
+  const ForceResult there = compute_force(at(stopped), held, params, limits);
+  EXPECT_NEAR((there.force - 150.0 * (-stopped)).norm(), 0.0, 1e-12);
+  // A rigid grasp keeps its own stiffness; no grasp or a NaN stop changes nothing.
+  SceneSnapshot rigid = grasp(Eigen::Vector3d::Zero(), 900.0);
+  hold_grasp_back(rigid, stopped, params, limits);
+  EXPECT_EQ(rigid.grasp_stiffness, 900.0);
+  SceneSnapshot none = fresh_scene();
+  hold_grasp_back(none, stopped, params, limits);
+  EXPECT_FALSE(none.grasping);
+  SceneSnapshot nan = free;
+  hold_grasp_back(nan, Eigen::Vector3d(not_a_number, 0, 0), params, limits);
+  EXPECT_EQ(nan.grasp_anchor, free.grasp_anchor);
+  EXPECT_EQ(nan.grasp_stiffness, free.grasp_stiffness);
+}
+
 TEST(ForceModel, RigidGraspFeelsStifferThanSoftGrasp)
 {
   const DeviceLimits limits;

@@ -14,6 +14,15 @@
 // come first in the projector's order, then those only the relaxation moved, in its
 // order. After begin_frame() no pass result is read (displacement is the deformer's).
 //
+// Obstacles (the deformer's, docs/obstacles.md "The passes"): after each pass, every
+// vertex it changed goes through the deformer's rule. A vertex whose straight path from
+// rest to its pass result would cross an obstacle, or come closer than the clearance,
+// moves to the last admissible point of that path (f u, f the admissible fraction); the
+// members of a rigid set (rigid vertices joined by edges, pins and sliding vertices left
+// out), which the refinement moves as one, all take the smallest f among them; a sliding
+// vertex keeps its position from before the pass (on the obstacle). held_back() counts
+// the vertices the gate moved. Without obstacles the passes are untouched.
+//
 // Cost: each pass is O(its region) per sweep (link_projection.h, relaxation.h), beyond()
 // O(what the passes changed). The link data (O(mesh)) is built on the first pass and
 // rebuilt only after invalidate() or when the deformer's transfer function changes;
@@ -76,6 +85,8 @@ public:
   // What each pass of this frame changed (empty when it did not run).
   std::size_t refined_count() const { return refining_ ? projector_->changed().size() : 0; }
   std::size_t relaxed_count() const { return relaxing_ ? relaxer_->changed().size() : 0; }
+  // Vertices the obstacle gate held back in this frame's passes (both passes counted).
+  std::size_t held_back() const { return held_back_; }
 
   // The frame's final shape, sparsely: the deformer's moved vertices, then beyond(), with
   // their displacements (parallel arrays).
@@ -85,6 +96,10 @@ public:
 private:
   void ensure_links(const ChainMailDeformer& deformer);
   void add_beyond(const ChainMailDeformer& deformer, const std::vector<index_t>& changed);
+  // The obstacle gate (above) on a pass's result; `before(v)` is v's displacement
+  // before the pass.
+  template<class Pass, class Before>
+  void gate(const ChainMailDeformer& deformer, Pass& pass, Before before);
 
   LinkMesh links_;
   TransferFunction links_transfer_; // what links_ was built with
@@ -93,6 +108,9 @@ private:
   bool refining_ = false, relaxing_ = false;
   std::vector<index_t> beyond_;
   std::vector<std::uint8_t> in_beyond_; // dense mark of beyond_, cleared sparsely
+  std::size_t held_back_ = 0;
+  std::vector<std::uint8_t> gated_; // dense mark of the vertices the gate has seen
+  std::vector<index_t> members_;    // scratch: one rigid set
 };
 
 } // namespace geoshaping

@@ -211,6 +211,9 @@ public:
   // Vertices whose result differs from the start: what a caller mirroring the start
   // must rewrite. Fixed vertices never appear: they are left bit-identical.
   const std::vector<index_t>& changed() const { return changed_; }
+  // A caller's correction of the result at v, one of changed() (the obstacle gate of
+  // FramePasses); v stays in changed().
+  void correct(index_t v, const Eigen::Vector3d& u) { u_[std::size_t(v)] = u; }
 
   // A result computed elsewhere taken as this call's (the partitioned envelope,
   // partitioned_envelope.h): `vertices` at `values`, every other vertex at rest;

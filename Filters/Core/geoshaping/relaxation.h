@@ -124,6 +124,9 @@ public:
   // The free vertices whose result differs from the start (a subset of the start list):
   // what a caller mirroring the start must rewrite.
   const std::vector<index_t>& changed() const { return changed_; }
+  // A caller's correction of the result at v, one of changed() (the obstacle gate of
+  // FramePasses); v stays in changed().
+  void correct(index_t v, const Eigen::Vector3d& u) { u_[std::size_t(v)] = u; }
 
 private:
   bool update(index_t v, RelaxationReport& report);

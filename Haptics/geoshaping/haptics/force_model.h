@@ -45,6 +45,21 @@ struct ForceParams
 double coupling_stiffness(
   double malleability, const ForceParams& params, const DeviceLimits& limits);
 
+// A grasp an obstacle held back (docs/obstacles.md): the grasped vertex stopped at
+// `stopped` (device frame) short of where the stylus put it. The coupling becomes
+//
+//   F = k_g (anchor - stopped) + k_w (stopped - x),   k_w = max(k_g, k(0)),
+//
+// k(0) the rigid coupling stiffness above: the pull of the deformation the grasp made
+// plus a spring as stiff as rigid rock toward the stopped grasp, so pushing on into the
+// obstacle is felt as a wall and a grasp stopped on a dipping fault pulls the stylus back
+// onto it (toward where the grasp is, not along the drag). It is one spring, of
+// stiffness k_w toward stopped + (k_g / k_w) (anchor - stopped), written into the
+// snapshot so that compute_force and its passivity budget are unchanged. A non-finite
+// `stopped` or a snapshot without a grasp is left as it is.
+void hold_grasp_back(SceneSnapshot& scene, const Eigen::Vector3d& stopped,
+  const ForceParams& params, const DeviceLimits& limits);
+
 struct ForceInput
 {
   Eigen::Vector3d position = Eigen::Vector3d::Zero(); // m, device frame
