@@ -449,14 +449,14 @@ private:
   void BuildOutputCaches(vtkPointSet* input, const std::vector<double>& xyz);
   // The distributed path (vtkChainMailDeformationFilterParallel.cxx): false when this
   // update runs in one process.
-  bool RequestDataParallel(
-    vtkPointSet* input, vtkPointSet* output, vtkInformationVector** inputVector);
-  bool UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
+  bool RequestDataParallel(vtkPointSet* input, vtkPointSet* output);
+  // The arrays are read from `input`, the data the filter works on (on several processes
+  // the input with the ghost ring the filter made, vtkGeoShapingGhostRing).
+  bool UpdateMalleabilityAndPins(vtkPointSet* input);
   // The optional point mask named as input array `index` (pins 1, sliding 2), null when
   // none is named; `valid` false (after an error naming `what`) when it is not numeric
   // point data with one value per point.
-  vtkDataArray* PointMask(
-    int index, const char* what, vtkInformationVector** inputVector, vtkIdType n, bool& valid);
+  vtkDataArray* PointMask(int index, const char* what, vtkPointSet* input, bool& valid);
   // The obstacles of port 1 into the deformer (vtkChainMailDeformationFilterObstacles.cxx);
   // false (after an error) when they are refused.
   bool UpdateObstacles(vtkInformationVector** inputVector);
