@@ -110,14 +110,9 @@ vtkPointSet* vtkGeoShapingGhostRing::Ensure(
     geoshaping::index_t coincident = 0;
     const std::vector<std::int64_t> ids = geoshaping::coordinate_ids(
       xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
-    std::int64_t allCoincident = 0;
-    for (const auto& v : ex.all_gather({ coincident }))
-      allCoincident += v[0];
-    if (allCoincident > 0)
-    {
-      error = geoshaping::coincident_points_refusal(allCoincident);
+    error = geoshaping::coincident_points_refusal(coincident, ex);
+    if (!error.empty())
       return nullptr;
-    }
     vtkNew<vtkIdTypeArray> gids;
     gids->SetName("GlobalIds");
     gids->SetNumberOfTuples(n);

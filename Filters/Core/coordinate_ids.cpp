@@ -83,8 +83,6 @@ std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, const std
   const std::vector<Key> keys = keys_of(xyz, n);
   std::vector<Key> distinct(keys);
   sort_unique(distinct);
-  if (coincident)
-    *coincident = n - index_t(distinct.size());
 
   // The same P - 1 splitters on every piece, from P regular samples of each piece.
   std::vector<std::int64_t> samples;
@@ -99,10 +97,19 @@ std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, const std
     splitters.push_back(pooled[std::size_t(i) * pooled.size() / std::size_t(pieces)]);
 
   // Whether this piece claims each distinct key (any of its copies not a ghost).
+  // And how many of its points are claimed at a position it already claims: ghosts are
+  // left out (a ghost may be a copy of a point held here, see coordinate_ids.h).
   std::vector<std::uint8_t> claims(distinct.size(), 0);
+  index_t repeated = 0;
   for (index_t v = 0; v < n; ++v)
     if (claimed[v])
-      claims[position(distinct, keys[std::size_t(v)])] = 1;
+    {
+      std::uint8_t& c = claims[position(distinct, keys[std::size_t(v)])];
+      repeated += c;
+      c = 1;
+    }
+  if (coincident)
+    *coincident = repeated;
 
   // Each key to the piece of its interval (contiguous runs of `distinct`, in order),
   // as (x, y, z, claimed).
@@ -167,9 +174,14 @@ std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, const std
   return ids;
 }
 
-std::string coincident_points_refusal(std::int64_t coincident)
+std::string coincident_points_refusal(index_t coincident, Exchange& exchange)
 {
-  return std::to_string(coincident) +
+  std::int64_t total = 0;
+  for (const auto& v : exchange.all_gather({ coincident }))
+    total += v[0];
+  if (total == 0)
+    return {};
+  return std::to_string(total) +
          " points share their coordinates with another point of their process (split nodes, "
          "e.g. the two sides of a fault): without point GlobalIds, processes cannot tell them "
          "from the copies of one point. Give the data point GlobalIds before distributing it "

@@ -466,6 +466,9 @@ private:
   std::vector<int> UpdateEdits(std::vector<int>& stale);
   void Deform(vtkPointSet* input, std::vector<int>& stale);
   bool OutputFits();
+  // A frame whose output does not fit is dropped, on one process or several alike: the
+  // last frame's vertices join `stale` (restored to rest), the statistics say no frame.
+  void DropFrame(std::vector<int>& stale);
   // A quiet fall-back is reported once per distinct message, not on every drag frame.
   void WarnOnce(const std::string& message);
   void UpdateNormals(vtkIdTypeArray* changed);

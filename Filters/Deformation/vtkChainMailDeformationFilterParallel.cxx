@@ -219,13 +219,10 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(vtkPointSet* input, vtkP
       geoshaping::index_t coincident = 0;
       gid = geoshaping::coordinate_ids(
         xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
-      std::int64_t allCoincident = 0;
-      for (const auto& v : ex.all_gather({ coincident }))
-        allCoincident += v[0];
-      if (allCoincident > 0)
+      const std::string split = geoshaping::coincident_points_refusal(coincident, ex);
+      if (!split.empty())
       {
-        vtkErrorMacro(<< geoshaping::coincident_points_refusal(allCoincident)
-                      << "; output is the undeformed input.");
+        vtkErrorMacro(<< split << "; output is the undeformed input.");
         state.Partition.reset();
         return true;
       }
@@ -350,14 +347,23 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(vtkPointSet* input, vtkP
       this->Statistics.NumberOfRefinementSweeps = refined.report.iterations;
       this->Statistics.NumberOfRefinedPoints = vtkIdType(refined.refined);
     }
-    // Totals over all processes (the bytes include the refinement's).
-    std::int64_t moved = 0, examined = 0, bytes = 0;
-    for (const auto& v : ex.all_gather(
-           { std::int64_t(r.moved), std::int64_t(r.examined), std::int64_t(ex.bytes_sent()) }))
+    // Totals over all processes (the bytes include the refinement's), and the grasp's
+    // malleability from the process that owns it.
+    std::int64_t moved = 0, examined = 0, bytes = 0, graspMalleability = -1;
+    std::vector<geoshaping::index_t> holding;
+    state.Partition->holders(grasp, holding);
+    for (geoshaping::index_t v : holding)
+      if (r.ok && state.Deformer.owned(v))
+        graspMalleability =
+          geoshaping::bit_cast<std::int64_t>(double(state.Deformer.malleability(v)));
+    for (const auto& v : ex.all_gather({ std::int64_t(r.moved), std::int64_t(r.examined),
+           std::int64_t(ex.bytes_sent()), graspMalleability }))
     {
       moved += v[0];
       examined += v[1];
       bytes += v[2];
+      if (v[3] >= 0)
+        this->Statistics.LastGraspMalleability = geoshaping::bit_cast<double>(v[3]);
     }
     this->Statistics.NumberOfBytesExchanged = vtkIdType(bytes);
     // Each superstep of the refinement's label correction is one round.
@@ -369,15 +375,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(vtkPointSet* input, vtkP
     this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
     state.FrameRecipe = Recipe(this, grasp);
     if (r.ok && !AllAgree(ex, n == 0 || this->OutputFits()))
-    {
-      // The last frame's vertices are still shown: restored with the stale ones.
-      const IdList& last = state.Deformer.previously_moved();
-      shown.insert(shown.end(), last.begin(), last.end());
-      state.Deformer.reset();
-      state.Passes.begin_frame();
-      this->Statistics.NumberOfDisplacedPoints = 0;
-      this->Statistics.LastGraspPointId = -1;
-    }
+      this->DropFrame(shown);
   }
   if (n > 0)
     this->WriteOutput(input, output, shown, touched);

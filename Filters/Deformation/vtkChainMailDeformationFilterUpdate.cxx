@@ -407,17 +407,23 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       }
       if (r.ok && !this->OutputFits())
       {
-        // The last frame's vertices are still shown: restore them with the stale ones.
-        const IdList& shown = state.Deformer.previously_moved();
-        stale.insert(stale.end(), shown.begin(), shown.end());
-        state.Deformer.reset();
-        state.Passes.begin_frame();
-        this->Statistics.NumberOfDisplacedPoints = 0;
-        this->Statistics.LastGraspPointId = -1;
-        this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
+        this->DropFrame(stale);
       }
     }
   }
+}
+
+void vtkChainMailDeformationFilter::DropFrame(std::vector<int>& stale)
+{
+  vtkInternals& state = *this->Internals;
+  // The last frame's vertices are still shown: restore them with the stale ones.
+  const IdList& shown = state.Deformer.previously_moved();
+  stale.insert(stale.end(), shown.begin(), shown.end());
+  state.Deformer.reset();
+  state.Passes.begin_frame();
+  this->Statistics.NumberOfDisplacedPoints = 0;
+  this->Statistics.LastGraspPointId = -1;
+  this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
 }
 
 bool vtkChainMailDeformationFilter::OutputFits()

@@ -91,9 +91,12 @@ struct vtkMalleabilityPaintFilter::vtkInternals
   geoshaping::PointQueries Queries();
 
   // The id a tie for the nearest vertex goes by: the point GlobalIds when the input has
-  // them (one per point), else the point id; copied when that array changes.
+  // them (one per point), else the points' coordinate ids (coordinate_ids.h, the
+  // numbering several processes use); copied when that array changes, numbered when the
+  // geometry changes.
   vtkDataArray* IdSource = nullptr;
   vtkMTimeType IdTime = 0;
+  bool IdsFromCoordinates = false;
   std::vector<std::int64_t> Ids; // empty: the point ids
   void UpdateIds(vtkPointSet* input);
   // The vertex nearest p, ties to the lowest id (-1 when there is none).
@@ -112,16 +115,21 @@ void vtkMalleabilityPaintFilter::vtkInternals::UpdateIds(vtkPointSet* input)
   if (ids && (ids->GetNumberOfTuples() != n || ids->GetNumberOfComponents() != 1))
     ids = nullptr;
   if (ids == this->IdSource && (!ids || ids->GetMTime() == this->IdTime) &&
-      (ids || this->Ids.empty()))
+      (ids || this->IdsFromCoordinates))
     return;
   this->IdSource = ids;
   this->IdTime = ids ? ids->GetMTime() : 0;
+  this->IdsFromCoordinates = !ids;
   this->Ids.clear();
   if (ids)
   {
     this->Ids.resize(std::size_t(n));
     for (vtkIdType i = 0; i < n; ++i)
       this->Ids[std::size_t(i)] = std::int64_t(ids->GetTuple1(i));
+  }
+  else
+  {
+    this->Ids = geoshaping::coordinate_ids(this->Xyz.data(), geoshaping::index_t(n));
   }
 }
 
@@ -165,6 +173,7 @@ bool vtkMalleabilityPaintFilter::vtkInternals::Update(
   this->GeometryTime = time;
   this->AdjacencyValid = false;
   this->Adjacency = {};
+  this->IdsFromCoordinates = false; // numbered again by UpdateIds
   vtkIdType firstBad;
   const vtkIdType bad = vtkGeoShapingAdapter::PointsAsDouble(points, this->Xyz, firstBad);
   this->GeometryValid = bad == 0;
@@ -674,13 +683,11 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
         in.Xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
       in.IdSource = nullptr;
       in.IdTime = 0;
-      std::int64_t allCoincident = 0;
-      for (const auto& v : ex.all_gather({ coincident }))
-        allCoincident += v[0];
-      if (allCoincident > 0)
+      in.IdsFromCoordinates = true;
+      const std::string split = geoshaping::coincident_points_refusal(coincident, ex);
+      if (!split.empty())
       {
-        vtkErrorMacro(<< geoshaping::coincident_points_refusal(allCoincident)
-                      << "; no geodesic dab is applied on any process.");
+        vtkErrorMacro(<< split << "; no geodesic dab is applied on any process.");
         in.Geodesic.reset();
         return true;
       }

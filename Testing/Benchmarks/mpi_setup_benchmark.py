@@ -12,6 +12,8 @@ MODE:
   ghosts   the same with GhostCellsGenerator added by hand before the filter (VTK's
            generator alone, matching the pieces by coordinates)
   read     XMLPolyDataReader -> RedistributeDataSet only (no filter)
+  reader   XMLPolyDataReader -> ChainMailDeformation (one process: the numbering by
+           coordinates is the setup's only new part)
 Each mode updates once (setup) then runs --frames frames (the pull varied by 1e-3).
 Prints the first update's and the median frame's wall time on rank 0 (one run: a
 breakdown, not a comparison)."""
@@ -63,7 +65,9 @@ if args.write:
 controller = vtkMultiProcessController.GetGlobalController()
 rank = controller.GetLocalProcessId()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
-upstream = RedistributeDataSet(Input=XMLPolyDataReader(FileName=[args.file]))  # noqa: F405
+upstream = XMLPolyDataReader(FileName=[args.file])  # noqa: F405
+if args.mode != "reader":
+    upstream = RedistributeDataSet(Input=upstream)  # noqa: F405
 if args.mode == "ghosts":
     upstream = GhostCellsGenerator(Input=upstream)  # noqa: F405
 if args.mode == "read":

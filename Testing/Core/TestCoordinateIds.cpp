@@ -179,10 +179,12 @@ TEST(CoordinateIds, OnePieceKeepsCoincidentPointsApartInPointOrder)
 
 TEST(CoordinateIds, PiecesCountTheirOwnCoincidentPoints)
 {
-  // Piece 0 holds a split node (two points at one position) and a copy of piece 1's
-  // point; piece 1 holds nothing twice.
-  const std::vector<Point> points = { { 0, 0, 0 }, { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } };
-  const Split s{ { { 0, 1, 2 }, { 2, 3 } }, { { 1, 1, 0 }, { 1, 1 } } };
+  // Piece 0 holds a split node (two claimed points at one position) and a copy of piece
+  // 1's point; piece 1 holds nothing twice but ghost copies of piece 0's point 4 and of
+  // its own point 3, which are copies, not split nodes.
+  const std::vector<Point> points = { { 0, 0, 0 }, { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 },
+    { 3, 0, 0 } };
+  const Split s{ { { 0, 1, 2, 4 }, { 2, 3, 3, 4, 4 } }, { { 1, 1, 0, 1 }, { 1, 1, 0, 0, 0 } } };
   InProcessHub hub(2);
   index_t counted[2] = { -1, -1 };
   std::vector<std::thread> threads;

@@ -20,8 +20,11 @@ LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from mpi_pipeline import POINT_INDEX_IDS  # noqa: E402
 
-reader = (XMLPolyDataReader if path.endswith(".vtp") else XMLUnstructuredGridReader)(  # noqa: F405
-    FileName=[path])
+if path.endswith(".ts"):
+    reader = GOCADTSurfReader(FileName=path)  # noqa: F405
+else:
+    reader = (XMLPolyDataReader if path.endswith(".vtp") else XMLUnstructuredGridReader)(  # noqa: F405
+        FileName=[path])
 upstream = reader
 if case == "ids":  # point GlobalIds (the file's point ids), then distributed
     upstream = ProgrammableFilter(Input=reader)  # noqa: F405
@@ -64,6 +67,7 @@ os.makedirs(out, exist_ok=True)
 np.save(os.path.join(out, "rank%d.npy" % rank), rows)
 chain.UpdatePropertyInformation()
 moved = chain.GetProperty("NumberOfDisplacedPoints").GetData()
+grasped = chain.GetProperty("LastGraspMalleability").GetData()
 controller.Barrier()
 if rank == 0:
     rows = np.concatenate([np.load(os.path.join(out, "rank%d.npy" % r)) for r in range(nranks)])
@@ -75,4 +79,5 @@ if rank == 0:
     rows = rows[first] if nranks > 1 else rows
     np.save(os.path.join(out, "result.npy"), rows)
     print("rank0: %d owned points from %d ranks, %d displaced" % (len(rows), nranks, moved))
+    print("grasp malleability %r" % grasped)
 controller.Barrier()

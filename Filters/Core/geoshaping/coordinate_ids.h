@@ -47,8 +47,10 @@ namespace geoshaping
 // Collective. The ids of the `n` points xyz of this piece (see above); `claimed[v]`
 // non-zero when this piece's data does not mark v as a ghost, `owned[v]` set to whether
 // this piece owns v (for one of the copies of each point claimed here). `coincident`,
-// when given: how many points of this piece share their coordinates with an earlier
-// point of this piece (0 unless the mesh has split nodes or repeated points).
+// when given: how many claimed points of this piece share their coordinates with an
+// earlier claimed point of this piece (0 unless the mesh has split nodes or repeated
+// points). Ghosts are left out: VTK's vtkGhostCellsGenerator, matching by coordinates,
+// can send a piece a ghost copy of a point the piece holds, where three pieces meet.
 std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, const std::uint8_t* claimed,
   std::vector<std::uint8_t>& owned, Exchange& exchange, index_t* coincident = nullptr);
 
@@ -58,8 +60,9 @@ std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, const std
 std::vector<std::int64_t> coordinate_ids(
   const double* xyz, index_t n, index_t* coincident = nullptr);
 
-// Why several pieces refuse a mesh without GlobalIds whose pieces hold `coincident`
-// points in all (the collective overload's counts, summed): the same text on every piece.
-std::string coincident_points_refusal(std::int64_t coincident);
+// Collective. Why several pieces refuse a mesh without GlobalIds, from each piece's
+// `coincident` count (the collective overload's): the same text on every piece, or ""
+// when no piece holds coincident points.
+std::string coincident_points_refusal(index_t coincident, Exchange& exchange);
 
 } // namespace geoshaping
