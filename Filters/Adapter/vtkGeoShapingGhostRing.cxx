@@ -1,5 +1,6 @@
 #include "vtkGeoShapingGhostRing.h"
 
+#include "vtkCellData.h"
 #include "vtkCommunicator.h"
 #include "vtkGeoShapingAdapter.h"
 #include "vtkGeoShapingControllerExchange.h"
@@ -16,13 +17,35 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <vector>
+
+namespace
+{
+// What the copy is made from: the input object, its points and cells, and its arrays,
+// each by its own modification time (the executive touches the data object and its
+// attribute containers at every update, so their times would make the ring again at
+// every drag frame).
+std::vector<std::uintptr_t> Signature(vtkPointSet* input)
+{
+  std::vector<std::uintptr_t> s{ std::uintptr_t(input), std::uintptr_t(input->GetPoints()),
+    std::uintptr_t(vtkGeoShapingAdapter::GeometryTime(input)) };
+  for (vtkFieldData* data : { static_cast<vtkFieldData*>(input->GetPointData()),
+         static_cast<vtkFieldData*>(input->GetCellData()) })
+    for (int i = 0; i < data->GetNumberOfArrays(); ++i)
+    {
+      vtkAbstractArray* a = data->GetAbstractArray(i);
+      s.push_back(std::uintptr_t(a));
+      s.push_back(a ? std::uintptr_t(a->GetMTime()) : 0);
+    }
+  return s;
+}
+} // namespace
 
 struct vtkGeoShapingGhostRing::vtkInternals
 {
-  vtkPointSet* Source = nullptr; // the input the copy was made from
-  vtkMTimeType SourceTime = 0;
-  bool Generated = false; // Ensure's last decision, kept with the copy
+  std::vector<std::uintptr_t> Source; // what the copy was made from (Signature)
+  bool Generated = false;             // Ensure's last decision, kept with the copy
   vtkSmartPointer<vtkPointSet> Copy;
   int Generations = 0;
   double Milliseconds = 0.0;
@@ -57,8 +80,7 @@ vtkPointSet* vtkGeoShapingGhostRing::Ensure(
   const bool marked = pointGhosts && pointGhosts->GetNumberOfTuples() == n &&
                       (cells == 0 || (cellGhosts && cellGhosts->GetNumberOfTuples() == cells));
   // Kept: the same input object, unchanged (points, cells and arrays).
-  const bool kept =
-    in.Copy && in.Source == input && in.SourceTime == input->GetMTime() && in.Generated;
+  const bool kept = in.Copy && in.Generated && in.Source == Signature(input);
   // Per process: holds points, is marked, still has its copy, has point GlobalIds.
   const int mine[4] = { n > 0, marked, kept,
     vtkGeoShapingAdapter::PointGlobalIds(input) != nullptr };
@@ -79,13 +101,13 @@ vtkPointSet* vtkGeoShapingGhostRing::Ensure(
   {
     in.Generated = false;
     in.Copy = nullptr;
-    in.Source = nullptr;
+    in.Source.clear();
     return input;
   }
   if (allKept)
     return in.Copy;
   in.Copy = nullptr;
-  in.Source = nullptr;
+  in.Source.clear();
   std::vector<double> xyz;
   vtkIdType firstBad = -1;
   const int finite =
@@ -136,8 +158,7 @@ vtkPointSet* vtkGeoShapingGhostRing::Ensure(
   }
   in.Copy = vtk::TakeSmartPointer(made->NewInstance());
   in.Copy->ShallowCopy(made);
-  in.Source = input;
-  in.SourceTime = input->GetMTime();
+  in.Source = Signature(input);
   in.Generated = true;
   ++in.Generations;
   in.Milliseconds =

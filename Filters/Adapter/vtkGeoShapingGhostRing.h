@@ -14,8 +14,8 @@
  * filters would number them by; matching by coordinates alone left surfaces without
  * their ghosts in VTK 9.2), and a piece holding two points at one position (split nodes)
  * is refused, since no numbering by coordinates can keep them apart. The copy is kept
- * while the input object and its modification time stay, so a drag frame does not make
- * it again. Not wrapped.
+ * while the input object, its points, cells and arrays stay (each by its own
+ * modification time), so a drag frame does not make it again. Not wrapped.
  */
 #ifndef vtkGeoShapingGhostRing_h
 #define vtkGeoShapingGhostRing_h
