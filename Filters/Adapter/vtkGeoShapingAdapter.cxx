@@ -11,6 +11,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 using geoshaping::CellKind;
 
@@ -211,4 +213,11 @@ void vtkGeoShapingAdapter::RequestGhostRing(
       : 0;
   inInfo->Set(
     vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(levels, 1));
+}
+
+vtkDataArray* vtkGeoShapingAdapter::PointGlobalIds(vtkDataSet* input)
+{
+  vtkDataArray* ids = input->GetPointData()->GetGlobalIds();
+  const char* name = ids ? ids->GetName() : nullptr;
+  return name && std::strcmp(name, "___D3___GlobalNodeIds") == 0 ? nullptr : ids;
 }

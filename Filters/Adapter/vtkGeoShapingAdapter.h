@@ -55,6 +55,11 @@ public:
   /// point and cell data so that repainting an array does not rebuild adjacency.
   static vtkMTimeType GeometryTime(vtkPointSet* input);
 
+  /// The point `GlobalIds` that name the points (docs/mpi.md, "Identity"): null when there
+  /// are none, or when they are D3's own (`___D3___GlobalNodeIds`: numbered per partition,
+  /// so different for each number of processes, and absent on one).
+  static vtkDataArray* PointGlobalIds(vtkDataSet* input);
+
   // A distributed path's request (docs/mpi.md): at least one ghost level from the first
   // input (every neighbour of an owned point on this process), more if downstream asked.
   static void RequestGhostRing(

@@ -41,16 +41,46 @@ std::size_t position(const std::vector<Key>& sorted, const Key& k)
 {
   return std::size_t(std::lower_bound(sorted.begin(), sorted.end(), k) - sorted.begin());
 }
-} // namespace
 
-std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, const std::uint8_t* claimed,
-  std::vector<std::uint8_t>& owned, Exchange& exchange)
+std::vector<Key> keys_of(const double* xyz, index_t n)
 {
-  const int pieces = exchange.pieces(), me = exchange.piece();
   std::vector<Key> keys(static_cast<std::size_t>(n));
   for (index_t v = 0; v < n; ++v)
     for (int k = 0; k < 3; ++k)
       keys[std::size_t(v)][std::size_t(k)] = ordered_bits(xyz[3 * std::size_t(v) + std::size_t(k)]);
+  return keys;
+}
+} // namespace
+
+std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, index_t* coincident)
+{
+  const std::vector<Key> keys = keys_of(xyz, n);
+  std::vector<index_t> order(static_cast<std::size_t>(n));
+  for (index_t v = 0; v < n; ++v)
+    order[std::size_t(v)] = v;
+  std::sort(order.begin(), order.end(),
+    [&keys](index_t a, index_t b)
+    {
+      return keys[std::size_t(a)] < keys[std::size_t(b)] ||
+             (keys[std::size_t(a)] == keys[std::size_t(b)] && a < b);
+    });
+  std::vector<std::int64_t> ids(static_cast<std::size_t>(n));
+  index_t repeated = 0;
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    ids[std::size_t(order[i])] = std::int64_t(i);
+    repeated += i > 0 && keys[std::size_t(order[i])] == keys[std::size_t(order[i - 1])];
+  }
+  if (coincident)
+    *coincident = repeated;
+  return ids;
+}
+
+std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, const std::uint8_t* claimed,
+  std::vector<std::uint8_t>& owned, Exchange& exchange, index_t* coincident)
+{
+  const int pieces = exchange.pieces(), me = exchange.piece();
+  const std::vector<Key> keys = keys_of(xyz, n);
   std::vector<Key> distinct(keys);
   sort_unique(distinct);
 
@@ -67,10 +97,19 @@ std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, const std
     splitters.push_back(pooled[std::size_t(i) * pooled.size() / std::size_t(pieces)]);
 
   // Whether this piece claims each distinct key (any of its copies not a ghost).
+  // And how many of its points are claimed at a position it already claims: ghosts are
+  // left out (a ghost may be a copy of a point held here, see coordinate_ids.h).
   std::vector<std::uint8_t> claims(distinct.size(), 0);
+  index_t repeated = 0;
   for (index_t v = 0; v < n; ++v)
     if (claimed[v])
-      claims[position(distinct, keys[std::size_t(v)])] = 1;
+    {
+      std::uint8_t& c = claims[position(distinct, keys[std::size_t(v)])];
+      repeated += c;
+      c = 1;
+    }
+  if (coincident)
+    *coincident = repeated;
 
   // Each key to the piece of its interval (contiguous runs of `distinct`, in order),
   // as (x, y, z, claimed).
@@ -133,6 +172,20 @@ std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, const std
       owned[std::size_t(v)] = given[d] = 1;
   }
   return ids;
+}
+
+std::string coincident_points_refusal(index_t coincident, Exchange& exchange)
+{
+  std::int64_t total = 0;
+  for (const auto& v : exchange.all_gather({ coincident }))
+    total += v[0];
+  if (total == 0)
+    return {};
+  return std::to_string(total) +
+         " points share their coordinates with another point of their process (split nodes, "
+         "e.g. the two sides of a fault): without point GlobalIds, processes cannot tell them "
+         "from the copies of one point. Give the data point GlobalIds before distributing it "
+         "(its point ids, docs/mpi.md \"Identity\")";
 }
 
 } // namespace geoshaping

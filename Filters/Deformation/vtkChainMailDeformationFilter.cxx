@@ -82,7 +82,7 @@ int vtkChainMailDeformationFilter::RequestData(
   vtkInternals& state = *this->Internals;
   state.Passes.begin_frame();
 
-  if (this->RequestDataParallel(input, output, inputVector))
+  if (this->RequestDataParallel(input, output))
   {
     return 1;
   }
@@ -103,7 +103,7 @@ int vtkChainMailDeformationFilter::RequestData(
   {
     return 1;
   }
-  if (!this->UpdateMalleabilityAndPins(inputVector, n))
+  if (!this->UpdateMalleabilityAndPins(input))
   {
     return 1;
   }

@@ -448,14 +448,14 @@ private:
   void BuildOutputCaches(vtkPointSet* input, const std::vector<double>& xyz);
   // The distributed path (vtkChainMailDeformationFilterParallel.cxx): false when this
   // update runs in one process.
-  bool RequestDataParallel(
-    vtkPointSet* input, vtkPointSet* output, vtkInformationVector** inputVector);
-  bool UpdateMalleabilityAndPins(vtkInformationVector** inputVector, vtkIdType n);
+  bool RequestDataParallel(vtkPointSet* input, vtkPointSet* output);
+  // The arrays are read from `input`, the data the filter works on (on several processes
+  // the input with the ghost ring the filter made, vtkGeoShapingGhostRing).
+  bool UpdateMalleabilityAndPins(vtkPointSet* input);
   // The optional point mask named as input array `index` (pins 1, sliding 2), null when
   // none is named; `valid` false (after an error naming `what`) when it is not numeric
   // point data with one value per point.
-  vtkDataArray* PointMask(
-    int index, const char* what, vtkInformationVector** inputVector, vtkIdType n, bool& valid);
+  vtkDataArray* PointMask(int index, const char* what, vtkPointSet* input, bool& valid);
   // The obstacles of port 1 into the deformer (vtkChainMailDeformationFilterObstacles.cxx);
   // false (after an error) when they are refused.
   bool UpdateObstacles(vtkInformationVector** inputVector);
@@ -465,6 +465,9 @@ private:
   std::vector<int> UpdateEdits(std::vector<int>& stale);
   void Deform(vtkPointSet* input, std::vector<int>& stale);
   bool OutputFits();
+  // A frame whose output does not fit is dropped, on one process or several alike: the
+  // last frame's vertices join `stale` (restored to rest), the statistics say no frame.
+  void DropFrame(std::vector<int>& stale);
   // A quiet fall-back is reported once per distinct message, not on every drag frame.
   void WarnOnce(const std::string& message);
   void UpdateNormals(vtkIdTypeArray* changed);

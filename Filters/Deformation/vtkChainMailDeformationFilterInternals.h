@@ -8,6 +8,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkGeoShapingAdapter.h"
+#include "vtkGeoShapingGhostRing.h"
 #include "vtkGrowingBoundsPoints.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -115,7 +116,9 @@ struct vtkChainMailDeformationFilter::vtkInternals
   vtkSmartPointer<vtkDataArray> OutputNormals;
   std::vector<geoshaping::index_t> Affected, NormalsMoved; // scratch of UpdateNormals
   vtkSmartPointer<vtkStaticPointLocator> Locator;
-  // The distributed path (more than one process): drives Deformer over this piece.
+  // The distributed path (more than one process): the input's ghost ring, made when the
+  // input lacks it; the partition that drives Deformer over this piece.
+  vtkGeoShapingGhostRing GhostRing;
   std::unique_ptr<geoshaping::PartitionedChainMail> Partition;
   // Its refinement (the partitioned envelope), set up on the first refinement after
   // the partition changed.

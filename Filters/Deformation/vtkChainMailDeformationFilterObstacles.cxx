@@ -126,7 +126,8 @@ bool vtkChainMailDeformationFilter::UpdateSliding(vtkInformationVector** inputVe
 {
   vtkInternals& state = *this->Internals;
   bool valid = true;
-  vtkDataArray* sliding = this->PointMask(2, "Sliding", inputVector, n, valid);
+  vtkDataArray* sliding =
+    this->PointMask(2, "Sliding", vtkPointSet::GetData(inputVector[0]), valid);
   if (!valid)
   {
     return false;

@@ -67,8 +67,7 @@ int vtkChainMailDeformationFilter::ComputeInputUpdateExtent(
   return 1;
 }
 
-bool vtkChainMailDeformationFilter::RequestDataParallel(
-  vtkPointSet* input, vtkPointSet* output, vtkInformationVector** inputVector)
+bool vtkChainMailDeformationFilter::RequestDataParallel(vtkPointSet* input, vtkPointSet* output)
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   if (!controller || controller->GetNumberOfProcesses() < 2)
@@ -101,19 +100,36 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     return true;
   }
 
+  // The ghost ring, made here when the input lacks it; the output is then the input with
+  // the ring, deformed.
+  std::string ringError;
+  vtkPointSet* ringed = state.GhostRing.Ensure(input, controller, ringError);
+  if (!ringed) // the same on every process
+  {
+    vtkErrorMacro(<< ringError << "; output is the undeformed input.");
+    state.GeometryValid = false;
+    state.Partition.reset();
+    return true;
+  }
+  if (ringed != input)
+  {
+    output->ShallowCopy(ringed);
+    input = ringed;
+  }
+
   // Local checks, agreed on by every process (a process that stopped alone would leave
   // the others waiting in a collective), in one gather with whether the geometry changed
   // and whether the piece has point GlobalIds.
   const vtkIdType n = input->GetNumberOfPoints();
-  vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
+  vtkDataArray* gids = vtkGeoShapingAdapter::PointGlobalIds(input);
   vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
   std::string problem;
   if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
     problem = "more than 2^31 - 1 points";
   else if (n > 0 && gids && (gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
     problem = "a point GlobalIds array that is not one value per point";
-  else if (n > 0 && (!ghosts || ghosts->GetNumberOfTuples() != n))
-    problem = "no vtkGhostType point array (ownership of the points)";
+  else if (n > 0 && ghosts && ghosts->GetNumberOfTuples() != n)
+    problem = "a vtkGhostType point array that is not one value per point";
   if (!problem.empty())
     vtkErrorMacro(
       "Process " << ex.piece() << ": " << problem << "; output is the undeformed input.");
@@ -185,8 +201,10 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     }
     std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
     std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
+    // Without vtkGhostType this is the one process holding points (GhostRing): all owned.
     for (vtkIdType i = 0; i < n; ++i)
-      owned[std::size_t(i)] = (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
+      owned[std::size_t(i)] =
+        !ghosts || (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
     state.GeneratedIds = nullptr;
     if (withIds)
     {
@@ -198,8 +216,16 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       // None anywhere: numbered by coordinates, whatever the partition, and a seam point
       // that several processes claim owned by the lowest (coordinate_ids.h).
       const std::vector<std::uint8_t> claimed = std::move(owned);
-      gid =
-        geoshaping::coordinate_ids(xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex);
+      geoshaping::index_t coincident = 0;
+      gid = geoshaping::coordinate_ids(
+        xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
+      const std::string split = geoshaping::coincident_points_refusal(coincident, ex);
+      if (!split.empty())
+      {
+        vtkErrorMacro(<< split << "; output is the undeformed input.");
+        state.Partition.reset();
+        return true;
+      }
       state.GeneratedIds = vtkSmartPointer<vtkIdTypeArray>::New();
       state.GeneratedIds->SetName("GlobalIds");
       state.GeneratedIds->SetNumberOfTuples(n);
@@ -223,7 +249,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     }
     state.GeometryValid = true;
   }
-  if (!AllAgree(ex, n == 0 || this->UpdateMalleabilityAndPins(inputVector, n)))
+  if (!AllAgree(ex, n == 0 || this->UpdateMalleabilityAndPins(input)))
   {
     state.Deformer.reset();
     return true;
@@ -321,14 +347,23 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
       this->Statistics.NumberOfRefinementSweeps = refined.report.iterations;
       this->Statistics.NumberOfRefinedPoints = vtkIdType(refined.refined);
     }
-    // Totals over all processes (the bytes include the refinement's).
-    std::int64_t moved = 0, examined = 0, bytes = 0;
-    for (const auto& v : ex.all_gather(
-           { std::int64_t(r.moved), std::int64_t(r.examined), std::int64_t(ex.bytes_sent()) }))
+    // Totals over all processes (the bytes include the refinement's), and the grasp's
+    // malleability from the process that owns it.
+    std::int64_t moved = 0, examined = 0, bytes = 0, graspMalleability = -1;
+    std::vector<geoshaping::index_t> holding;
+    state.Partition->holders(grasp, holding);
+    for (geoshaping::index_t v : holding)
+      if (r.ok && state.Deformer.owned(v))
+        graspMalleability =
+          geoshaping::bit_cast<std::int64_t>(double(state.Deformer.malleability(v)));
+    for (const auto& v : ex.all_gather({ std::int64_t(r.moved), std::int64_t(r.examined),
+           std::int64_t(ex.bytes_sent()), graspMalleability }))
     {
       moved += v[0];
       examined += v[1];
       bytes += v[2];
+      if (v[3] >= 0)
+        this->Statistics.LastGraspMalleability = geoshaping::bit_cast<double>(v[3]);
     }
     this->Statistics.NumberOfBytesExchanged = vtkIdType(bytes);
     // Each superstep of the refinement's label correction is one round.
@@ -340,15 +375,7 @@ bool vtkChainMailDeformationFilter::RequestDataParallel(
     this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
     state.FrameRecipe = Recipe(this, grasp);
     if (r.ok && !AllAgree(ex, n == 0 || this->OutputFits()))
-    {
-      // The last frame's vertices are still shown: restored with the stale ones.
-      const IdList& last = state.Deformer.previously_moved();
-      shown.insert(shown.end(), last.begin(), last.end());
-      state.Deformer.reset();
-      state.Passes.begin_frame();
-      this->Statistics.NumberOfDisplacedPoints = 0;
-      this->Statistics.LastGraspPointId = -1;
-    }
+      this->DropFrame(shown);
   }
   if (n > 0)
     this->WriteOutput(input, output, shown, touched);

@@ -6,6 +6,8 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 
+#include "geoshaping/coordinate_ids.h"
+
 #include <cmath>
 
 using namespace vtkChainMailDeformationFilterDetail;
@@ -92,9 +94,11 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
     }
     state.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
     // Point GlobalIds decide the propagation order and name the grasp (docs/mpi.md), so
-    // one process gives the same result as several.
+    // one process gives the same result as several. Without them the order comes from
+    // the coordinates, as on several processes (coordinate_ids.h), and the grasp and the
+    // edit records keep naming point indices.
     state.Ids.clear();
-    vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
+    vtkDataArray* gids = vtkGeoShapingAdapter::PointGlobalIds(input);
     if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
     {
       std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
@@ -102,6 +106,11 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
         gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
       state.Ids.set(gid.data(), geoshaping::index_t(n));
       state.Deformer.set_global_ids(gid.data());
+    }
+    else
+    {
+      state.Deformer.set_global_ids(
+        geoshaping::coordinate_ids(xyz.data(), geoshaping::index_t(n)).data());
     }
 
     this->BuildOutputCaches(input, xyz);
@@ -162,15 +171,16 @@ void vtkChainMailDeformationFilter::WarnOnce(const std::string& message)
 }
 
 vtkDataArray* vtkChainMailDeformationFilter::PointMask(
-  int index, const char* what, vtkInformationVector** inputVector, vtkIdType n, bool& valid)
+  int index, const char* what, vtkPointSet* input, bool& valid)
 {
+  const vtkIdType n = input->GetNumberOfPoints();
   // Optional: asked for only when one was named.
   vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
   int association = -1;
   vtkAbstractArray* named =
     arrays && arrays->GetNumberOfInformationObjects() > index &&
         arrays->GetInformationObject(index)->Get(vtkDataObject::FIELD_NAME())
-      ? this->GetInputAbstractArrayToProcess(index, inputVector, association)
+      ? this->GetInputAbstractArrayToProcess(index, input, association)
       : nullptr;
   vtkDataArray* mask = vtkDataArray::SafeDownCast(named);
   valid = !named || (mask && association == vtkDataObject::FIELD_ASSOCIATION_POINTS &&
@@ -192,14 +202,14 @@ vtkDataArray* vtkChainMailDeformationFilter::PointMask(
   return mask;
 }
 
-bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
-  vtkInformationVector** inputVector, vtkIdType n)
+bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(vtkPointSet* input)
 {
   vtkInternals& state = *this->Internals;
+  const vtkIdType n = input->GetNumberOfPoints();
   // 2. Malleability and pins: copied only when their array changes. An array is read
   // only as numeric point data with one value per point.
   int association = -1;
-  vtkAbstractArray* named = this->GetInputAbstractArrayToProcess(0, inputVector, association);
+  vtkAbstractArray* named = this->GetInputAbstractArrayToProcess(0, input, association);
   vtkDataArray* malleability = vtkDataArray::SafeDownCast(named);
   if (named && (!malleability || association != vtkDataObject::FIELD_ASSOCIATION_POINTS ||
                  malleability->GetNumberOfComponents() != 1))
@@ -227,7 +237,7 @@ bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(
     return false;
   }
   bool valid = true;
-  vtkDataArray* pins = this->PointMask(1, "Pinned", inputVector, n, valid);
+  vtkDataArray* pins = this->PointMask(1, "Pinned", input, valid);
   if (!valid)
   {
     return false;
@@ -397,17 +407,23 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       }
       if (r.ok && !this->OutputFits())
       {
-        // The last frame's vertices are still shown: restore them with the stale ones.
-        const IdList& shown = state.Deformer.previously_moved();
-        stale.insert(stale.end(), shown.begin(), shown.end());
-        state.Deformer.reset();
-        state.Passes.begin_frame();
-        this->Statistics.NumberOfDisplacedPoints = 0;
-        this->Statistics.LastGraspPointId = -1;
-        this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
+        this->DropFrame(stale);
       }
     }
   }
+}
+
+void vtkChainMailDeformationFilter::DropFrame(std::vector<int>& stale)
+{
+  vtkInternals& state = *this->Internals;
+  // The last frame's vertices are still shown: restore them with the stale ones.
+  const IdList& shown = state.Deformer.previously_moved();
+  stale.insert(stale.end(), shown.begin(), shown.end());
+  state.Deformer.reset();
+  state.Passes.begin_frame();
+  this->Statistics.NumberOfDisplacedPoints = 0;
+  this->Statistics.LastGraspPointId = -1;
+  this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
 }
 
 bool vtkChainMailDeformationFilter::OutputFits()

@@ -4,6 +4,7 @@
 #include "vtkFloatArray.h"
 #include "vtkGeoShapingAdapter.h"
 #include "vtkGeoShapingControllerExchange.h"
+#include "vtkGeoShapingGhostRing.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -51,6 +52,8 @@ bool SameDab(const geoshaping::Dab& a, const geoshaping::Dab& b)
 
 struct vtkMalleabilityPaintFilter::vtkInternals
 {
+  // Geodesic dabs on several processes: the input's ghost ring, made when it lacks one.
+  vtkGeoShapingGhostRing GhostRing;
   // The last painted output (shallow): what an aborted painting leaves in place, since
   // the executive empties the output before each execution.
   vtkSmartPointer<vtkPointSet> LastOutput;
@@ -88,9 +91,12 @@ struct vtkMalleabilityPaintFilter::vtkInternals
   geoshaping::PointQueries Queries();
 
   // The id a tie for the nearest vertex goes by: the point GlobalIds when the input has
-  // them (one per point), else the point id; copied when that array changes.
+  // them (one per point), else the points' coordinate ids (coordinate_ids.h, the
+  // numbering several processes use); copied when that array changes, numbered when the
+  // geometry changes.
   vtkDataArray* IdSource = nullptr;
   vtkMTimeType IdTime = 0;
+  bool IdsFromCoordinates = false;
   std::vector<std::int64_t> Ids; // empty: the point ids
   void UpdateIds(vtkPointSet* input);
   // The vertex nearest p, ties to the lowest id (-1 when there is none).
@@ -104,21 +110,26 @@ struct vtkMalleabilityPaintFilter::vtkInternals
 
 void vtkMalleabilityPaintFilter::vtkInternals::UpdateIds(vtkPointSet* input)
 {
-  vtkDataArray* ids = input->GetPointData()->GetGlobalIds();
+  vtkDataArray* ids = vtkGeoShapingAdapter::PointGlobalIds(input);
   const vtkIdType n = input->GetNumberOfPoints();
   if (ids && (ids->GetNumberOfTuples() != n || ids->GetNumberOfComponents() != 1))
     ids = nullptr;
   if (ids == this->IdSource && (!ids || ids->GetMTime() == this->IdTime) &&
-      (ids || this->Ids.empty()))
+      (ids || this->IdsFromCoordinates))
     return;
   this->IdSource = ids;
   this->IdTime = ids ? ids->GetMTime() : 0;
+  this->IdsFromCoordinates = !ids;
   this->Ids.clear();
   if (ids)
   {
     this->Ids.resize(std::size_t(n));
     for (vtkIdType i = 0; i < n; ++i)
       this->Ids[std::size_t(i)] = std::int64_t(ids->GetTuple1(i));
+  }
+  else
+  {
+    this->Ids = geoshaping::coordinate_ids(this->Xyz.data(), geoshaping::index_t(n));
   }
 }
 
@@ -162,6 +173,7 @@ bool vtkMalleabilityPaintFilter::vtkInternals::Update(
   this->GeometryTime = time;
   this->AdjacencyValid = false;
   this->Adjacency = {};
+  this->IdsFromCoordinates = false; // numbered again by UpdateIds
   vtkIdType firstBad;
   const vtkIdType bad = vtkGeoShapingAdapter::PointsAsDouble(points, this->Xyz, firstBad);
   this->GeometryValid = bad == 0;
@@ -303,6 +315,14 @@ int vtkMalleabilityPaintFilter::RequestData(
     vtkErrorMacro("Input and output must be vtkPointSet.");
     return 0;
   }
+  // Geodesic dabs on several processes need the ghost ring: made here when the input lacks
+  // it (collective), and the output is then the input with the ring, painted.
+  const bool distributed = this->Distributed();
+  std::string ringError;
+  vtkPointSet* ringed = distributed ? this->Internals->GhostRing.Ensure(input,
+                                        vtkMultiProcessController::GetGlobalController(), ringError)
+                                    : input;
+  input = ringed ? ringed : input;
   output->ShallowCopy(input);
   this->NumberOfAppliedDabs = 0;
   this->NumberOfRejectedDabs = 0;
@@ -327,9 +347,13 @@ int vtkMalleabilityPaintFilter::RequestData(
   const vtkIdType n = input->GetNumberOfPoints();
   // With several processes painting geodesically, a process that stops alone would leave
   // the others waiting in a collective: the data checks are agreed on by all.
-  const bool distributed = this->Distributed();
   bool badData = false;
-  if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
+  if (!ringed) // the same on every process
+  {
+    vtkErrorMacro(<< ringError << "; output is the input.");
+    return 1;
+  }
+  else if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
   {
     vtkErrorMacro("Input has " << n << " points; painting supports at most 2^31 - 1.");
     badData = true;
@@ -592,12 +616,12 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
 
   // Local checks and whether the piece changed, agreed on by every process.
   std::string problem;
-  vtkDataArray* gids = input->GetPointData()->GetGlobalIds();
+  vtkDataArray* gids = vtkGeoShapingAdapter::PointGlobalIds(input);
   vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
   if (n > 0 && gids && (gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
     problem = "a point GlobalIds array that is not one value per point";
-  else if (n > 0 && (!ghosts || ghosts->GetNumberOfTuples() != n))
-    problem = "no vtkGhostType point array (ownership of the points)";
+  else if (n > 0 && ghosts && ghosts->GetNumberOfTuples() != n)
+    problem = "a vtkGhostType point array that is not one value per point";
   const bool stale = !in.Geodesic || in.GeometryPoints != input->GetPoints() ||
                      in.GeometrySize != n ||
                      in.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
@@ -642,8 +666,10 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
   if (anyStale)
   {
     std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
+    // Without vtkGhostType this is the one process holding points (GhostRing): all owned.
     for (vtkIdType i = 0; i < n; ++i)
-      owned[std::size_t(i)] = (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
+      owned[std::size_t(i)] =
+        !ghosts || (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
     if (withIds)
       in.UpdateIds(input);
     else
@@ -652,10 +678,19 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
       // several processes claim owned by the lowest (coordinate_ids.h, as the deformation
       // filter does).
       const std::vector<std::uint8_t> claimed = std::move(owned);
+      geoshaping::index_t coincident = 0;
       in.Ids = geoshaping::coordinate_ids(
-        in.Xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex);
+        in.Xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
       in.IdSource = nullptr;
       in.IdTime = 0;
+      in.IdsFromCoordinates = true;
+      const std::string split = geoshaping::coincident_points_refusal(coincident, ex);
+      if (!split.empty())
+      {
+        vtkErrorMacro(<< split << "; no geodesic dab is applied on any process.");
+        in.Geodesic.reset();
+        return true;
+      }
     }
     in.Adjacency = {};
     in.Adjacency.offsets.assign(1, 0);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
 #include <thread>
@@ -142,4 +143,66 @@ TEST(CoordinateIds, NoPointsAnywhereGivesNoIds)
   const auto ids = run({}, Split{ { {}, {}, {} }, { {}, {}, {} } }, owned);
   for (const auto& piece : ids)
     EXPECT_TRUE(piece.empty());
+}
+
+TEST(CoordinateIds, OnePieceNumbersDistinctPointsAsSeveralPiecesDo)
+{
+  // Distinct points (the lattice's repeats dropped), in a shuffled order.
+  std::vector<Point> points = lattice_points(3000, 11);
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  std::shuffle(points.begin(), points.end(), std::mt19937(5));
+  std::vector<double> xyz;
+  for (const Point& x : points)
+    xyz.insert(xyz.end(), { std::get<0>(x), std::get<1>(x), std::get<2>(x) });
+  index_t coincident = -1;
+  const std::vector<std::int64_t> one =
+    coordinate_ids(xyz.data(), index_t(points.size()), &coincident);
+  EXPECT_EQ(coincident, 0);
+  std::vector<std::vector<std::uint8_t>> owned;
+  const Split s = split(points.size(), 3, 9);
+  const auto ids = run(points, s, owned);
+  for (int p = 0; p < 3; ++p)
+    for (std::size_t l = 0; l < s.held[std::size_t(p)].size(); ++l)
+      ASSERT_EQ(ids[std::size_t(p)][l], one[s.held[std::size_t(p)][l]]) << "piece " << p;
+}
+
+TEST(CoordinateIds, OnePieceKeepsCoincidentPointsApartInPointOrder)
+{
+  // Point 1 and 3 coincide (a split node), -0 and +0 too (points 4 and 5).
+  const std::vector<double> xyz = { 2, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, -0.0, 5, 0, 0.0, 5, 0 };
+  index_t coincident = -1;
+  const std::vector<std::int64_t> ids = coordinate_ids(xyz.data(), 6, &coincident);
+  EXPECT_EQ(coincident, 2);
+  EXPECT_EQ(ids, (std::vector<std::int64_t>{ 5, 3, 0, 4, 1, 2 }));
+}
+
+TEST(CoordinateIds, PiecesCountTheirOwnCoincidentPoints)
+{
+  // Piece 0 holds a split node (two claimed points at one position) and a copy of piece
+  // 1's point; piece 1 holds nothing twice but ghost copies of piece 0's point 4 and of
+  // its own point 3, which are copies, not split nodes.
+  const std::vector<Point> points = { { 0, 0, 0 }, { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 },
+    { 3, 0, 0 } };
+  const Split s{ { { 0, 1, 2, 4 }, { 2, 3, 3, 4, 4 } }, { { 1, 1, 0, 1 }, { 1, 1, 0, 0, 0 } } };
+  InProcessHub hub(2);
+  index_t counted[2] = { -1, -1 };
+  std::vector<std::thread> threads;
+  for (int p = 0; p < 2; ++p)
+    threads.emplace_back(
+      [&, p]
+      {
+        std::vector<double> xyz;
+        for (std::size_t i : s.held[std::size_t(p)])
+          xyz.insert(
+            xyz.end(), { std::get<0>(points[i]), std::get<1>(points[i]), std::get<2>(points[i]) });
+        std::vector<std::uint8_t> owned;
+        InProcessExchange ex(hub, p);
+        coordinate_ids(xyz.data(), index_t(s.held[std::size_t(p)].size()),
+          s.claimed[std::size_t(p)].data(), owned, ex, &counted[p]);
+      });
+  for (auto& t : threads)
+    t.join();
+  EXPECT_EQ(counted[0], 1);
+  EXPECT_EQ(counted[1], 0);
 }

@@ -10,6 +10,7 @@
 #include "vtkCellType.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -817,6 +818,15 @@ TEST(ChainMailDeformationFilter, ValidRegionFrameLinkRotatesWithTheMeshAndAxesIs
   const double d[3] = { 3.0, -1.0, 6.0 };
   double dt[3];
   turn(d, dt);
+  // The same point GlobalIds on both (the point ids): without them the order follows the
+  // coordinates (TestChainMailOrder.cxx), which the rotation changes.
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("GlobalIds");
+  ids->SetNumberOfTuples(grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+    ids->SetValue(i, i);
+  grid->GetPointData()->SetGlobalIds(ids);
+  turned->GetPointData()->SetGlobalIds(ids);
   auto run = [&](vtkPolyData* mesh, const double* disp, int frame)
   {
     vtkNew<vtkChainMailDeformationFilter> f;

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -191,6 +192,35 @@ TEST(MalleabilityPaint, GeodesicBrushOnTheUpperSideLeavesTheLowerSideAlone)
   }
   EXPECT_GT(lowerPainted[vtkMalleabilityPaintFilter::EUCLIDEAN], 20);
   EXPECT_EQ(lowerPainted[vtkMalleabilityPaintFilter::GEODESIC], 0);
+}
+
+TEST(MalleabilityPaint, GeodesicDabTiesGoToTheFirstPointInCoordinateOrder)
+{
+  // Two separate triangles, one at p0 = (1, 0, 0), one at p1 = (0, 0, 0); the dab's centre
+  // is as near to both, and its path stays on the triangle of its source. Without
+  // GlobalIds the tie goes to the first in (x, y, z) order, p1, as on several processes
+  // (coordinate_ids.h), not to the lower point id, p0.
+  vtkNew<vtkPoints> points;
+  for (const auto& p : { std::array<double, 3>{ 1, 0, 0 }, std::array<double, 3>{ 0, 0, 0 },
+         std::array<double, 3>{ 2, 1, 0 }, std::array<double, 3>{ 2, -1, 0 },
+         std::array<double, 3>{ -1, 1, 0 }, std::array<double, 3>{ -1, -1, 0 } })
+    points->InsertNextPoint(p.data());
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->AllocateExact(2, 6);
+  const vtkIdType a[3] = { 0, 2, 3 }, b[3] = { 1, 4, 5 };
+  mesh->InsertNextCell(VTK_TRIANGLE, 3, a);
+  mesh->InsertNextCell(VTK_TRIANGLE, 3, b);
+  vtkNew<vtkMalleabilityPaintFilter> paint;
+  paint->SetInputData(mesh);
+  paint->SetInitialMalleability(0.0);
+  paint->SetDistanceMode(vtkMalleabilityPaintFilter::GEODESIC);
+  paint->SetFalloff(vtkMalleabilityPaintFilter::CONSTANT);
+  paint->AddDab(0.5, 0.0, 0.0, 0.6, 1.0, 1.0);
+  paint->Update();
+  vtkFloatArray* m = Malleability(paint->GetOutputDataObject(0));
+  EXPECT_EQ(m->GetValue(1), 1.0f) << "the source: first in coordinate order";
+  EXPECT_EQ(m->GetValue(0), 0.0f);
 }
 
 TEST(MalleabilityPaint, RepaintingReusesTheLocatorAndIsDeterministic)
