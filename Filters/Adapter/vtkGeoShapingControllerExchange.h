@@ -1,4 +1,4 @@
-// geoshaping::Exchange (partitioned_chainmail.h) over a vtkMultiProcessController, for
+// geoshaping::Exchange (exchange.h) over a vtkMultiProcessController, for
 // the GeoShaping filters' distributed paths (ChainMailDeformation, MalleabilityPaint):
 // header-only; a filter that includes it depends on VTK::ParallelCore.
 #ifndef vtkGeoShapingControllerExchange_h
@@ -7,7 +7,7 @@
 #include "vtkCommunicator.h"
 #include "vtkMultiProcessController.h"
 
-#include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/exchange.h"
 
 #include <algorithm>
 #include <vector>

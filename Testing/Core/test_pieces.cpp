@@ -1,6 +1,6 @@
 #include "test_pieces.h"
 
-#include "geoshaping/in_process_exchange.h"
+#include "in_process_exchange.h"
 
 #include <algorithm>
 #include <cmath>

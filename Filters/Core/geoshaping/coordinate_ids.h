@@ -35,7 +35,7 @@
 // piece that numbers its key gives it to the lowest piece that claims it (none: owned
 // by no piece, which set_piece refuses). A claiming piece holds the point's whole ring
 // (one ghost level around its own cells), so any claimant computes it alike.
-#include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/exchange.h"
 
 #include <cstdint>
 #include <string>

@@ -14,7 +14,7 @@
 namespace geoshaping
 {
 
-class Exchange; // partitioned_chainmail.h
+class Exchange; // exchange.h
 
 // Where the vertices a record names are (docs/editing.md, "Ids"). A record names vertices
 // by global id (ChainMailDeformer::global_id), so it does not depend on how the mesh is

@@ -27,7 +27,7 @@
 // label it sets, and a ghost forwards every label it sets itself.
 // Cost: O(t log t) per piece for the t labels it sets, plus per superstep one message
 // to and from each neighbour piece (the lowered border labels) and one all_gather.
-#include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/exchange.h"
 
 #include <cstdint>
 #include <functional>

@@ -1,4 +1,4 @@
-#include "geoshaping/in_process_exchange.h"
+#include "in_process_exchange.h"
 
 #include <algorithm>
 

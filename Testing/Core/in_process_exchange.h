@@ -1,9 +1,9 @@
 #pragma once
-// Exchange (partitioned_chainmail.h) between pieces run by threads of one process: the
+// Exchange (exchange.h) between pieces run by threads of one process: the
 // tests' stand-in for MPI. One InProcessHub is shared; each piece's thread uses its own
 // InProcessExchange. Collectives meet at a barrier, so the calls must be made in the
 // same order on every piece, as with MPI.
-#include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/exchange.h"
 
 #include <condition_variable>
 #include <mutex>
