@@ -568,10 +568,10 @@ bool pqHapticsProxies::shownGraspedVertex(Eigen::Vector3d& position) const
   return true;
 }
 
-bool pqHapticsProxies::lastGraspMalleability(double& malleability) const
+bool pqHapticsProxies::lastGraspFigure(const char* name, double& value) const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
-  if (!proxy || !proxy->GetProperty("LastGraspMalleability"))
+  if (!proxy || !proxy->GetProperty(name))
   {
     return false;
   }
@@ -580,24 +580,18 @@ bool pqHapticsProxies::lastGraspMalleability(double& malleability) const
   {
     return false;
   }
-  malleability = vtkSMPropertyHelper(proxy, "LastGraspMalleability").GetAsDouble();
+  value = vtkSMPropertyHelper(proxy, name).GetAsDouble();
   return true;
+}
+
+bool pqHapticsProxies::lastGraspMalleability(double& malleability) const
+{
+  return this->lastGraspFigure("LastGraspMalleability", malleability);
 }
 
 bool pqHapticsProxies::lastGraspObstacleFraction(double& fraction) const
 {
-  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
-  if (!proxy || !proxy->GetProperty("LastGraspObstacleFraction"))
-  {
-    return false;
-  }
-  proxy->UpdatePropertyInformation();
-  if (vtkSMPropertyHelper(proxy, "LastGraspPointId").GetAsIdType() < 0)
-  {
-    return false;
-  }
-  fraction = vtkSMPropertyHelper(proxy, "LastGraspObstacleFraction").GetAsDouble();
-  return true;
+  return this->lastGraspFigure("LastGraspObstacleFraction", fraction);
 }
 
 double pqHapticsProxies::lastDeformationMilliseconds() const

@@ -116,6 +116,9 @@ public:
   long long numberOfDisplacedPoints() const;
 
 private:
+  // A LastGrasp... information property `name` of the filter's last update, read from the
+  // server; false without the property or while there is no grasp yet.
+  bool lastGraspFigure(const char* name, double& value) const;
   vtkSMProxy* representation(pqPipelineSource* source) const;
   vtkStaticCellLocator* cellLocator(vtkDataSet* data);
 
