@@ -1,6 +1,6 @@
 #include "geoshaping/haptics/contact_patch.h"
 
-#include "geoshaping/triangle_geometry.h"
+#include "geoshaping/mesh/triangle_geometry.h"
 
 #include <algorithm>
 #include <limits>

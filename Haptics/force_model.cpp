@@ -1,6 +1,6 @@
 #include "geoshaping/haptics/force_model.h"
 
-#include "geoshaping/transfer_function.h" // clean_malleability
+#include "geoshaping/deform/transfer_function.h" // clean_malleability
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "geoshaping/haptics/proxy.h"
 
-#include "geoshaping/triangle_geometry.h"
+#include "geoshaping/mesh/triangle_geometry.h"
 
 #include <Eigen/Geometry>
 

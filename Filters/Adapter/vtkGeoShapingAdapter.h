@@ -13,7 +13,7 @@
 #include "vtkSmartPointer.h"         // For vtkSmartPointer
 #include "vtkType.h"
 
-#include "geoshaping/adjacency.h" // For Adjacency
+#include "geoshaping/mesh/adjacency.h" // For Adjacency
 
 #include <vector>
 

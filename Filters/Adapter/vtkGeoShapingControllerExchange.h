@@ -7,7 +7,7 @@
 #include "vtkCommunicator.h"
 #include "vtkMultiProcessController.h"
 
-#include "geoshaping/exchange.h"
+#include "geoshaping/parallel/exchange.h"
 
 #include <algorithm>
 #include <vector>

@@ -13,7 +13,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "geoshaping/coordinate_ids.h"
+#include "geoshaping/parallel/coordinate_ids.h"
 
 #include <algorithm>
 #include <chrono>

@@ -10,7 +10,7 @@
  * arrays (a `GhostCellsGenerator` or `D3` upstream), or when at most one process holds
  * points (nothing is shared); otherwise VTK's vtkGhostCellsGenerator makes one ghost level.
  * The generator matches the pieces' points by point `GlobalIds`: without them (on every
- * process) they are numbered by coordinates first (geoshaping/coordinate_ids.h, what the
+ * process) they are numbered by coordinates first (geoshaping/parallel/coordinate_ids.h, what the
  * filters would number them by; matching by coordinates alone left surfaces without
  * their ghosts in VTK 9.2), and a piece holding two points at one position (split nodes)
  * is refused, since no numbering by coordinates can keep them apart. The copy is kept

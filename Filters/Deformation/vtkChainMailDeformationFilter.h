@@ -164,7 +164,7 @@ public:
   ///@}
 
   ///@{
-  /// Shape of each vertex's valid region (geoshaping/valid_region.h): AXES (default), the
+  /// Shape of each vertex's valid region (geoshaping/deform/valid_region.h): AXES (default), the
   /// paper's box aligned with the coordinate axes; LINK, a cylinder aligned with the rest
   /// link (stretch and compression along it, shear across it), so rotating the mesh and
   /// the displacement rotates the result. Rigid regions translate exactly in both.
@@ -312,7 +312,7 @@ public:
   ///@}
 
   ///@{
-  /// The applied edits as records (see geoshaping/edit_history.h), in order; the
+  /// The applied edits as records (see geoshaping/edit/edit_history.h), in order; the
   /// EditHistory property. A bad record is refused with an error and ends the replay.
   void AddEdit(const char* record);
   void RemoveAllEdits();

@@ -27,12 +27,12 @@
 #include "vtkSparseArrayChanges.h"
 #include "vtkStaticPointLocator.h"
 
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/edit_session.h"
-#include "geoshaping/frame_passes.h"
-#include "geoshaping/partitioned_chainmail.h"
-#include "geoshaping/partitioned_envelope.h"
-#include "geoshaping/sparse_normals.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/edit/edit_session.h"
+#include "geoshaping/mesh/sparse_normals.h"
+#include "geoshaping/parallel/partitioned_chainmail.h"
+#include "geoshaping/parallel/partitioned_envelope.h"
+#include "geoshaping/passes/frame_passes.h"
 
 #include <chrono>
 #include <initializer_list>
@@ -63,7 +63,7 @@ struct vtkChainMailDeformationFilter::vtkInternals
   // The obstacles the deformer holds were built from (data object, MTime per connection).
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> ObstacleSources;
 
-  // The passes after the frame (refinement, relaxation; geoshaping/frame_passes.h), and
+  // The passes after the frame (refinement, relaxation; geoshaping/passes/frame_passes.h), and
   // the vertices they wrote beyond the frame's moved ones last update (restored to rest
   // next update, with the moved ones).
   geoshaping::FramePasses Passes;
@@ -81,7 +81,7 @@ struct vtkChainMailDeformationFilter::vtkInternals
   };
   void Invalidate(Stale level);
 
-  // Editing (geoshaping/edit_session.h): the EditHistory list, its commands and the
+  // Editing (geoshaping/edit/edit_session.h): the EditHistory list, its commands and the
   // history that applies it; the last frame's recipe.
   geoshaping::EditSession Edits;
   geoshaping::EditRecipe FrameRecipe;

@@ -10,9 +10,9 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "geoshaping/bit_cast.h"
-#include "geoshaping/coordinate_ids.h"
-#include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/mesh/bit_cast.h"
+#include "geoshaping/parallel/coordinate_ids.h"
+#include "geoshaping/parallel/partitioned_chainmail.h"
 
 #include <algorithm>
 #include <cmath>

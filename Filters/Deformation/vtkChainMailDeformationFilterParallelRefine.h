@@ -3,8 +3,8 @@
 #ifndef vtkChainMailDeformationFilterParallelRefine_h
 #define vtkChainMailDeformationFilterParallelRefine_h
 
-#include "geoshaping/frame_passes.h"
-#include "geoshaping/partitioned_envelope.h"
+#include "geoshaping/parallel/partitioned_envelope.h"
+#include "geoshaping/passes/frame_passes.h"
 
 #include <cstdint>
 #include <memory>

@@ -6,7 +6,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 
-#include "geoshaping/coordinate_ids.h"
+#include "geoshaping/parallel/coordinate_ids.h"
 
 #include <cmath>
 

@@ -22,7 +22,7 @@
 #ifndef vtkDEMProjection_h
 #define vtkDEMProjection_h
 
-#include "geoshaping/dem_surface.h"
+#include "geoshaping/scenes/dem_surface.h"
 
 #include <proj.h> // PROJ
 

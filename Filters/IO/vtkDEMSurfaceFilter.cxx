@@ -19,7 +19,7 @@
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "geoshaping/dem_surface.h"
+#include "geoshaping/scenes/dem_surface.h"
 
 #include <stdexcept>
 #include <string>

@@ -13,7 +13,7 @@
 #ifndef vtkDEMSurfaceOutput_h
 #define vtkDEMSurfaceOutput_h
 
-#include "geoshaping/dem_surface.h"
+#include "geoshaping/scenes/dem_surface.h"
 
 class vtkDEMProjection;
 class vtkPolyData;

@@ -11,7 +11,7 @@
 #ifndef vtkNpzDEMParser_h
 #define vtkNpzDEMParser_h
 
-#include "geoshaping/dem_surface.h"
+#include "geoshaping/scenes/dem_surface.h"
 
 #include <zip.h> // libzip
 

@@ -20,10 +20,10 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "geoshaping/brush.h"
-#include "geoshaping/coordinate_ids.h"
-#include "geoshaping/partitioned_geodesic.h"
-#include "geoshaping/transfer_function.h"
+#include "geoshaping/deform/transfer_function.h"
+#include "geoshaping/paint/brush.h"
+#include "geoshaping/parallel/coordinate_ids.h"
+#include "geoshaping/parallel/partitioned_geodesic.h"
 
 #include <algorithm>
 #include <chrono>

@@ -16,7 +16,7 @@
  *
  *   m += strength * falloff(d / radius) * (value - m),
  *
- * with Falloff CONSTANT, LINEAR, SMOOTH or GAUSSIAN (see geoshaping/brush.h). Distance
+ * with Falloff CONSTANT, LINEAR, SMOOTH or GAUSSIAN (see geoshaping/paint/brush.h). Distance
  * is EUCLIDEAN (a sphere, found with a vtkStaticPointLocator) or GEODESIC (the path
  * along cell edges from the vertex nearest the centre, bounded by the radius), so a
  * brush on one side of a fault gap or a tight fold does not paint the other side. A dab
@@ -42,13 +42,13 @@
  * In parallel (an MPI server or pvbatch with more than one process) each process paints
  * its own points and their ghost copies. Euclidean painting is exact. Geodesic painting
  * asks for one ghost level and takes point identity from the point GlobalIds (numbered
- * by coordinates, geoshaping/coordinate_ids.h, when the input has none; an input with
+ * by coordinates, geoshaping/parallel/coordinate_ids.h, when the input has none; an input with
  * them on some processes and not on others is refused): the source of a dab is the
  * vertex nearest its centre over all processes (ties to the lowest global id, the rule
  * on one process too) and the distances are found by a distributed label-correcting run
- * (geoshaping/partitioned_geodesic.h), equal bit for bit to one process's. Updates there always
- * repaint every dab (never incrementally) and cannot be aborted midway (an abort on one process
- * would leave the others waiting).
+ * (geoshaping/parallel/partitioned_geodesic.h), equal bit for bit to one process's. Updates there
+ * always repaint every dab (never incrementally) and cannot be aborted midway (an abort on one
+ * process would leave the others waiting).
  */
 #ifndef vtkMalleabilityPaintFilter_h
 #define vtkMalleabilityPaintFilter_h

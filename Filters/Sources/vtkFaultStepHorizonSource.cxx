@@ -17,7 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
 
-#include "geoshaping/sample_scenes.h"
+#include "geoshaping/scenes/sample_scenes.h"
 
 vtkStandardNewMacro(vtkFaultStepHorizonSource);
 

@@ -17,7 +17,7 @@
  * dab list of geoshaping::fault_step_painting, so the same dabs given to the
  * MalleabilityPaint filter reproduce it exactly.
  *
- * The geometry comes from geoshaping/sample_scenes.h (VTK-free, shared with the unit
+ * The geometry comes from geoshaping/scenes/sample_scenes.h (VTK-free, shared with the unit
  * tests and benchmarks). Bad parameters give an error and an empty output.
  */
 #ifndef vtkFaultStepHorizonSource_h

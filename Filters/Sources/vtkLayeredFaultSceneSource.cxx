@@ -11,7 +11,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
-#include "geoshaping/layered_scene.h"
+#include "geoshaping/scenes/layered_scene.h"
 
 #include <algorithm>
 

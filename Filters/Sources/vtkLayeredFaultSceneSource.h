@@ -10,7 +10,7 @@
  * horizon, 1 lower horizon, 2 fault), so each can be painted, extracted or grasped on
  * its own. Vertices are about Spacing apart; everything is shifted by Origin.
  *
- * The geometry comes from geoshaping/layered_scene.h. Bad parameters give an error and
+ * The geometry comes from geoshaping/scenes/layered_scene.h. Bad parameters give an error and
  * an empty output.
  */
 #ifndef vtkLayeredFaultSceneSource_h

@@ -1,6 +1,6 @@
 #include "EditControl.h"
 
-#include "geoshaping/transfer_function.h"
+#include "geoshaping/deform/transfer_function.h"
 
 #include <algorithm>
 #include <cmath>

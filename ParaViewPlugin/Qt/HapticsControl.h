@@ -2,7 +2,7 @@
 // The haptic interactor's decisions, free of Qt, VTK and ParaView so that they are unit
 // tested (Testing/GUI/TestHapticsControl.cpp): where the device workspace sits in the
 // scene, and what one hand asks of the pipeline each frame.
-#include "geoshaping/brush_stroke.h"
+#include "geoshaping/paint/brush_stroke.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -103,7 +103,7 @@ struct HandActions
 // The per-hand state machine. Deform: the press grasps, holding drags by the stylus
 // motion since the press, releasing stops. Paint: a stroke from the press to the
 // release, its dabs a quarter of the brush radius apart along the stylus's path, also
-// between two frames (geoshaping/brush_stroke.h). Hold-and-turn: the object
+// between two frames (geoshaping/paint/brush_stroke.h). Hold-and-turn: the object
 // follows the stylus's translation and rotation since the press (6 DoF, about the
 // stylus tip). Changing the tool ends what the old tool was doing.
 class HandController

@@ -3,8 +3,8 @@
 #include "pqHapticsBrushPanel.h"
 #include "pqHapticsDockRows.h"
 
-#include "geoshaping/brush.h"
 #include "geoshaping/haptics/openhaptics_device.h"
+#include "geoshaping/paint/brush.h"
 
 #include "pqHapticsUndo.h"
 

@@ -2,11 +2,11 @@
 
 #include "pqHapticsMouse.h"
 
-#include "geoshaping/brush.h"
 #include "geoshaping/haptics/contact_patch.h"
 #include "geoshaping/haptics/replay_device.h"
 #include "geoshaping/haptics/servo_loop.h"
 #include "geoshaping/haptics/trace.h"
+#include "geoshaping/paint/brush.h"
 
 #include <pqRenderView.h>
 

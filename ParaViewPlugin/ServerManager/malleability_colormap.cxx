@@ -1,7 +1,7 @@
 #include "malleability_colormap.h"
 
-#include "geoshaping/malleability_preset.h" // its name and points, for the core
-#include "geoshaping_malleability_preset.h" // ../Presets/Malleability_black-body.json
+#include "geoshaping/paint/malleability_preset.h" // its name and points, for the core
+#include "geoshaping_malleability_preset.h"       // ../Presets/Malleability_black-body.json
 
 #include "vtkLogger.h"
 #include "vtkSMSettings.h"

@@ -1,7 +1,7 @@
 #pragma once
 // Scenes for the benchmarks: painted grids and grasps sized to displace a given
 // number of vertices (the paper's Table 1 counts).
-#include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/deform/chainmail_deformer.h"
 #include "test_meshes.h"
 
 namespace geoshaping::bench

@@ -18,9 +18,9 @@
 // BM_Envelope: the envelope refinement (ProjectionSolver::envelope, Axes) after the FIFO
 // Priority frame at the paper's scale, timed the same way (frame, envelope, frame, ...).
 #include "bench_scenes.h"
-#include "geoshaping/link_projection.h"
-#include "geoshaping/relaxation.h"
-#include "geoshaping/sample_scenes.h"
+#include "geoshaping/passes/link_projection.h"
+#include "geoshaping/passes/relaxation.h"
+#include "geoshaping/scenes/sample_scenes.h"
 #include "naive_chainmail.h"
 #include "test_sheets.h"
 

@@ -6,9 +6,9 @@
 // is the sequential one, which no partition into pieces can reproduce, so it moves the
 // same vertices as the core only where the order does not matter (one sponsor per
 // vertex, rigid regions). The valid region is valid_region.h's, the one definition.
-#include "geoshaping/adjacency.h"
-#include "geoshaping/transfer_function.h"
-#include "geoshaping/valid_region.h"
+#include "geoshaping/deform/transfer_function.h"
+#include "geoshaping/deform/valid_region.h"
+#include "geoshaping/mesh/adjacency.h"
 
 #include <Eigen/Core>
 

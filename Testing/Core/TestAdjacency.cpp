@@ -1,4 +1,4 @@
-#include "geoshaping/adjacency.h"
+#include "geoshaping/mesh/adjacency.h"
 
 #include <gtest/gtest.h>
 

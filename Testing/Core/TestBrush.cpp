@@ -1,5 +1,5 @@
-#include "geoshaping/brush.h"
-#include "geoshaping/sample_scenes.h"
+#include "geoshaping/paint/brush.h"
+#include "geoshaping/scenes/sample_scenes.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "geoshaping/brush_stroke.h"
+#include "geoshaping/paint/brush_stroke.h"
 
 #include <gtest/gtest.h>
 

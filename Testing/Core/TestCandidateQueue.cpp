@@ -1,4 +1,4 @@
-#include "geoshaping/candidate_queue.h"
+#include "geoshaping/deform/candidate_queue.h"
 
 #include <gtest/gtest.h>
 

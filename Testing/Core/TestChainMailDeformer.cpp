@@ -1,5 +1,5 @@
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/valid_region.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/deform/valid_region.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

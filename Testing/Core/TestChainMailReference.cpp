@@ -6,8 +6,8 @@
 // exactly: the same vertices moved in the same order, the same sponsors, bit-identical
 // displacements, the same number of candidates examined, for all four queues, across
 // frames, pins, commits, set_rest and global ids.
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/valid_region.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/deform/valid_region.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // any split into pieces, with copies of a point on several pieces (ghosts), coincident
 // points, negative coordinates, -0 and an empty piece; and the owner of each point: the
 // lowest piece that claims a copy of it (none when no piece claims it).
-#include "geoshaping/coordinate_ids.h"
+#include "geoshaping/parallel/coordinate_ids.h"
 #include "in_process_exchange.h"
 
 #include <gtest/gtest.h>

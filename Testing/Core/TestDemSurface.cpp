@@ -1,4 +1,4 @@
-#include "geoshaping/dem_surface.h"
+#include "geoshaping/scenes/dem_surface.h"
 
 #include <gtest/gtest.h>
 

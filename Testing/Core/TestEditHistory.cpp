@@ -1,4 +1,4 @@
-#include "geoshaping/edit_history.h"
+#include "geoshaping/edit/edit_history.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // geoshaping::EditSession: the EditHistory list and its commands (docs/editing.md).
-#include "geoshaping/edit_session.h"
-#include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/edit/edit_session.h"
+#include "geoshaping/parallel/partitioned_chainmail.h"
 #include "in_process_exchange.h"
 #include "test_meshes.h"
 

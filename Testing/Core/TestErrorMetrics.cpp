@@ -1,6 +1,6 @@
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/error_metrics.h"
-#include "geoshaping/valid_region.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/deform/valid_region.h"
+#include "geoshaping/metrics/error_metrics.h"
 #include "test_meshes.h"
 
 #include <Eigen/Geometry>

@@ -1,6 +1,6 @@
 // geoshaping::FramePasses: the refinement and relaxation after a frame, against the
 // core passes called by hand (link_projection.h, relaxation.h).
-#include "geoshaping/frame_passes.h"
+#include "geoshaping/passes/frame_passes.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/layered_scene.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/scenes/layered_scene.h"
 
 #include <gtest/gtest.h>
 

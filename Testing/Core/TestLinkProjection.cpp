@@ -1,5 +1,5 @@
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/link_projection.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/passes/link_projection.h"
 #include "test_meshes.h"
 
 #include <Eigen/Geometry>

@@ -4,7 +4,7 @@
 // bits as the core; elsewhere every moved vertex sits in its sponsor's valid region, and
 // both move about as many vertices.
 #include "bench_scenes.h"
-#include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/deform/chainmail_deformer.h"
 #include "naive_chainmail.h"
 #include "test_meshes.h"
 

@@ -1,8 +1,8 @@
 // The refinement and relaxation passes with obstacles (frame_passes.h): no pass moves a
 // vertex through an obstacle, checked against crossings and distances computed here
 // (test_sheets.h: Cramer's rule, brute-force distance), not by obstacles.h.
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/frame_passes.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/passes/frame_passes.h"
 #include "test_meshes.h"
 #include "test_sheets.h"
 

@@ -1,9 +1,9 @@
 // Sliding contact (Obstacles::slide, ChainMailDeformer::set_sliding): vertices on an
 // obstacle stay on it while they move along it, checked against projections onto the
 // obstacle's planes and distances computed here (test_sheets.h).
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/obstacles.h"
-#include "geoshaping/valid_region.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/deform/obstacles.h"
+#include "geoshaping/deform/valid_region.h"
 #include "test_meshes.h"
 #include "test_sheets.h"
 

@@ -1,8 +1,8 @@
 // Obstacles (obstacles.h) and the deformer's gate, checked against crossings and
 // distances computed here with their own code (Cramer's rule, brute-force distance).
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/obstacles.h"
-#include "geoshaping/valid_region.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/deform/obstacles.h"
+#include "geoshaping/deform/valid_region.h"
 #include "test_meshes.h"
 #include "test_sheets.h"
 

@@ -1,7 +1,7 @@
 // The partitioned ChainMail (partitioned_chainmail.h) against the whole mesh: pieces run
 // by threads exchanging through InProcessExchange must give every vertex the whole
 // mesh's displacement, bit for bit, for any partition into 1..4 pieces.
-#include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/parallel/partitioned_chainmail.h"
 #include "test_meshes.h"
 #include "test_pieces.h"
 

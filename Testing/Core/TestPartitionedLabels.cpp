@@ -5,9 +5,9 @@
 //   after a partitioned ChainMail frame and from random starts with pins, rigid vertices
 //   and a grasp;
 // - the geodesic brush reach (partitioned_geodesic.h) against GeodesicReach.
-#include "geoshaping/partitioned_chainmail.h"
-#include "geoshaping/partitioned_envelope.h"
-#include "geoshaping/partitioned_geodesic.h"
+#include "geoshaping/parallel/partitioned_chainmail.h"
+#include "geoshaping/parallel/partitioned_envelope.h"
+#include "geoshaping/parallel/partitioned_geodesic.h"
 #include "in_process_exchange.h"
 #include "test_meshes.h"
 #include "test_pieces.h"

@@ -1,7 +1,7 @@
 // The re-examination rule, stated directly (chainmail_deformer.h, docs/deformer.md): a
 // candidate found inside its box is NOT marked, so a neighbour that moves later examines
 // it again and may move it.
-#include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/deform/chainmail_deformer.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

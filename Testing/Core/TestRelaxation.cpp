@@ -1,6 +1,6 @@
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/relaxation.h"
-#include "geoshaping/sample_scenes.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/passes/relaxation.h"
+#include "geoshaping/scenes/sample_scenes.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "geoshaping/sample_scenes.h"
+#include "geoshaping/scenes/sample_scenes.h"
 
 #include <gtest/gtest.h>
 

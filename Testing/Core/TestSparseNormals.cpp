@@ -1,4 +1,4 @@
-#include "geoshaping/sparse_normals.h"
+#include "geoshaping/mesh/sparse_normals.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "geoshaping/transfer_function.h"
+#include "geoshaping/deform/transfer_function.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "geoshaping/triangle_geometry.h"
+#include "geoshaping/mesh/triangle_geometry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // ValidRegionFrame::link: the cylinder of valid_region.h, its exact
 // projection, rigid exactness, analytic chains and cones in any orientation, and
 // rotation invariance of whole frames on a triangle horizon and a tetrahedral slab.
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/error_metrics.h"
-#include "geoshaping/sample_scenes.h"
-#include "geoshaping/valid_region.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/deform/valid_region.h"
+#include "geoshaping/metrics/error_metrics.h"
+#include "geoshaping/scenes/sample_scenes.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // tests' stand-in for MPI. One InProcessHub is shared; each piece's thread uses its own
 // InProcessExchange. Collectives meet at a barrier, so the calls must be made in the
 // same order on every piece, as with MPI.
-#include "geoshaping/exchange.h"
+#include "geoshaping/parallel/exchange.h"
 
 #include <condition_variable>
 #include <mutex>

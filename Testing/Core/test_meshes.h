@@ -1,7 +1,7 @@
 #pragma once
 // Small analytic meshes shared by the core tests and benchmarks.
-#include "geoshaping/adjacency.h"
-#include "geoshaping/transfer_function.h"
+#include "geoshaping/deform/transfer_function.h"
+#include "geoshaping/mesh/adjacency.h"
 
 #include <vector>
 

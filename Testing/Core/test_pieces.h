@@ -3,8 +3,8 @@
 // (partitioned_chainmail.h): each piece holds the vertices it owns and one ring of
 // ghosts, every vertex with its global id. Shared by the partitioned tests and the
 // report's distributed section; O(pieces x n log n), for tests only.
-#include "geoshaping/adjacency.h"
-#include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/mesh/adjacency.h"
+#include "geoshaping/parallel/partitioned_chainmail.h"
 #include "test_meshes.h"
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // an out-of-bounds read or a non-finite coordinate.
 #include "vtkChainMailDeformationFilter.h"
 
-#include "geoshaping/edit_history.h"
+#include "geoshaping/edit/edit_history.h"
 #include "vtk_test_meshes.h"
 
 #include "vtkCallbackCommand.h"

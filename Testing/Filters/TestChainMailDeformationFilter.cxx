@@ -1,8 +1,8 @@
 // Tests of vtkChainMailDeformationFilter against the core and against hand values.
 #include "vtkChainMailDeformationFilter.h"
 
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/error_metrics.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/metrics/error_metrics.h"
 #include "test_meshes.h"
 #include "vtk_test_meshes.h"
 

@@ -7,10 +7,10 @@
 #include "vtkFaultStepHorizonSource.h"
 #include "vtkMalleabilityPaintFilter.h"
 
-#include "geoshaping/brush.h"
-#include "geoshaping/candidate_queue.h"
-#include "geoshaping/link_projection.h"
-#include "geoshaping/transfer_function.h"
+#include "geoshaping/deform/candidate_queue.h"
+#include "geoshaping/deform/transfer_function.h"
+#include "geoshaping/paint/brush.h"
+#include "geoshaping/passes/link_projection.h"
 
 #include <vtkNew.h>
 #include <vtkXMLDataElement.h>

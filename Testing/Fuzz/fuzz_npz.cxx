@@ -5,7 +5,7 @@
 #include "vtkDEMProjection.h"
 #include "vtkNpzDEMParser.h"
 
-#include "geoshaping/dem_surface.h"
+#include "geoshaping/scenes/dem_surface.h"
 
 #include <cmath>
 #include <cstdint>

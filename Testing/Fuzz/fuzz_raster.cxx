@@ -11,7 +11,7 @@
 #include "fuzz_require.h"
 #include "vtkDEMProjection.h"
 
-#include "geoshaping/dem_surface.h"
+#include "geoshaping/scenes/dem_surface.h"
 
 #include <cmath>
 #include <cstdint>

@@ -4,8 +4,8 @@
 #include "EditControl.h"
 #include "edit_commands.h"
 
-#include "geoshaping/brush.h"
-#include "geoshaping/edit_session.h"
+#include "geoshaping/edit/edit_session.h"
+#include "geoshaping/paint/brush.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

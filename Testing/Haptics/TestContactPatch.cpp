@@ -1,5 +1,5 @@
 #include "geoshaping/haptics/contact_patch.h"
-#include "geoshaping/triangle_geometry.h"
+#include "geoshaping/mesh/triangle_geometry.h"
 
 #include <gtest/gtest.h>
 

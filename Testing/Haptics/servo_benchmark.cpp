@@ -7,7 +7,7 @@
 #include "geoshaping/haptics/simulated_device.h"
 
 #ifdef GEOSHAPING_HAVE_CORE_MESHES
-#include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/deform/chainmail_deformer.h"
 #include "test_meshes.h"
 #endif
 

@@ -21,8 +21,8 @@
 #include "vtkTriangleFilter.h"
 #include "vtkWindowToImageFilter.h"
 
-#include "geoshaping/malleability_preset.h"
-#include "geoshaping/sample_scenes.h"
+#include "geoshaping/paint/malleability_preset.h"
+#include "geoshaping/scenes/sample_scenes.h"
 
 #include <iostream>
 #include <string>

@@ -15,7 +15,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
-#include "geoshaping/sample_scenes.h"
+#include "geoshaping/scenes/sample_scenes.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 #include "report_measure.h"
 #include "test_pieces.h"
 
-#include "geoshaping/error_metrics.h"
-#include "geoshaping/partitioned_chainmail.h"
+#include "geoshaping/metrics/error_metrics.h"
+#include "geoshaping/parallel/partitioned_chainmail.h"
 
 #include <chrono>
 #include <cstdio>

@@ -7,7 +7,7 @@
 // single-process run; `identical` says whether it equals the single process bit for bit.
 #include "report_scenes.h"
 
-#include "geoshaping/valid_region.h"
+#include "geoshaping/deform/valid_region.h"
 
 #include <ostream>
 #include <string>

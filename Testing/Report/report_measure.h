@@ -3,10 +3,10 @@
 // x relaxation) on a scene.
 #include "report_scenes.h"
 
-#include "geoshaping/chainmail_deformer.h"
-#include "geoshaping/frame_passes.h"
-#include "geoshaping/link_projection.h"
-#include "geoshaping/relaxation.h"
+#include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/passes/frame_passes.h"
+#include "geoshaping/passes/link_projection.h"
+#include "geoshaping/passes/relaxation.h"
 
 #include <memory>
 #include <string>

@@ -1,7 +1,7 @@
 #include "report_scenes.h"
 
-#include "geoshaping/error_metrics.h"
-#include "geoshaping/sample_scenes.h"
+#include "geoshaping/metrics/error_metrics.h"
+#include "geoshaping/scenes/sample_scenes.h"
 #include "test_meshes.h"
 
 #include "vtkCellArray.h"

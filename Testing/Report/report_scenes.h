@@ -1,7 +1,7 @@
 #pragma once
 // The scenes of the error-against-time report (docs/report.md): each a mesh, its
 // painted malleability, a grasp and the pull applied to it.
-#include "geoshaping/adjacency.h"
+#include "geoshaping/mesh/adjacency.h"
 
 #include <Eigen/Core>
 

@@ -3,7 +3,7 @@
 #include "vtkGeoShapingAdapter.h"
 #include "vtk_test_meshes.h"
 
-#include "geoshaping/error_metrics.h"
+#include "geoshaping/metrics/error_metrics.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"

@@ -1,7 +1,7 @@
 // Stability on degenerate and unusual topology, and at scale (docs/stability.md).
 #include "StabilityHarness.h"
 
-#include "geoshaping/chainmail_deformer.h"
+#include "geoshaping/deform/chainmail_deformer.h"
 #include "test_meshes.h"
 
 #include "vtkCellArray.h"

@@ -1,0 +1,295 @@
+#pragma once
+// Structures holding the (candidate, sponsor) pairs awaiting analysis.
+#include "geoshaping/mesh/adjacency.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <queue>
+#include <unordered_map>
+#include <vector>
+
+namespace geoshaping
+{
+
+enum class QueueKind
+{
+  fifo,          // breadth first in supersteps (Li & Brodlie; SuperstepQueue, band 0)
+  priority,      // lowest malleability first, ties in heap order (std::priority_queue)
+  fifo_priority, // lowest malleability first, supersteps among equals (the paper's queue,
+                 // SuperstepQueue; the default)
+  max_violation  // largest constraint violation first (Schill's Enhanced ChainMail)
+};
+
+const char* queue_name(QueueKind kind);
+
+struct Candidate
+{
+  index_t vertex;
+  index_t sponsor;
+};
+
+// The sequential queues (Priority, Max Violation) have push(candidate, rank, violation)
+// / pop(out) / clear(). `rank` is the index of the candidate's malleability among the
+// mesh's sorted distinct values, so rank order is malleability order and equal ranks are
+// exactly equal malleability.
+
+// A binary heap of candidates on one key: the top is the entry `Before` orders first;
+// entries with equal keys come out in whatever order the heap leaves them.
+template<class Key, class Before>
+class KeyedHeap
+{
+public:
+  void push_keyed(Candidate c, Key key) { heap_.push({ key, c }); }
+  bool pop(Candidate& out)
+  {
+    if (heap_.empty())
+      return false;
+    out = heap_.top().c;
+    heap_.pop();
+    return true;
+  }
+  void clear() { heap_ = {}; }
+
+private:
+  struct Item
+  {
+    Key key;
+    Candidate c;
+  };
+  struct Later // std::priority_queue puts the "largest" on top: invert Before
+  {
+    bool operator()(const Item& a, const Item& b) const { return Before()(b.key, a.key); }
+  };
+  std::priority_queue<Item, std::vector<Item>, Later> heap_;
+};
+
+// Like the paper's STL priority queue: lowest rank first, equal ranks in heap order
+// (the "vein" artefact).
+class HeapPriorityQueue : public KeyedHeap<index_t, std::less<index_t>>
+{
+public:
+  static constexpr bool needs_violation = false;
+  static constexpr bool can_peek = false;
+  void push(Candidate c, index_t rank, double) { push_keyed(c, rank); }
+};
+
+// The superstep order of FIFO and FIFO Priority (docs/deformer.md, "Order"): it does
+// not depend on insertion order, so a partitioned mesh gives the same result as one
+// piece. An entry is (candidate c, sponsor s) with the key
+//
+//   (band, root, generation | candidate global id, sponsor global id)
+//
+// - band = c's malleability (FIFO: 0 for all): lowest first;
+// - root = where propagation entered c's band region. An entry into a lower band than
+//   its sponsor's starts a root (its generation, c's id); into the same band it keeps
+//   the sponsor's root; into a higher band, and from the grasp, the base root (0, 0),
+//   which comes first. A region entered downhill at several places is so filled from
+//   the first entry alone, as FIFO Priority's sequential queue does (it drains a lower
+//   band before moving anything else): a rigid region moves as one.
+// - generation = 1 + the superstep in which s moved (the grasp moves in superstep 0).
+//
+// A superstep takes every pending entry of the lowest (band, root, generation) and
+// examines them in (candidate id, sponsor id) order. The entries a superstep creates
+// all have generation t + 1 for superstep t, while its own group has generation
+// g <= t: they never join the superstep that creates them, so the deformer queues them
+// after it ("seal").
+//
+// band is the bit pattern of a float in [0, 1] (+0 for -0), whose unsigned order is the
+// numeric order, so pieces with different sets of malleability values agree on it.
+//
+// Cost: a frame of P pushes (P <= the sum of the degrees of the moved vertices) filed
+// in S supersteps with R distinct (band, root)s costs O(P + S + R log R) time in the
+// usual case, O(P log P + S + R log R) at worst; memory is 8 P bytes, plus 80 bytes per
+// entry of the largest generation (scratch), plus 40 bytes per pending group and ~60
+// per (band, root). How, for the k entries of one generation (seal):
+//
+// 1. They wait in a scratch buffer reused between generations and frames (its size is
+//    the largest generation, not P).
+// 2. k <= 16 (most FIFO Priority supersteps move 1-3 vertices): insertion sort on the
+//    full key below. Otherwise a cheap order of the 64-bit word
+//      (order - min order) << b | (c id - min c id),   b = bit width of the c id range,
+//    `order` being any integer non-decreasing in band (the deformer passes the rank of
+//    the malleability among the piece's distinct values): insertion sort while it has
+//    made at most 4 k moves (a generation comes nearly sorted, the neighbours of
+//    vertices taken in id order), past that a stable LSD radix sort (passes of at most
+//    11 bits); then each run of one word (one candidate) by sponsor id, by insertion (a
+//    run is at most c's degree long). O(k) for ids spanning less than
+//    2^(64 - order bits) (two passes below 2^22); when the word does not fit in 64
+//    bits, a comparison sort on the full key, O(k log k).
+// 3. Check: adjacent entries in full-key order (band, root, c id, s id, then vertex and
+//    sponsor for duplicated ids). It holds when, within a band, the roots are all one
+//    root or all the candidates' own (generation, c id), which is every generation the
+//    deformer seals: one superstep's moved vertices share a band and a root, so an
+//    entry's root follows from its band alone (same band: theirs; lower: its own;
+//    higher: the base). Otherwise (a caller mixing sponsors of different bands or roots
+//    in one generation, or a wrong `order`) a comparison sort on the full key,
+//    O(k log k): the order is the full key's whatever the path.
+// 4. The sorted (vertex, sponsor) pairs, 8 bytes each, are appended to the pool, one
+//    group per (band, root). Groups are chained per (band, root) in filing order, which
+//    is their key order since generations only grow; a binary heap holds the chains,
+//    whose order is their (band, root) and never changes. A superstep continuing its
+//    own chain (the common case) pops and files without heap work; a new (band, root)
+//    costs a hash-map insert and O(log C) for C chains with pending groups.
+//
+// The pool holds the whole frame's entries (groups pop in key order, not in filing
+// order); pool, scratch and heap keep their capacity between frames.
+struct SuperstepRoot
+{
+  std::uint32_t generation = 0; // 0: the base root
+  std::int64_t gid = 0;
+  bool operator==(const SuperstepRoot& o) const
+  {
+    return generation == o.generation && gid == o.gid;
+  }
+};
+
+struct SuperstepEntry
+{
+  std::int64_t candidate_gid;
+  std::int64_t sponsor_gid;
+  SuperstepRoot root;
+  std::uint32_t band;
+  std::uint32_t order; // non-decreasing in band (a hint for the cheap sort; 0 if unknown)
+  index_t vertex;      // the candidate (the deformer's internal id)
+  index_t sponsor;     // the sponsor's slot
+};
+
+// (band, root, generation) as three words compared in lexicographic order, so pieces
+// can reduce it as plain integers.
+using SuperstepKey = std::array<std::uint64_t, 3>;
+
+class SuperstepQueue
+{
+public:
+  static constexpr SuperstepKey none = { ~std::uint64_t(0), ~std::uint64_t(0), ~std::uint64_t(0) };
+  static SuperstepKey key(std::uint32_t band, const SuperstepRoot& root, std::uint32_t generation)
+  {
+    return { std::uint64_t(band) << 32 | root.generation,
+      std::uint64_t(root.gid) ^ (std::uint64_t(1) << 63), generation };
+  }
+  static SuperstepRoot root_of(const SuperstepKey& k)
+  {
+    return { std::uint32_t(k[0]), std::int64_t(k[1] ^ (std::uint64_t(1) << 63)) };
+  }
+  void push(const SuperstepEntry& e) { pending_.push_back(e); }
+  // The same, written in place (no entry copied through the stack).
+  void push(std::int64_t candidate_gid, std::int64_t sponsor_gid, const SuperstepRoot& root,
+    std::uint32_t band, std::uint32_t order, index_t vertex, index_t sponsor)
+  {
+    SuperstepEntry& e = pending_.emplace_back();
+    e.candidate_gid = candidate_gid;
+    e.sponsor_gid = sponsor_gid;
+    e.root = root;
+    e.band = band;
+    e.order = order;
+    e.vertex = vertex;
+    e.sponsor = sponsor;
+  }
+  // Files the entries pushed since the last seal as `generation`, which must exceed the
+  // previous seal's since clear() (std::invalid_argument otherwise).
+  void seal(std::uint32_t generation);
+  // The lowest pending key, `none` when nothing is pending (drops finished chains: not
+  // safe to call from two threads at once).
+  SuperstepKey top() const
+  {
+    drop_done_chains();
+    return heap_.empty() ? none : groups_[chains_[heap_.front()].head].key;
+  }
+  // Removes the group `key` if it is the lowest: its entries are entries()[begin, end),
+  // sorted by (candidate id, sponsor id), valid until the next seal.
+  bool pop(const SuperstepKey& key, std::size_t& begin, std::size_t& end);
+  const Candidate* entries() const { return pool_.data(); }
+  // Empties the queue, keeping the buffers.
+  void clear();
+  std::size_t memory_bytes() const
+  {
+    return pool_.capacity() * sizeof(Candidate) + pending_.capacity() * sizeof(SuperstepEntry) +
+           (words_.capacity() + scratch_.capacity()) * sizeof(Word) +
+           count_.capacity() * sizeof(std::uint32_t) + groups_.capacity() * sizeof(Group) +
+           free_.capacity() * sizeof(std::uint32_t) + chains_.capacity() * sizeof(Chain) +
+           heap_.capacity() * sizeof(std::uint32_t) +
+           chain_of_.size() * (sizeof(ChainKey) + 2 * sizeof(void*) + sizeof(std::uint32_t)) +
+           chain_of_.bucket_count() * sizeof(void*);
+  }
+
+private:
+  static constexpr std::uint32_t nil = ~std::uint32_t(0);
+  struct Group
+  {
+    SuperstepKey key;
+    std::uint32_t begin, end; // in pool_, which holds fewer than 2^32 entries (checked)
+    std::uint32_t next;       // the chain's next group, nil at its tail
+  };
+  // The groups of one (band, root) in filing order, which is their key order: a seal's
+  // generation exceeds every earlier one. Chains differ in (band, root), so their order
+  // does not change as they pop: a binary heap of chains on (band, root).
+  struct ChainKey
+  {
+    std::uint64_t band_generation, gid; // key()'s first two words
+    bool operator==(const ChainKey& o) const
+    {
+      return band_generation == o.band_generation && gid == o.gid;
+    }
+  };
+  struct ChainHash
+  {
+    std::size_t operator()(const ChainKey& k) const
+    {
+      return std::size_t((k.band_generation * 0x9e3779b97f4a7c15ULL) ^ k.gid);
+    }
+  };
+  struct Chain
+  {
+    ChainKey key;
+    std::uint32_t head, tail; // in groups_; head nil: no pending group
+    bool in_heap;
+  };
+  struct Later // for the std:: heap functions on chain ids: the lowest (band, root) on top
+  {
+    const std::vector<Chain>* chains;
+    bool operator()(std::uint32_t a, std::uint32_t b) const
+    {
+      const ChainKey& x = (*chains)[a].key;
+      const ChainKey& y = (*chains)[b].key;
+      return x.band_generation != y.band_generation ? x.band_generation > y.band_generation
+                                                    : x.gid > y.gid;
+    }
+  };
+  struct Word // the cheap sort key of pending_[index]
+  {
+    std::uint64_t key;
+    std::uint32_t index;
+  };
+  static constexpr std::size_t small = 16; // generations sorted on the full key by insertion
+  bool sort_cheaply();
+  void sort_fully();
+  void file(const Group& g);
+  // A chain whose last group popped stays on the heap until it is found on top with
+  // none filed meanwhile: the next superstep most often refills it (same band and root).
+  void drop_done_chains() const;
+  std::vector<Candidate> pool_;
+  std::vector<SuperstepEntry> pending_;     // the generation being pushed
+  std::vector<Word> words_, scratch_;       // its sort order
+  std::vector<std::uint32_t> count_;        // radix counters
+  std::vector<Group> groups_;               // pending groups and free slots
+  std::vector<std::uint32_t> free_;         // free slots of groups_
+  mutable std::vector<Chain> chains_;       // by chain id, the frame's (band, root)s
+  mutable std::vector<std::uint32_t> heap_; // chains with pending groups, a heap on Later
+  std::unordered_map<ChainKey, std::uint32_t, ChainHash> chain_of_; // chains_ by key
+  std::uint32_t last_ = nil; // the chain popped or filed to last (most often the next)
+  std::uint32_t sealed_generation_ = 0;
+};
+
+// Enhanced ChainMail order: the candidate whose rest position lies farthest outside its
+// valid region (at the time it is queued) comes out first; ties in heap order.
+class MaxViolationQueue : public KeyedHeap<double, std::greater<double>>
+{
+public:
+  static constexpr bool needs_violation = true;
+  static constexpr bool can_peek = false;
+  void push(Candidate c, index_t, double violation) { push_keyed(c, violation); }
+};
+
+} // namespace geoshaping
