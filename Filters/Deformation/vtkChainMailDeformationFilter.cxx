@@ -81,40 +81,27 @@ int vtkChainMailDeformationFilter::RequestData(
   this->Statistics = FrameStatistics();
   vtkInternals& state = *this->Internals;
   state.Passes.begin_frame();
-
-  if (this->RequestDataParallel(input, output))
+  // The same stages on one process and on several (docs/mpi.md): on several each is
+  // collective, and the data worked on may be the input with the ghost ring.
+  state.Processes = ProcessExchange();
+  if (!this->SelectInput(input, output) || !this->UpdateGeometry(input))
   {
     return 1;
   }
-
-  vtkPoints* inPoints = input->GetPoints();
   const vtkIdType n = input->GetNumberOfPoints();
-  if (!inPoints || n == 0)
-  {
-    return 1;
-  }
-  if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
-  {
-    vtkErrorMacro("Input has " << n << " points; the deformer supports at most 2^31 - 1.");
-    return 1;
-  }
-
-  if (!this->UpdateGeometry(input))
-  {
-    return 1;
-  }
-  if (!this->UpdateMalleabilityAndPins(input))
-  {
-    return 1;
-  }
-  if (!this->UpdateObstacles(inputVector) || !this->UpdateSliding(inputVector, n))
+  if (!state.AllAgree(
+        n == 0 || (this->UpdateMalleabilityAndPins(input) && this->UpdateObstacles(inputVector) &&
+                    this->UpdateSliding(input))))
   {
     return 1;
   }
   std::vector<int> stale; // the last frame, shown until rewritten
   const std::vector<int> touched = this->UpdateEdits(stale);
   this->Deform(input, stale);
-  this->WriteOutput(input, output, stale, touched);
+  if (n > 0)
+  {
+    this->WriteOutput(input, output, stale, touched);
+  }
   return 1;
 }
 

@@ -86,6 +86,11 @@
 class vtkAlgorithmOutput;
 class vtkIdTypeArray;
 class vtkPiecewiseFunction;
+namespace geoshaping
+{
+struct Adjacency;
+struct FrameResult;
+}
 
 class GEOSHAPINGFILTERSDEFORMATION_EXPORT vtkChainMailDeformationFilter
   : public vtkPointSetAlgorithm
@@ -436,19 +441,34 @@ private:
   vtkChainMailDeformationFilter(const vtkChainMailDeformationFilter&) = delete;
   void operator=(const vtkChainMailDeformationFilter&) = delete;
 
-  // The refinement pass after a successful frame grasping `grasp`.
-  void Refine(vtkIdType grasp);
-  // The relaxation pass after it (or after the frame when there is no refinement).
-  void Relax(vtkIdType grasp);
+  // The refinement pass after a successful frame grasping the point named `grasp` (a
+  // global id where points have ids, else a point index); on several processes the
+  // partitioned envelope (collective).
+  void Refine(std::int64_t grasp);
+  // The relaxation pass after it (or after the frame when there is no refinement); one
+  // process only.
+  void Relax(std::int64_t grasp);
   // A pass's progress and abort check, asked after every sweep; what an abort keeps.
   std::function<bool()> SweepMonitor(int total, int& sweeps, bool& aborted);
   void KeepAbortedPass(const char* pass, int done, int total);
-  // The stages of RequestData (vtkChainMailDeformationFilterUpdate.cxx).
+  // The stages of RequestData (vtkChainMailDeformationFilterUpdate.cxx), the same on one
+  // process and on several; each returns false (after an error, the same on every
+  // process) when the output is the input. The data worked on: the input, or on several
+  // processes the input with the ghost ring the filter made (output = that ring), after
+  // the refusals of what is not distributed (vtkChainMailDeformationFilterParallel.cxx).
+  bool SelectInput(vtkPointSet*& input, vtkPointSet* output);
+  // Geometry and topology into the deformer, when they changed (on any process).
   bool UpdateGeometry(vtkPointSet* input);
+  // The deformer over this process's piece of a new geometry, its points numbered by
+  // `gids` or, when no process has any, by coordinates (Parallel.cxx).
+  bool SetUpPiece(vtkPointSet* input, const std::vector<double>& xyz,
+    geoshaping::Adjacency adjacency, vtkDataArray* gids);
   void BuildOutputCaches(vtkPointSet* input, const std::vector<double>& xyz);
-  // The distributed path (vtkChainMailDeformationFilterParallel.cxx): false when this
-  // update runs in one process.
-  bool RequestDataParallel(vtkPointSet* input, vtkPointSet* output);
+  // The grasped point's name (GraspPointId's naming), -1 for none: GraspPointId, or the
+  // point nearest GraspPosition over every process.
+  std::int64_t ResolveGrasp(vtkPointSet* input);
+  // The frame's statistics (totals over the processes; the grasp's from its owner).
+  void RecordFrame(const geoshaping::FrameResult& r, std::int64_t grasp);
   // The arrays are read from `input`, the data the filter works on (on several processes
   // the input with the ghost ring the filter made, vtkGeoShapingGhostRing).
   bool UpdateMalleabilityAndPins(vtkPointSet* input);
@@ -459,9 +479,9 @@ private:
   // The obstacles of port 1 into the deformer (vtkChainMailDeformationFilterObstacles.cxx);
   // false (after an error) when they are refused.
   bool UpdateObstacles(vtkInformationVector** inputVector);
-  // The sliding mask (input array 2) into the deformer; false (after an error) when it is
-  // refused.
-  bool UpdateSliding(vtkInformationVector** inputVector, vtkIdType n);
+  // The sliding mask (input array 2 of `input`, the data worked on) into the deformer;
+  // false (after an error) when it is refused.
+  bool UpdateSliding(vtkPointSet* input);
   std::vector<int> UpdateEdits(std::vector<int>& stale);
   void Deform(vtkPointSet* input, std::vector<int>& stale);
   bool OutputFits();

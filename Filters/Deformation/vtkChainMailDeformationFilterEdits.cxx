@@ -2,6 +2,7 @@
 // vtkChainMailDeformationFilter: progress, abort and statistics around the core's
 // geoshaping::FramePasses and geoshaping::EditSession.
 #include "vtkChainMailDeformationFilterInternals.h"
+#include "vtkChainMailDeformationFilterParallelRefine.h"
 
 #include <algorithm>
 
@@ -29,19 +30,31 @@ void vtkChainMailDeformationFilter::KeepAbortedPass(const char* pass, int done, 
                   << " sweeps at the user's request.");
 }
 
-void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
+void vtkChainMailDeformationFilter::Refine(std::int64_t grasp)
 {
   vtkInternals& state = *this->Internals;
-  const auto start = std::chrono::steady_clock::now();
-  int sweeps = 0;
-  bool aborted = false;
   geoshaping::ProjectionOptions options;
   options.max_iterations = this->RefinementIterations;
   options.tolerance = this->RefinementTolerance;
   options.solver = static_cast<geoshaping::ProjectionSolver>(this->RefinementSolver);
+  if (state.Partition) // collective, Envelope in the Axes frame; an abort is not agreed
+  {
+    const PartitionedRefinement refined = RefinePartitioned(
+      state.Passes, state.Deformer, state.Envelope, grasp, options, *state.Processes);
+    this->Statistics.LastRefinementMilliseconds = refined.milliseconds;
+    this->Statistics.NumberOfRefinementSweeps = refined.report.iterations;
+    this->Statistics.NumberOfRefinedPoints = vtkIdType(refined.refined);
+    // Each superstep of its label correction is one round.
+    this->Statistics.NumberOfSupersteps = vtkIdType(refined.supersteps);
+    this->Statistics.NumberOfRounds = vtkIdType(refined.supersteps);
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  int sweeps = 0;
+  bool aborted = false;
   options.stop = this->SweepMonitor(this->RefinementIterations, sweeps, aborted);
   const geoshaping::ProjectionReport report =
-    state.Passes.refine(state.Deformer, geoshaping::index_t(grasp), options);
+    state.Passes.refine(state.Deformer, state.Vertex(grasp), options);
   if (aborted)
   {
     this->KeepAbortedPass("Refinement", report.iterations, this->RefinementIterations);
@@ -52,7 +65,7 @@ void vtkChainMailDeformationFilter::Refine(vtkIdType grasp)
   this->Statistics.NumberOfRefinedPoints = vtkIdType(state.Passes.refined_count());
 }
 
-void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
+void vtkChainMailDeformationFilter::Relax(std::int64_t grasp)
 {
   vtkInternals& state = *this->Internals;
   const auto start = std::chrono::steady_clock::now();
@@ -62,7 +75,7 @@ void vtkChainMailDeformationFilter::Relax(vtkIdType grasp)
   options.iterations = this->RelaxationIterations;
   options.stop = this->SweepMonitor(this->RelaxationIterations, sweeps, aborted);
   const geoshaping::RelaxationReport report =
-    state.Passes.relax(state.Deformer, geoshaping::index_t(grasp), options);
+    state.Passes.relax(state.Deformer, state.Vertex(grasp), options);
   if (aborted)
   {
     this->KeepAbortedPass("Relaxation", report.iterations, this->RelaxationIterations);

@@ -133,11 +133,63 @@ struct vtkChainMailDeformationFilter::vtkInternals
   std::unique_ptr<geoshaping::Exchange> EditExchange;
   // Where edit records' ids are: the partition's pieces, else Ids (Parallel.cxx).
   geoshaping::EditPlace Placement() const;
+
+  // The processes of this update: their collectives when there are several, null on
+  // one. Every stage of RequestData runs on both; on several each local refusal is
+  // agreed (a process that stopped alone would leave the others waiting).
+  std::unique_ptr<geoshaping::Exchange> Processes;
+  // Every process's `mine`, by process (on one process: its own).
+  std::vector<std::vector<std::int64_t>> AllGather(const std::vector<std::int64_t>& mine) const
+  {
+    return this->Processes ? this->Processes->all_gather(mine)
+                           : std::vector<std::vector<std::int64_t>>{ mine };
+  }
+  // True on every process when `ok` is true on every process.
+  bool AllAgree(bool ok) const
+  {
+    for (const auto& v : this->AllGather({ ok ? 1 : 0 }))
+      if (!v[0])
+        return false;
+    return true;
+  }
+  // Where a local error happened: "Process k: " on several processes, "" on one.
+  std::string Where() const
+  {
+    return this->Processes ? "Process " + std::to_string(this->Processes->piece()) + ": " : "";
+  }
+  // The name of vertex v, as GraspPointId, LastGraspPointId and the sponsors name it: its
+  // global id where points have ids (point GlobalIds, or several processes), else v.
+  std::int64_t PointName(geoshaping::index_t v) const
+  {
+    return this->Partition || !this->Ids.empty() ? this->Deformer.global_id(v) : v;
+  }
+  // The one process's vertex named `name` (-1: none).
+  geoshaping::index_t Vertex(std::int64_t name) const
+  {
+    std::vector<geoshaping::index_t> holding;
+    this->Holders(name, holding);
+    return holding.empty() ? -1 : holding.front();
+  }
+  // Appends this process's vertices named `name` (none when another process holds it;
+  // the copies of a point held twice).
+  void Holders(std::int64_t name, std::vector<geoshaping::index_t>& out) const
+  {
+    if (this->Partition)
+      this->Partition->holders(name, out);
+    else if (!this->Ids.empty() && this->Ids.find(name) >= 0)
+      out.push_back(this->Ids.find(name));
+    else if (this->Ids.empty() && name >= 0 && name < this->GeometrySize)
+      out.push_back(geoshaping::index_t(name));
+  }
   std::set<std::string> Warned; // WarnOnce's messages, cleared when the geometry changes
 };
 
 namespace vtkChainMailDeformationFilterDetail
 {
+// The global controller's collectives when it has several processes, else null
+// (Parallel.cxx: the filter's own message tags).
+std::unique_ptr<geoshaping::Exchange> ProcessExchange();
+
 inline void SetCurvePoints(geoshaping::Curve& curve, vtkPiecewiseFunction* f)
 {
   curve.points.clear();

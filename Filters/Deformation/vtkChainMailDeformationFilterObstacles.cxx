@@ -122,12 +122,12 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
   return true;
 }
 
-bool vtkChainMailDeformationFilter::UpdateSliding(vtkInformationVector** inputVector, vtkIdType n)
+bool vtkChainMailDeformationFilter::UpdateSliding(vtkPointSet* input)
 {
   vtkInternals& state = *this->Internals;
+  const vtkIdType n = input->GetNumberOfPoints();
   bool valid = true;
-  vtkDataArray* sliding =
-    this->PointMask(2, "Sliding", vtkPointSet::GetData(inputVector[0]), valid);
+  vtkDataArray* sliding = this->PointMask(2, "Sliding", input, valid);
   if (!valid)
   {
     return false;

@@ -5,7 +5,9 @@
 #include "vtkDataArrayRange.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
+#include "vtkUnsignedCharArray.h"
 
+#include "geoshaping/mesh/bit_cast.h"
 #include "geoshaping/parallel/coordinate_ids.h"
 
 #include <cmath>
@@ -58,74 +60,121 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   vtkInternals& state = *this->Internals;
   vtkPoints* inPoints = input->GetPoints();
   const vtkIdType n = input->GetNumberOfPoints();
-  // 1. Geometry and topology: rebuilt only when they change.
+  // 1. Geometry and topology: rebuilt only when they change, on every process when they
+  // changed on any (each rebuilds its piece and replays its edits, collectively). The
+  // checks of the piece are agreed in the same gather, with whether it has GlobalIds.
+  vtkDataArray* gids = vtkGeoShapingAdapter::PointGlobalIds(input);
+  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+  const bool several = bool(state.Processes);
+  std::string problem;
+  if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
+    problem = std::to_string(n) + " points, more than the deformer's 2^31 - 1";
+  else if (several && n > 0 && gids &&
+           (gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
+    problem = "a point GlobalIds array that is not one value per point";
+  else if (several && n > 0 && ghosts && ghosts->GetNumberOfTuples() != n)
+    problem = "a vtkGhostType point array that is not one value per point";
+  if (!problem.empty())
+    vtkErrorMacro(<< state.Where() << problem << "; output is the undeformed input.");
   const vtkMTimeType geometryTime = vtkGeoShapingAdapter::GeometryTime(input);
-  if (!state.GeometryValid || state.GeometryPoints != inPoints || state.GeometrySize != n ||
-      state.GeometryTime != geometryTime || state.GeometryPrecision != this->OutputPointsPrecision)
+  const bool changed = !state.GeometryValid || several != bool(state.Partition) ||
+                       state.GeometryPoints != inPoints || state.GeometrySize != n ||
+                       state.GeometryTime != geometryTime ||
+                       state.GeometryPrecision != this->OutputPointsPrecision;
+  bool ok = true, anyChanged = false, withIds = false, withoutIds = false;
+  for (const auto& v : state.AllGather({ problem.empty(), changed, n == 0 ? 0 : gids ? 1 : 2 }))
   {
-    state.Invalidate(vtkInternals::Stale::Geometry);
-    state.GeometryPoints = inPoints;
-    state.GeometrySize = n;
-    state.GeometryTime = geometryTime;
-    state.GeometryPrecision = this->OutputPointsPrecision;
-
-    std::vector<double> xyz;
-    vtkIdType firstBad;
-    const vtkIdType bad = vtkGeoShapingAdapter::PointsAsDouble(inPoints, xyz, firstBad);
-    if (bad > 0)
-    {
-      vtkErrorMacro("Input has " << bad << " non-finite point coordinates (first at point "
-                                 << firstBad << "); output is the undeformed input.");
-      return false;
-    }
-    vtkIdType skipped = 0;
-    geoshaping::Adjacency adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
-    if (skipped > 0)
-    {
-      vtkWarningMacro(<< skipped
-                      << " cells are of an unsupported type (higher-order or polyhedral) or "
-                         "have invalid point ids; their edges do not propagate deformation.");
-    }
-    if (n > 1 && adjacency.neighbors.empty())
-    {
-      vtkWarningMacro("Input has no cell edges (" << input->GetNumberOfCells()
-                                                  << " cells, none with an edge): only the "
-                                                     "grasped vertex moves.");
-    }
-    state.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
-    // Point GlobalIds decide the propagation order and name the grasp (docs/mpi.md), so
-    // one process gives the same result as several. Without them the order comes from
-    // the coordinates, as on several processes (coordinate_ids.h), and the grasp and the
-    // edit records keep naming point indices.
-    state.Ids.clear();
-    vtkDataArray* gids = vtkGeoShapingAdapter::PointGlobalIds(input);
-    if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
-    {
-      std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
-      for (vtkIdType i = 0; i < n; ++i)
-        gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
-      state.Ids.set(gid.data(), geoshaping::index_t(n));
-      state.Deformer.set_global_ids(gid.data());
-    }
-    else
-    {
-      state.Deformer.set_global_ids(
-        geoshaping::coordinate_ids(xyz.data(), geoshaping::index_t(n)).data());
-    }
-
-    this->BuildOutputCaches(input, xyz);
-    state.GeometryValid = true;
-    ++this->NumberOfRebuilds;
+    ok = ok && v[0];
+    anyChanged = anyChanged || v[1];
+    withIds = withIds || v[2] == 1;
+    withoutIds = withoutIds || v[2] == 2;
+  }
+  if (ok && several && withIds && withoutIds)
+  {
+    vtkErrorMacro("Point GlobalIds on some processes and not on others; output is the "
+                  "undeformed input.");
+    ok = false;
+  }
+  else if (!ok && problem.empty())
+    vtkErrorMacro("Another process refused its piece; output is the undeformed input.");
+  if (!ok)
+  {
+    state.GeometryValid = false;
+    state.Partition.reset();
+    return false;
+  }
+  if (!anyChanged)
+  {
+    return true;
   }
 
-  return state.GeometryValid;
+  state.Invalidate(vtkInternals::Stale::Geometry);
+  std::vector<double> xyz;
+  vtkIdType firstBad = -1;
+  const vtkIdType bad = n == 0 ? 0 : vtkGeoShapingAdapter::PointsAsDouble(inPoints, xyz, firstBad);
+  if (bad > 0)
+  {
+    vtkErrorMacro(<< state.Where() << bad << " non-finite point coordinates (first at point "
+                  << firstBad << "); output is the undeformed input.");
+  }
+  if (!state.AllAgree(bad == 0))
+  {
+    state.Partition.reset();
+    return false;
+  }
+  state.GeometryPoints = inPoints;
+  state.GeometrySize = n;
+  state.GeometryTime = geometryTime;
+  state.GeometryPrecision = this->OutputPointsPrecision;
+  vtkIdType skipped = 0;
+  geoshaping::Adjacency adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
+  if (skipped > 0)
+  {
+    vtkWarningMacro(<< state.Where() << skipped
+                    << " cells are of an unsupported type (higher-order or polyhedral) or "
+                       "have invalid point ids; their edges do not propagate deformation.");
+  }
+  if (n > 1 && adjacency.neighbors.empty())
+  {
+    vtkWarningMacro(<< state.Where() << "input has no cell edges (" << input->GetNumberOfCells()
+                    << " cells, none with an edge): only the grasped vertex moves.");
+  }
+  if (n > 0)
+  {
+    this->BuildOutputCaches(input, xyz);
+    ++this->NumberOfRebuilds;
+  }
+  state.Ids.clear();
+  if (several)
+  {
+    return this->SetUpPiece(input, xyz, std::move(adjacency), withIds ? gids : nullptr);
+  }
+  state.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
+  // Point GlobalIds decide the propagation order and name the grasp (docs/mpi.md), so
+  // one process gives the same result as several. Without them the order comes from
+  // the coordinates, as on several processes (coordinate_ids.h), and the grasp and the
+  // edit records keep naming point indices.
+  if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
+  {
+    std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+      gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
+    state.Ids.set(gid.data(), geoshaping::index_t(n));
+    state.Deformer.set_global_ids(gid.data());
+  }
+  else
+  {
+    state.Deformer.set_global_ids(
+      geoshaping::coordinate_ids(xyz.data(), geoshaping::index_t(n)).data());
+  }
+  state.GeometryValid = true;
+  return true;
 }
 
 void vtkChainMailDeformationFilter::BuildOutputCaches(
   vtkPointSet* input, const std::vector<double>& xyz)
 {
-  // The output's points (and normals) of a new geometry, kept between updates; the
-  // distributed path calls this alone (its deformer is set up by set_piece).
+  // The output's points (and normals) of a new geometry, kept between updates.
   vtkInternals& state = *this->Internals;
   vtkPoints* inPoints = input->GetPoints();
   const vtkIdType n = input->GetNumberOfPoints();
@@ -314,6 +363,55 @@ std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& st
   return touched;
 }
 
+std::int64_t vtkChainMailDeformationFilter::ResolveGrasp(vtkPointSet* input)
+{
+  vtkInternals& state = *this->Internals;
+  if (this->GraspMode != GRASP_NEAREST_TO_POSITION)
+  {
+    return this->GraspPointId;
+  }
+  const double* p = this->GraspPosition;
+  if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+  {
+    vtkErrorMacro("No deformation: GraspPosition (" << p[0] << ", " << p[1] << ", " << p[2]
+                                                    << ") is not finite; output is the "
+                                                       "undeformed input.");
+    return -1;
+  }
+  // Each process's nearest point, then the smallest (squared distance, name) over the
+  // processes: a ghost has its owner's coordinates and name, so the grasp is the same
+  // point for any partition.
+  std::int64_t mine[3] = { 0, 0, 0 }; // found, squared distance's bits, name
+  if (input->GetNumberOfPoints() > 0)
+  {
+    if (!state.Locator)
+    {
+      state.Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+      state.Locator->SetDataSet(input);
+      state.Locator->BuildLocator();
+    }
+    double dist2 = 0.0;
+    const vtkIdType v = NearestPoint(
+      state.Locator, input->GetPoints(), p,
+      [&state](vtkIdType w) { return state.Deformer.global_id(geoshaping::index_t(w)); }, dist2);
+    if (v >= 0)
+    {
+      mine[0] = 1;
+      mine[1] = geoshaping::bit_cast<std::int64_t>(dist2);
+      mine[2] = state.PointName(geoshaping::index_t(v));
+    }
+  }
+  std::int64_t grasp = -1;
+  double best = 0.0;
+  for (const auto& o : state.AllGather({ mine[0], mine[1], mine[2] }))
+  {
+    const double d2 = geoshaping::bit_cast<double>(o[1]);
+    if (o[0] && (grasp < 0 || d2 < best || (d2 == best && o[2] < grasp)))
+      grasp = o[2], best = d2;
+  }
+  return grasp;
+}
+
 void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>& stale)
 {
   vtkInternals& state = *this->Internals;
@@ -325,91 +423,101 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
   {
     vtkErrorMacro("Invalid transfer function: " << tf.validate() << ".");
     state.Deformer.reset();
+    return;
+  }
+  state.Deformer.set_transfer_function(tf);
+  state.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
+  state.Deformer.set_valid_region_frame(
+    static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame));
+
+  // 5. Grasp and deform.
+  const std::int64_t grasp = this->ResolveGrasp(input);
+  if (grasp < 0)
+  {
+    state.Deformer.reset(); // no grasp: the rest shape
+    return;
+  }
+  const Eigen::Vector3d d(this->Displacement[0], this->Displacement[1], this->Displacement[2]);
+  const auto start = std::chrono::steady_clock::now();
+  geoshaping::FrameResult r;
+  if (state.Partition)
+  {
+    r = state.Partition->deform(grasp, d, *state.Processes);
   }
   else
   {
-    state.Deformer.set_transfer_function(tf);
-    state.Deformer.set_queue(static_cast<geoshaping::QueueKind>(this->CandidateQueue));
-    state.Deformer.set_valid_region_frame(
-      static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame));
-
-    // 5. Grasp and deform.
-    vtkIdType grasp = this->GraspPointId;
-    if (this->GraspMode == GRASP_NEAREST_TO_POSITION)
+    const geoshaping::index_t v = state.Vertex(grasp); // checked: 32-bit ids would wrap
+    if (v < 0)
     {
-      if (!(std::isfinite(this->GraspPosition[0]) && std::isfinite(this->GraspPosition[1]) &&
-            std::isfinite(this->GraspPosition[2])))
-      {
-        vtkErrorMacro("No deformation: GraspPosition (" << this->GraspPosition[0] << ", "
-                                                        << this->GraspPosition[1] << ", "
-                                                        << this->GraspPosition[2]
-                                                        << ") is not finite; output is the "
-                                                           "undeformed input.");
-        state.Deformer.reset();
-        return;
-      }
-      if (!state.Locator)
-      {
-        state.Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
-        state.Locator->SetDataSet(input);
-        state.Locator->BuildLocator();
-      }
-      double dist2;
-      grasp = NearestPoint(
-        state.Locator, input->GetPoints(), this->GraspPosition,
-        [&state](vtkIdType v) { return state.Deformer.global_id(geoshaping::index_t(v)); }, dist2);
-    }
-    if (grasp >= 0 && this->GraspMode == GRASP_POINT_ID && !state.Ids.empty())
-    {
-      const geoshaping::index_t local = state.Ids.find(grasp); // GraspPointId is a global id
-      grasp = local < 0 ? n : vtkIdType(local);
-    }
-    if (grasp < 0 && this->GraspMode == GRASP_POINT_ID)
-    {
-      state.Deformer.reset(); // no grasp: the rest shape
-    }
-    else if (grasp >= n)
-    {
-      // Checked here: the core's 32-bit ids would wrap a 64-bit id into range.
-      vtkErrorMacro("No deformation: grasp vertex " << grasp << " is outside [0, " << n
-                                                    << "); output is the undeformed input.");
+      vtkErrorMacro("No deformation: GraspPointId "
+                    << grasp
+                    << (state.Ids.empty() ? " is outside [0, " + std::to_string(n) + ")"
+                                          : std::string(" is no point's GlobalIds value"))
+                    << "; output is the undeformed input.");
       state.Deformer.reset();
+      return;
     }
-    else
+    r = state.Deformer.deform(v, d);
+  }
+  this->Statistics.LastDeformationMilliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (!r.ok)
+  {
+    vtkErrorMacro("No deformation: " << r.message << "; output is the undeformed input.");
+  }
+  state.FrameRecipe = Recipe(this, grasp);
+  if (r.ok && this->RefinementIterations > 0)
+  {
+    this->Refine(grasp);
+  }
+  if (r.ok && this->RelaxationIterations > 0)
+  {
+    this->Relax(grasp);
+  }
+  this->RecordFrame(r, grasp);
+  if (r.ok && !state.AllAgree(n == 0 || this->OutputFits()))
+  {
+    this->DropFrame(stale);
+  }
+}
+
+void vtkChainMailDeformationFilter::RecordFrame(
+  const geoshaping::FrameResult& r, std::int64_t grasp)
+{
+  vtkInternals& state = *this->Internals;
+  // Totals over the processes (each point counted by its owner; the bytes include the
+  // refinement's), and the grasp's figures from the process that owns it.
+  std::int64_t owner[2] = { -1, -1 }; // malleability, obstacle fraction (bits)
+  std::vector<geoshaping::index_t> holding;
+  state.Holders(grasp, holding);
+  for (geoshaping::index_t v : holding)
+    if (r.ok && state.Deformer.owned(v))
     {
-      const auto start = std::chrono::steady_clock::now();
-      const geoshaping::FrameResult r = state.Deformer.deform(geoshaping::index_t(grasp),
-        Eigen::Vector3d(this->Displacement[0], this->Displacement[1], this->Displacement[2]));
-      this->Statistics.LastDeformationMilliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      if (!r.ok)
-      {
-        vtkErrorMacro("No deformation: " << r.message << "; output is the undeformed input.");
-      }
-      this->Statistics.NumberOfDisplacedPoints = vtkIdType(r.moved);
-      this->Statistics.NumberOfExaminedCandidates = vtkIdType(r.examined);
-      this->Statistics.NumberOfObstacleBlockedPoints = vtkIdType(r.blocked);
-      this->Statistics.LastGraspObstacleFraction =
-        r.ok ? r.grasp_fraction : std::numeric_limits<double>::quiet_NaN();
-      this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
-      this->Statistics.LastGraspMalleability = r.ok ? double(state.Deformer.malleability(grasp))
-                                                    : std::numeric_limits<double>::quiet_NaN();
-      state.FrameRecipe =
-        Recipe(this, state.Ids.empty() ? std::int64_t(grasp)
-                                       : state.Deformer.global_id(geoshaping::index_t(grasp)));
-      if (r.ok && this->RefinementIterations > 0)
-      {
-        this->Refine(grasp);
-      }
-      if (r.ok && this->RelaxationIterations > 0)
-      {
-        this->Relax(grasp);
-      }
-      if (r.ok && !this->OutputFits())
-      {
-        this->DropFrame(stale);
-      }
+      owner[0] = geoshaping::bit_cast<std::int64_t>(double(state.Deformer.malleability(v)));
+      owner[1] = geoshaping::bit_cast<std::int64_t>(r.grasp_fraction);
     }
+  const std::int64_t bytes = state.Processes ? std::int64_t(state.Processes->bytes_sent()) : 0;
+  std::int64_t total[4] = { 0, 0, 0, 0 };
+  for (const auto& v : state.AllGather({ std::int64_t(r.moved), std::int64_t(r.examined),
+         std::int64_t(r.blocked), bytes, owner[0], owner[1] }))
+  {
+    for (int k = 0; k < 4; ++k)
+      total[k] += v[std::size_t(k)];
+    if (v[4] != -1)
+    {
+      this->Statistics.LastGraspMalleability = geoshaping::bit_cast<double>(v[4]);
+      this->Statistics.LastGraspObstacleFraction = geoshaping::bit_cast<double>(v[5]);
+    }
+  }
+  this->Statistics.NumberOfDisplacedPoints = vtkIdType(total[0]);
+  this->Statistics.NumberOfExaminedCandidates = vtkIdType(total[1]);
+  this->Statistics.NumberOfObstacleBlockedPoints = vtkIdType(total[2]);
+  this->Statistics.NumberOfBytesExchanged = vtkIdType(total[3]);
+  this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
+  if (state.Partition) // the refinement's supersteps are counted by Refine
+  {
+    this->Statistics.NumberOfSupersteps += vtkIdType(state.Partition->supersteps());
+    this->Statistics.NumberOfRounds += vtkIdType(state.Partition->rounds());
   }
 }
 
@@ -523,14 +631,12 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
     sponsor->SetName("ChainMailSponsor");
     sponsor->SetNumberOfTuples(n);
     sponsor->Fill(-1);
-    // The sponsor's global id where points have ids (point GlobalIds, or several
-    // processes: the same for any partition; -1 on a ghost copy, whose owner examined it),
-    // else its point index.
-    const bool byId = state.Partition || !state.Ids.empty();
+    // The sponsor's name (its global id where points have ids: on several processes the
+    // same for any partition, -1 on a ghost copy, whose owner examined it).
     for (geoshaping::index_t v : state.Deformer.moved())
     {
       const geoshaping::index_t s = state.Deformer.sponsor(v);
-      sponsor->SetValue(v, s < 0 ? -1 : byId ? state.Deformer.global_id(s) : s);
+      sponsor->SetValue(v, s < 0 ? -1 : state.PointName(s));
     }
     for (const IdList* write : IdLists{ &state.Deformer.moved(), &state.PassesWritten })
       for (geoshaping::index_t v : *write)
@@ -539,6 +645,10 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
       }
     output->GetPointData()->AddArray(displacement);
     output->GetPointData()->AddArray(sponsor);
+  }
+  if (state.GeneratedIds) // several processes, numbered by coordinates
+  {
+    output->GetPointData()->SetGlobalIds(state.GeneratedIds);
   }
 }
 

@@ -15,13 +15,14 @@ import sys
 import numpy as np
 from paraview.simple import *  # noqa: F401,F403
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkIdTypeArray
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdTypeArray
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
 scene, out = sys.argv[1], sys.argv[2]
 solver = sys.argv[3] if len(sys.argv) > 3 else "Envelope"
 obstacles = solver == "Obstacles"
-solver = "Envelope" if obstacles else solver
+nearest = solver == "Nearest"  # the same point grasped by GraspMode Nearest To Position
+solver = "Envelope" if obstacles or nearest else solver
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
@@ -54,13 +55,18 @@ ids.UpdatePipeline()
 whole = ids.GetClientSideObject().GetOutputDataObject(0)
 choice = vtkIdTypeArray()
 choice.SetNumberOfTuples(1)
+position = vtkDoubleArray()
+position.SetNumberOfTuples(3)
 os.makedirs(out, exist_ok=True)
 if rank == 0:
     xyz = vtk_to_numpy(whole.GetPoints().GetData()).astype(float)
     gid = vtk_to_numpy(whole.GetPointData().GetGlobalIds())
     lo, hi = xyz.min(axis=0), xyz.max(axis=0)
     target = lo[:2] + np.array(grasp_at) * (hi - lo)[:2]
-    choice.SetValue(0, int(gid[np.argmin(((xyz[:, :2] - target) ** 2).sum(axis=1))]))
+    chosen = int(np.argmin(((xyz[:, :2] - target) ** 2).sum(axis=1)))
+    choice.SetValue(0, int(gid[chosen]))
+    for k in range(3):
+        position.SetValue(k, xyz[chosen, k])
     # The whole mesh's edges (every pair of points sharing a cell), by global id.
     pairs = set()
     for c in range(whole.GetNumberOfCells()):
@@ -72,7 +78,12 @@ if rank == 0:
                     pairs.add((p[a], p[b]) if p[a] < p[b] else (p[b], p[a]))
     np.save(os.path.join(out, "edges.npy"), np.array(sorted(pairs), dtype=np.int64))
 controller.Broadcast(choice, 0)
+controller.Broadcast(position, 0)
 chain.GraspPointId = int(choice.GetValue(0))
+if nearest:
+    chain.GraspPointId = -1
+    chain.GraspMode = "Nearest To Position"
+    chain.GraspPosition = [position.GetValue(k) for k in range(3)]
 chain.Displacement = pull
 chain.UpdatePipeline()
 

@@ -5,7 +5,8 @@ bit for bit, the refined point counts agree, and E_link of the gathered output, 
 here with numpy from the points, the malleability and the filter's default transfer
 curves (an independent computation), is <= 1e-9 L. Then Dykstra on 2 ranks must be
 refused with an error naming what works, leaving the input undeformed, and so must
-obstacles on 2 ranks (docs/obstacles.md, "Refused").
+obstacles on 2 ranks (docs/obstacles.md, "Refused"). And 2 ranks grasping the same point
+by position (GraspMode Nearest To Position) must equal the 1-rank result.
 Usage: test_mpi_refinement.py SCENE (surface or slab)."""
 import json
 import os
@@ -92,6 +93,17 @@ with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as t
         print("ok: %s on 2 ranks refused on every rank (%s), input unchanged"
               % (option, errors[0].strip()[:120]))
 
+    # The same point grasped by position on 2 ranks: the refinement fixes the grasp the
+    # frame resolved (it fixed GraspPointId, -1 here, before the stages were shared).
+    cmd, result, errors = run(2, os.path.join(tmp, "nearest"), "Nearest")
+    if result.returncode != 0 or errors:
+        print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
+        print("FAILED: grasp by position on 2 ranks: exit %d, %d error lines"
+              % (result.returncode, len(errors)))
+        sys.exit(1)
+    rows = np.load(os.path.join(tmp, "nearest", "result.npy"))
+    results["nearest"] = rows[np.unique(rows[:, 0], return_index=True)[1]]
+
 one = results[1]
 moved = int(np.count_nonzero(np.any(one[:, 1:4] != one[:, 4:7], axis=1)))
 if moved < 50 or stats[1]["refined"] < 1:
@@ -112,3 +124,8 @@ for n in (2, 3):
         sys.exit(1)
     print("ok: %d ranks equal 1 rank bit for bit (%d supersteps, %d bytes exchanged)"
           % (n, stats[n]["supersteps"], stats[n]["bytes"]))
+if not np.array_equal(results["nearest"], one):
+    print("FAILED: 2 ranks grasping by position differ from 1 rank grasping by id "
+          "(%d points differ)" % np.count_nonzero(np.any(results["nearest"] != one, axis=1)))
+    sys.exit(1)
+print("ok: 2 ranks grasping the point by position equal 1 rank grasping it by id")
