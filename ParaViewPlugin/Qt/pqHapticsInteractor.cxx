@@ -279,7 +279,6 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
     this->Proxies.lastDeformationMilliseconds(); // updates the information properties
     this->Stats.displacedAtRelease = this->Proxies.numberOfDisplacedPoints();
     this->LastEdit = this->Proxies.runEdit(interactor::EditCommand::commit);
-    this->ReleaseCommits += this->LastEdit.changed ? 1 : 0;
     Q_EMIT this->editsChanged();
   }
   if (actions.begin_stroke)

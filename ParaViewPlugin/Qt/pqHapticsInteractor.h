@@ -92,8 +92,6 @@ public:
   const Figures& figures() const { return this->Stats; }
   // True when every device hand replays a trace and all of them are over.
   bool replaysFinished() const;
-  // The Displacement last sent to the deformation (for the GUI test).
-  const Eigen::Vector3d& lastDisplacement() const { return this->LastDisplacement; }
 
   // Commit / undo / redo / reset on the target ChainMailDeformation, keeping its
   // EditHistory in step (docs/editing.md), then render. Works running or not. A Deform
@@ -101,8 +99,6 @@ public:
   geoshaping::interactor::EditResult runEdit(geoshaping::interactor::EditCommand command);
   const geoshaping::interactor::EditResult& lastEditResult() const { return this->LastEdit; }
   int numberOfEdits() { return this->Proxies.numberOfEdits(); }
-  // Commits made by releases since start (for the GUI test).
-  int releaseCommits() const { return this->ReleaseCommits; }
   pqHapticsProxies& proxies() { return this->Proxies; }
   // The force the servo loop renders from the scene last published for device hand
   // `hand` (0 or 1) at the stylus position of that frame, at rest, as if fresh: what
@@ -155,7 +151,6 @@ private:
   int FramesSince = 0;
   std::uint64_t Sequence = 0;
   geoshaping::interactor::EditResult LastEdit;
-  int ReleaseCommits = 0;
   // A stroke is one step of ParaView's undo stack ("Paint Stroke": the paint proxy's
   // state from the first press to the last release of the hands painting it).
   std::unique_ptr<geoshaping::undo::Step> StrokeStep;

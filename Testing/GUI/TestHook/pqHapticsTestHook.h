@@ -47,6 +47,7 @@ private:
   void faultOpenHaptics();
   void writeResults();
   void writePaint(QTextStream& out);
+  void writeCommittedDisplacement(QTextStream& out);
   void checkEdits(QTextStream& out, vtkPointSet* input, vtkPointSet* output);
 
   pqHapticsDockPanel* Dock;
@@ -63,5 +64,6 @@ private:
   int ReadyPolls = 0;
   int MouseSteps = 0;
   int FaultSteps = 0;
+  int Commits = 0; // edits the dock was told of (editsChanged) that changed the list
   std::shared_ptr<pqPullTestDriver> Pull;
 };
