@@ -166,7 +166,7 @@ bool TraceRecorder::open(const std::string& path)
     return false;
   }
   out_ << "# GeoShaping stylus trace: t x y z qw qx qy qz buttons\n"
-          "# seconds, metres (device frame), unit quaternion, button bitmask\n";
+          "# seconds, metres (device coordinates), unit quaternion, button bitmask\n";
   return bool(out_);
 }
 

@@ -63,11 +63,11 @@
  * propagates across processes in supersteps (the core's partitioned_chainmail.h): the
  * result equals the one-process result bit for bit. GraspPointId is then a global id,
  * as it is in one process whenever the input carries point GlobalIds. Refinement runs
- * there with RefinementSolver REFINEMENT_ENVELOPE in the AXES frame (the core's
+ * there with RefinementSolver REFINEMENT_ENVELOPE with the AXES region (the core's
  * partitioned_envelope.h, the same bits as one process). Edits (commit, undo, redo,
  * EditHistory) and a grasp nearest to GraspPosition work there too. Not distributed
  * yet, refused with the same error on every process (output = input): the other
- * refinement solvers or the LINK frame, relaxation, the Priority and Max Violation
+ * refinement solvers or the LINK region, relaxation, the Priority and Max Violation
  * queues.
  */
 #ifndef vtkChainMailDeformationFilter_h
@@ -233,9 +233,9 @@ public:
 
   ///@{
   /// The refinement's solver (the core's ProjectionSolver, link_projection.h).
-  /// REFINEMENT_ENVELOPE (the default): in the Axes frame one exact pass (every link
+  /// REFINEMENT_ENVELOPE (the default): with the Axes region one exact pass (every link
   /// satisfied, grasp and pins fixed, rigid sets moved as one; not the nearest such shape),
-  /// in the Link frame (which has no envelope) Dykstra. REFINEMENT_DYKSTRA:
+  /// with the Link region (which has no envelope) Dykstra. REFINEMENT_DYKSTRA:
   /// RefinementIterations sweeps of Dykstra's projection, each lowering the link error
   /// without reaching zero in general. REFINEMENT_ADMM: ADMM on the region's link graph (a sparse
   /// factorisation per region), the report's reference solver. The pass runs only when

@@ -7,7 +7,7 @@
 namespace geoshaping::interactor
 {
 
-WorkspaceMapping::WorkspaceMapping(const CameraFrame& camera, double workspace_radius)
+WorkspaceMapping::WorkspaceMapping(const CameraPose& camera, double workspace_radius)
 {
   const Eigen::Vector3d toward_viewer = camera.position - camera.focal_point;
   const double distance = toward_viewer.norm();

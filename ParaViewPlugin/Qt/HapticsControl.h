@@ -14,7 +14,7 @@ namespace geoshaping::interactor
 {
 
 // The active view's camera, in scene units (what vtkCamera reports).
-struct CameraFrame
+struct CameraPose
 {
   Eigen::Vector3d position = Eigen::Vector3d::UnitZ();
   Eigen::Vector3d focal_point = Eigen::Vector3d::Zero();
@@ -33,7 +33,7 @@ class WorkspaceMapping
 {
 public:
   WorkspaceMapping() = default;
-  WorkspaceMapping(const CameraFrame& camera, double workspace_radius);
+  WorkspaceMapping(const CameraPose& camera, double workspace_radius);
 
   // False for a degenerate camera (position on the focal point, up along the view);
   // the mapping is then the identity.
@@ -143,7 +143,7 @@ bool stopped_grasp(const Eigen::Vector3d& press, const Eigen::Vector3d& displace
 // while the stylus's second button is held, in a row along the device's x axis (the
 // screen's right) 1 cm apart, 2 cm above (device y, the screen's up) where the button
 // was pressed; the row is shifted along x to stay inside the workspace. Touching a
-// swatch (the stylus within 4 mm of its centre) picks its value. All in the device frame
+// swatch (the stylus within 4 mm of its centre) picks its value. All in device coordinates
 // (metres), so the palette keeps its size on screen whatever the zoom.
 class StylusPalette
 {

@@ -100,8 +100,9 @@ void pqHapticsDockPanel::build()
   this->Record = new QLineEdit(body);
   this->Record->setObjectName("Record");
   this->Record->setPlaceholderText("none");
-  this->Record->setToolTip("Records each hand's stylus (device frame) while running, to replay "
-                           "it later as a Replay file; hand 2 gets \"-hand2\" in its name.");
+  this->Record->setToolTip(
+    "Records each hand's stylus (device coordinates) while running, to replay "
+    "it later as a Replay file; hand 2 gets \"-hand2\" in its name.");
   auto* recordBrowse = new QToolButton(body);
   recordBrowse->setText("…");
   auto* recordRow = new QHBoxLayout();

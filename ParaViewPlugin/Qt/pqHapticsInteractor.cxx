@@ -40,8 +40,8 @@ struct pqHapticsInteractor::Hand
   haptics::TraceRecorder recorder;      // open when the hand records its stylus
   double recordedUntil = -1.0;          // t of the last recorded sample
   std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
-  Eigen::Vector3d anchor = Eigen::Vector3d::Zero(); // device frame
-  Eigen::Vector3d press = Eigen::Vector3d::Zero();  // the stylus at the press, object frame
+  Eigen::Vector3d anchor = Eigen::Vector3d::Zero(); // device coordinates
+  Eigen::Vector3d press = Eigen::Vector3d::Zero();  // the stylus at the press, object coordinates
   bool pressVertexKnown = false; // builtin: the grasped vertex as shown at the press
   Eigen::Vector3d pressVertex = Eigen::Vector3d::Zero();
   double stiffness = 0.0;
@@ -339,7 +339,7 @@ void pqHapticsInteractor::record(
   }
   else
   {
-    // The mouse in the device frame of the current view, timed since start.
+    // The mouse in device coordinates of the current view, timed since start.
     sample.t = std::chrono::duration<double>(std::chrono::steady_clock::now() - hand.since).count();
     sample.position = mapping.to_device(world.position);
     sample.buttons = world.button ? 1u : 0u;
@@ -421,7 +421,7 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
         haptics::ForceParams(), hand.device->limits());
     }
   }
-  // Contact: the surfaces near the stylus, in the device frame, in any winding (the
+  // Contact: the surfaces near the stylus, in device coordinates, in any winding (the
   // servo's proxy keeps the side the stylus came from). The shape being dragged is left
   // out while any hand drags it (the stylus would fight its own grasp, and its locator
   // would be rebuilt every frame); otherwise the stylus feels it too, e.g. while
@@ -449,7 +449,7 @@ void pqHapticsInteractor::onFrame()
   this->refreshBrush();
   pqRenderView* view = this->Proxies.view();
   vtkSMRenderViewProxy* viewProxy = view ? view->getRenderViewProxy() : nullptr;
-  const interactor::CameraFrame camera = this->Proxies.camera();
+  const interactor::CameraPose camera = this->Proxies.camera();
   const Eigen::Matrix4d object = this->Proxies.objectMatrix();
   const Eigen::Matrix4d toObject = object.inverse();
   this->Stats.contactTriangles = 0;

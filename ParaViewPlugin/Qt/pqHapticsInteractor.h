@@ -38,7 +38,7 @@ public:
     DeviceKind device = NoDevice;
     QString file; // trace for ReplayFile, optional keyframes for Simulated
     geoshaping::interactor::Tool tool = geoshaping::interactor::Tool::deform;
-    // When not empty, the hand's stylus is recorded to this trace file (device frame,
+    // When not empty, the hand's stylus is recorded to this trace file (device coordinates,
     // the format of docs/haptics.md), so it can be replayed as a Replay file device.
     QString record;
   };
@@ -134,7 +134,7 @@ private:
   bool strokeEdit(geoshaping::interactor::EditCommand command);
   // The paint cursor's radius at `at`: the brush's, at least a few pixels on screen.
   double brushCursorRadius(
-    const Eigen::Vector3d& at, const geoshaping::interactor::CameraFrame& camera) const;
+    const Eigen::Vector3d& at, const geoshaping::interactor::CameraPose& camera) const;
 
   std::array<std::unique_ptr<Hand>, 2> Hands;
   pqHapticsProxies Proxies;

@@ -132,7 +132,7 @@ bool pqHapticsInteractor::strokeEdit(interactor::EditCommand command)
 }
 
 double pqHapticsInteractor::brushCursorRadius(
-  const Eigen::Vector3d& at, const interactor::CameraFrame& camera) const
+  const Eigen::Vector3d& at, const interactor::CameraPose& camera) const
 {
   pqRenderView* view = this->Proxies.view();
   vtkRenderer* renderer = view ? view->getRenderViewProxy()->GetRenderer() : nullptr;

@@ -134,21 +134,21 @@ void pqHapticsProxies::refresh()
   }
 }
 
-geoshaping::interactor::CameraFrame pqHapticsProxies::camera() const
+geoshaping::interactor::CameraPose pqHapticsProxies::camera() const
 {
-  geoshaping::interactor::CameraFrame frame;
+  geoshaping::interactor::CameraPose pose;
   auto* viewProxy = this->View ? this->View->getRenderViewProxy() : nullptr;
   vtkCamera* camera = viewProxy ? viewProxy->GetActiveCamera() : nullptr;
   if (camera)
   {
-    frame.position = Eigen::Map<const Eigen::Vector3d>(camera->GetPosition());
-    frame.focal_point = Eigen::Map<const Eigen::Vector3d>(camera->GetFocalPoint());
-    frame.view_up = Eigen::Map<const Eigen::Vector3d>(camera->GetViewUp());
-    frame.view_angle_deg = camera->GetViewAngle();
-    frame.parallel = camera->GetParallelProjection() != 0;
-    frame.parallel_scale = camera->GetParallelScale();
+    pose.position = Eigen::Map<const Eigen::Vector3d>(camera->GetPosition());
+    pose.focal_point = Eigen::Map<const Eigen::Vector3d>(camera->GetFocalPoint());
+    pose.view_up = Eigen::Map<const Eigen::Vector3d>(camera->GetViewUp());
+    pose.view_angle_deg = camera->GetViewAngle();
+    pose.parallel = camera->GetParallelProjection() != 0;
+    pose.parallel_scale = camera->GetParallelScale();
   }
-  return frame;
+  return pose;
 }
 
 vtkSMProxy* pqHapticsProxies::representation(pqPipelineSource* source) const

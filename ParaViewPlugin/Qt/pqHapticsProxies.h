@@ -41,7 +41,7 @@ public:
   pqPipelineSource* deformation() const { return this->Deformation; }
   bool hasPaint() const { return this->Paint != nullptr; }
 
-  geoshaping::interactor::CameraFrame camera() const;
+  geoshaping::interactor::CameraPose camera() const;
 
   // Scene (world) <-> the coordinates of the displayed deformation's data: the
   // representation's Position/Orientation/Origin/Scale, as vtkProp3D composes them.

@@ -1,7 +1,7 @@
 // Per-frame cost of the ChainMail core for each candidate queue at the paper's Table 1
 // displaced-vertex counts and at 1,000,000, the bare BFS floor over the same region,
 // and a 1,000-vertex grasp on a 4,000,000-vertex mesh. BM_Frame's last argument is the
-// valid region frame (0 Axes, the paper's box; 1 Link, the rotation-invariant cylinder);
+// valid-region shape (0 Axes, the paper's box; 1 Link, the rotation-invariant cylinder);
 // each frame's pull is calibrated on its own to displace the target count.
 // BM_Relaxation: the relaxation pass after a frame, timed interleaved with the frame
 // itself (frame, pass, frame, pass, ...) so the ratio is not skewed by load drifting

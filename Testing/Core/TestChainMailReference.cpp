@@ -90,7 +90,7 @@ public:
       const Eigen::Vector3d o = rest_[c] - rest_[s];
       if (!o.allFinite())
         return Eigen::Vector3d::Zero().eval();
-      if (frame == ValidRegionFrame::link) // valid_region.h's own function for either frame
+      if (frame == ValidRegionFrame::link) // valid_region.h's own function for either region shape
         return required_displacement(frame, o, tf(malleability_[c]), disp_[s]);
       const Box b = displacement_bounds(o, tf(malleability_[c]));
       return Eigen::Vector3d::Zero().cwiseMax(disp_[s] + b.lo).cwiseMin(disp_[s] + b.hi).eval();

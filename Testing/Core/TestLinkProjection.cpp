@@ -350,7 +350,7 @@ TEST(LinkProjection, AdmmGivesTheLazyRampInBothFrames)
 
 TEST(LinkProjection, LinkFrameProjectionIsRotationInvariant)
 {
-  // In the Link frame the feasible set of a rotated mesh is the rotated feasible set, so
+  // With the Link region the feasible set of a rotated mesh is the rotated feasible set, so
   // the projection of the rotated start is the rotated projection.
   const Scene sc = scenes()[3]; // uniform quads: no axis-aligned special case
   const Mesh& mesh = sc.mesh;

@@ -393,8 +393,8 @@ TEST(ValidRegionFrame, LinkFrameMovesEachVertexOnceIntoItsSponsorsCylinder)
       EXPECT_GT(region_distance(ValidRegionFrame::link, o, d.params(v), -d.displacement(sp)), 0.0);
     }
     // The error metrics measure against the deformer's frame. Its sponsor links hold in
-    // the Link frame and in the box too: the cylinder lies inside the box
-    // (valid_region.h). An Axes frame's result leaves the cylinders.
+    // the Link region and in the box too: the cylinder lies inside the box
+    // (valid_region.h). An Axes region's result leaves the cylinders.
     LinkMesh lm = link_mesh(d);
     ASSERT_EQ(lm.frame, ValidRegionFrame::link);
     auto sponsor_links = [](const ChainMailDeformer& def, const LinkMesh& mesh)

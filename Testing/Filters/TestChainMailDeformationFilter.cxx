@@ -449,7 +449,7 @@ TEST(ChainMailDeformationFilter, EnvelopeRefinementSatisfiesEveryLinkInAxesAndIs
   grid->GetPoint(grasp, p);
   f->GetOutput()->GetPoint(grasp, q);
   EXPECT_EQ(q[2], p[2] + 12.0);
-  // The Link frame has no envelope: the pass is Dykstra's.
+  // The Link region has no envelope: the pass is Dykstra's.
   for (auto* g : { f.Get(), dykstra.Get() })
   {
     g->SetValidRegionFrame(vtkChainMailDeformationFilter::LINK);

@@ -24,7 +24,7 @@
 
 namespace
 {
-// Rigid stripes in a soft grid turned by 30 degrees about z, pulled in the Link frame: a
+// Rigid stripes in a soft grid turned by 30 degrees about z, pulled with the Link region: a
 // mesh whose result depends on which sponsor wins inside a superstep, so on the ids.
 vtkSmartPointer<vtkPolyData> StripedGrid()
 {

@@ -13,9 +13,9 @@ using Eigen::Vector3d;
 namespace
 {
 // Looking down -z at the origin from 10 units, y up: screen axes are the scene axes.
-CameraFrame topCamera()
+CameraPose topCamera()
 {
-  CameraFrame c;
+  CameraPose c;
   c.position = Vector3d(0, 0, 10);
   c.focal_point = Vector3d::Zero();
   c.view_up = Vector3d::UnitY();
@@ -39,7 +39,7 @@ void expectNear(const Vector3d& a, const Vector3d& b, double tol = 1e-12)
 
 TEST(WorkspaceMapping, PutsTheWorkspaceCentreAtTheFocalPoint)
 {
-  CameraFrame c = topCamera();
+  CameraPose c = topCamera();
   c.focal_point = Vector3d(5e5, 4e6, 100);
   c.position = c.focal_point + Vector3d(0, 0, 10);
   const WorkspaceMapping m(c, 0.08);
@@ -51,7 +51,7 @@ TEST(WorkspaceMapping, WorkspaceRadiusSpansHalfTheViewHeight)
 {
   const WorkspaceMapping m(topCamera(), 0.08);
   EXPECT_NEAR(m.scale(), 10.0 / 0.08, 1e-9);
-  CameraFrame parallel = topCamera();
+  CameraPose parallel = topCamera();
   parallel.parallel = true;
   parallel.parallel_scale = 4.0;
   EXPECT_NEAR(WorkspaceMapping(parallel, 0.1).scale(), 40.0, 1e-12);
@@ -60,7 +60,7 @@ TEST(WorkspaceMapping, WorkspaceRadiusSpansHalfTheViewHeight)
 TEST(WorkspaceMapping, StylusMovesWhereTheUserLooks)
 {
   // Camera on +x looking at the origin, z up: screen right is +y, toward the viewer +x.
-  CameraFrame c;
+  CameraPose c;
   c.position = Vector3d(10, 0, 0);
   c.view_up = Vector3d::UnitZ();
   c.view_angle_deg = 90.0;
@@ -73,7 +73,7 @@ TEST(WorkspaceMapping, StylusMovesWhereTheUserLooks)
 
 TEST(WorkspaceMapping, DeviceToSceneAndBackIsTheIdentity)
 {
-  CameraFrame c;
+  CameraPose c;
   c.position = Vector3d(3, -7, 12);
   c.focal_point = Vector3d(1, 2, 3);
   c.view_up = Vector3d(0.3, 0.2, 1).normalized();
@@ -84,7 +84,7 @@ TEST(WorkspaceMapping, DeviceToSceneAndBackIsTheIdentity)
 
 TEST(WorkspaceMapping, RotationsFollowTheCamera)
 {
-  CameraFrame c;
+  CameraPose c;
   c.position = Vector3d(10, 0, 0);
   c.view_up = Vector3d::UnitZ();
   const WorkspaceMapping m(c, 0.1);
@@ -95,7 +95,7 @@ TEST(WorkspaceMapping, RotationsFollowTheCamera)
 
 TEST(WorkspaceMapping, DegenerateCameraIsInvalid)
 {
-  CameraFrame c = topCamera();
+  CameraPose c = topCamera();
   c.view_up = Vector3d::UnitZ(); // along the view direction
   EXPECT_FALSE(WorkspaceMapping(c, 0.08).valid());
   c = topCamera();

@@ -23,7 +23,7 @@ namespace
 class CameraProjection : public ViewProjection
 {
 public:
-  CameraProjection(const CameraFrame& c, double width, double height, double near, double far)
+  CameraProjection(const CameraPose& c, double width, double height, double near, double far)
   {
     const Vector3d z = (c.position - c.focal_point).normalized();
     const Vector3d x = c.view_up.cross(z).normalized();
@@ -80,7 +80,7 @@ private:
 // An oblique camera on a scene of size `scale` centred at `centre`.
 CameraProjection oblique(double scale, const Vector3d& centre, bool parallel)
 {
-  CameraFrame c;
+  CameraPose c;
   c.focal_point = centre;
   c.position = centre + scale * Vector3d(0.4, -1.6, 1.3);
   c.view_up = Vector3d(0.0, 0.6, 0.8);
@@ -237,7 +237,7 @@ TEST(PullControl, AVerticalSeenEndOnMovesWithTheCursorsUpwardMotion)
 {
   // Looking straight down: the vertical's image is a point. Moving the cursor up raises
   // the grasp toward the viewer by the cursor's motion on the view plane; down lowers it.
-  CameraFrame c;
+  CameraPose c;
   c.position = Vector3d(0, 0, 10);
   c.view_up = Vector3d::UnitY();
   const CameraProjection view(c, 800, 600, 1.0, 100.0);

@@ -45,7 +45,7 @@ def device_axes():
 
 
 def expected_drag(trace_path):
-    """The trace's motion from press to release, device frame -> scene."""
+    """The trace's motion from press to release, device coordinates -> scene."""
     samples = read_trace(trace_path)
     held = [s for s in samples if s[2] & 1]
     press, last = held[0][1], held[-1][1]
@@ -57,7 +57,7 @@ def expected_drag(trace_path):
 # The touch test: a point of the horizon's upper plateau (the fault-step horizon is
 # z = throw = 20 for x < 47) and its normal, the scene's +z.
 PLATEAU_POINT = [20.0, 30.0, 20.0]
-DEPTH = 0.002  # m, how far the stylus ends below the surface (device frame)
+DEPTH = 0.002  # m, how far the stylus ends below the surface (device coordinates)
 
 
 def write_trace(path, title, seconds, sample):
@@ -111,7 +111,7 @@ def write_touch_trace(path):
 
 # The bimanual test: hand 2 paints (value 1) where hand 1's drag has lifted the surface,
 # from 3.0 to 3.8 s while hand 1 holds still at the end of its drag (grasp_drag.trace).
-PAINT_AT = [-0.03, 0.024, 0.022]  # device frame: grasp_drag's press + its drag
+PAINT_AT = [-0.03, 0.024, 0.022]  # device coordinates: grasp_drag's press + its drag
 PLATEAU_Z = 20.0  # the rest surface under the grasp
 
 
@@ -182,7 +182,7 @@ def check_turn(results):
 
 def check_touch(results, normal):
     """At rest 2 mm into the plateau, the force asked of the servo loop is the penalty
-    contact k_c d = 800 N/m * 2 mm = 1.6 N along the surface's normal (device frame)."""
+    contact k_c d = 800 N/m * 2 mm = 1.6 N along the surface's normal (device coordinates)."""
     force = [float(v) for v in results["force_from_last_scene"].split()]
     expected = [800.0 * DEPTH * n for n in normal]
     print("touch force", force, "expected", expected, "triangles sent (max)",

@@ -1,6 +1,6 @@
 """Run by `mpiexec -n N pvbatch --sym` (test_mpi_refinement.py): distributes a scene as
 mpi_deform.py does, deforms it with ChainMailDeformation and one envelope refinement
-(RefinementSolver Envelope, Axes frame), and writes on rank 0:
+(RefinementSolver Envelope, Axes region), and writes on rank 0:
   OUT/result.npy  every owned point's (global id, x, y, z, rest x, y, z, malleability),
                   gathered by global id;
   OUT/edges.npy   the undistributed mesh's edges as global id pairs (rank 0's whole copy);

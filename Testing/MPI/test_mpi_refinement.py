@@ -1,6 +1,6 @@
 """Refinement on distributed data (docs/mpi.md, "Refinement on distributed data"):
 `mpiexec -n 1/2/3 pvbatch --sym` runs mpi_refine.py (ChainMail + one envelope refinement,
-Axes frame) on a scene; the gathered points of 2 and 3 ranks must equal the 1-rank result
+Axes region) on a scene; the gathered points of 2 and 3 ranks must equal the 1-rank result
 bit for bit, the refined point counts agree, and E_link of the gathered output, computed
 here with numpy from the points, the malleability and the filter's default transfer
 curves (an independent computation), is <= 1e-9 L. Then Dykstra on 2 ranks must be

@@ -23,11 +23,11 @@ check(chain.SMProxy.GetProperty("GraspPointId").IsA("vtkSMIntVectorProperty"),
 for queue in ["FIFO", "Priority", "FIFO Priority", "Max Violation"]:
     chain.CandidateQueue = queue
     check(chain.CandidateQueue == queue, "queue %s accepted" % queue)
-check(chain.ValidRegionFrame == "Axes", "default valid region frame is Axes")
+check(chain.ValidRegionFrame == "Axes", "default valid-region shape is Axes")
 chain.ValidRegionFrame = "Link"
-check(chain.ValidRegionFrame == "Link", "valid region frame Link accepted")
+check(chain.ValidRegionFrame == "Link", "valid-region shape Link accepted")
 chain.ValidRegionFrame = "Axes"
-# The refinement's default solver is the one that satisfies every link (Axes frame).
+# The refinement's default solver is the one that satisfies every link (Axes region).
 check(chain.RefinementSolver == "Envelope", "default refinement solver is Envelope")
 
 # A script creates the filter before its input has run: ParaView knows no arrays yet, and

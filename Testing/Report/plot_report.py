@@ -79,8 +79,8 @@ def legend(ax):
     handles = [Line2D([], [], color=COLOURS[q], marker="o", ls="", label=q) for q in QUEUES]
     handles += [Line2D([], [], color="k", marker=MARKERS[k], ls="", mfc="none", label=("refinement: " + k) if k != "relaxed" else "+ relaxation")
                 for k in MARKERS]
-    handles += [Line2D([], [], color="k", marker="o", ls="", label="Axes frame (filled)"),
-                Line2D([], [], color="k", marker="o", ls="", mfc="none", label="Link frame (hollow)"),
+    handles += [Line2D([], [], color="k", marker="o", ls="", label="Axes region (filled)"),
+                Line2D([], [], color="k", marker="o", ls="", mfc="none", label="Link region (hollow)"),
                 Line2D([], [], color="k", lw=0.8, label="Pareto front")]
     ax.legend(handles=handles, fontsize=6, loc="lower left")
 

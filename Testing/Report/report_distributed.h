@@ -30,7 +30,7 @@ struct DistributedRow
   double median_ms = 0.0;     // frame at the scene's pull, wall clock on piece 0
 };
 
-// FIFO Priority in both valid-region frames; global ids are the vertex ids.
+// FIFO Priority in both valid-region shapes; global ids are the vertex ids.
 std::vector<DistributedRow> run_distributed(const Scene& scene, int repetitions, int drag_steps);
 
 struct DistributedScene

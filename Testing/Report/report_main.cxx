@@ -1,5 +1,5 @@
 // The error-against-run-time report (docs/design.md, Error against run time):
-// every variant (queue x valid-region frame x refinement x relaxation, variants() below) on four
+// every variant (queue x valid-region shape x refinement x relaxation, variants() below) on four
 // scenes with its Pareto front of E_link against run time, the paper's Table 1 with the BFS floor,
 // memory per vertex, the CGAL ARAP peer at the fault step's and at the paper's scale, and every
 // scene on distributed data (split into 1-4 pieces, checked bit for bit against one process).
@@ -28,7 +28,7 @@ std::vector<Variant> variants()
   const ValidRegionFrame frames[] = { ValidRegionFrame::axes, ValidRegionFrame::link };
   // Trimmed to keep the run near 10 minutes: Dykstra 4 and ADMM 4 (between their
   // neighbours on every front of the last run) are left out; the envelope is Axes only
-  // (in the Link frame it runs Dykstra); the relaxation (RelaxationIterations 16, tens of
+  // (with the Link region it runs Dykstra); the relaxation (RelaxationIterations 16, tens of
   // times the ChainMail frame) is measured on FIFO Priority, the default queue, after no
   // refinement and after the envelope.
   const std::pair<Refinement, int> refinements[] = { { Refinement::none, 0 },

@@ -1,5 +1,5 @@
 #pragma once
-// Error and run time of one deformation variant (queue x valid-region frame x refinement
+// Error and run time of one deformation variant (queue x valid-region shape x refinement
 // x relaxation) on a scene.
 #include "report_scenes.h"
 
@@ -19,7 +19,7 @@ enum class Refinement
   none,
   dykstra, // `iterations` Dykstra sweeps
   admm,    // at most `iterations` ADMM iterations (RefinementIterations), tolerance 1e-6 L
-  envelope // the envelope (link_projection.h): exactly feasible in one pass, Axes frame
+  envelope // the envelope (link_projection.h): exactly feasible in one pass, Axes region
 };
 
 struct Variant

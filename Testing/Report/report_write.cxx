@@ -234,7 +234,7 @@ void write_results(const Options& o, const Results& r)
         "of 24 small steps across the last quarter of the pull.\n\n"
      << (o.smoke ? "**Smoke run (--smoke): shrunken scenes, not the report's numbers.**\n\n" : "")
      << "## The front\n\nEvery variant: queue (FIFO, Priority, FIFO Priority, Max Violation) x "
-        "valid-region frame (Axes, Link) x refinement (none; Dykstra 1, 16 sweeps; ADMM "
+        "valid-region shape (Axes, Link) x refinement (none; Dykstra 1, 16 sweeps; ADMM "
         "at most 16, 64 iterations, tolerance 1e-6 L; the envelope, Axes only: exactly "
         "feasible in one pass, docs/error-metrics.md) x relaxation (0, or 16 sweeps of "
         "RelaxationIterations on FIFO Priority after no refinement and after the envelope; column "
@@ -253,7 +253,7 @@ void write_results(const Options& o, const Results& r)
   if (!r.scale.rows.empty())
   {
     md << "The Table 1 grid pulled until FIFO Priority displaces " << r.scale.displaced
-       << " vertices (Axes frame): the ChainMail frame takes **"
+       << " vertices (Axes region): the ChainMail frame takes **"
        << fmt("%.2f", r.scale.chainmail_ms) << " ms** (E_link " << g(r.scale.e_link)
        << " L); each refinement is timed with that frame, median of the run's repetitions, "
           "interleaved, the factorisation never reused. The envelope keeps each link's slab "

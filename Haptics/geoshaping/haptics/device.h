@@ -14,7 +14,7 @@
 namespace geoshaping::haptics
 {
 
-// One coherent reading of the stylus, SI units in the device frame: metres, a unit
+// One coherent reading of the stylus, SI units in device coordinates: metres, a unit
 // quaternion, a bitmask of buttons (bit 0 = first button). `t` is seconds since open().
 struct DeviceSample
 {
@@ -31,8 +31,8 @@ struct DeviceLimits
   double max_force = 3.3;        // N, peak
   double max_stiffness = 1000.0; // N/m: above this a virtual spring at 1 kHz may buzz
   double max_damping = 5.0;      // N s/m
-  Eigen::Vector3d workspace_min = Eigen::Vector3d::Constant(-0.08); // m, device frame
-  Eigen::Vector3d workspace_max = Eigen::Vector3d::Constant(0.08);  // m, device frame
+  Eigen::Vector3d workspace_min = Eigen::Vector3d::Constant(-0.08); // m, device coordinates
+  Eigen::Vector3d workspace_max = Eigen::Vector3d::Constant(0.08);  // m, device coordinates
   double workspace_radius = 0.08; // m, radius of the sphere the stylus reaches everywhere
 };
 
@@ -55,7 +55,7 @@ public:
 
   // The current sample; false (and has_error()) when the device cannot deliver one.
   virtual bool read(DeviceSample& sample) = 0;
-  // Force on the stylus in newtons, device frame. Backends clamp to limits().max_force
+  // Force on the stylus in newtons, device coordinates. Backends clamp to limits().max_force
   // again as a last guard and send zero for a non-finite force.
   virtual bool set_force(const Eigen::Vector3d& force) = 0;
 

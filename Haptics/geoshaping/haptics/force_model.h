@@ -46,7 +46,7 @@ double coupling_stiffness(
   double malleability, const ForceParams& params, const DeviceLimits& limits);
 
 // A grasp an obstacle held back (docs/obstacles.md): the grasped vertex stopped at
-// `stopped` (device frame) short of where the stylus put it. The coupling becomes
+// `stopped` (device coordinates) short of where the stylus put it. The coupling becomes
 //
 //   F = k_g (anchor - stopped) + k_w (stopped - x),   k_w = max(k_g, k(0)),
 //
@@ -62,7 +62,7 @@ void hold_grasp_back(SceneSnapshot& scene, const Eigen::Vector3d& stopped,
 
 struct ForceInput
 {
-  Eigen::Vector3d position = Eigen::Vector3d::Zero(); // m, device frame
+  Eigen::Vector3d position = Eigen::Vector3d::Zero(); // m, device coordinates
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero(); // m/s
   bool device_ok = true;
   Clock::time_point now{};

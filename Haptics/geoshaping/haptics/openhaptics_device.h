@@ -23,13 +23,13 @@ bool openhaptics_loads(std::string* why = nullptr);
 // functions it uses; where it is absent open() fails with
 // "OpenHaptics (libHD.so) not found: <loader message>".
 //
-// HD runs its own scheduler thread and only allows device frames inside its callbacks,
-// so open() asks for a 1000 Hz scheduler and schedules one asynchronous callback that,
-// every HD tick, reads position (mm -> m), transform (column-major; rotation ->
-// quaternion) and buttons into a triple buffer and applies the latest force from
-// another triple buffer. read() and set_force() only touch those buffers: neither side
-// ever waits for the other. A sample's time is its tick count / 1000 s (the HD thread's
-// own DeviceClock), so reading the same tick twice gives the same time.
+// HD runs its own scheduler thread and only allows HD frames (hdBeginFrame ... hdEndFrame) inside
+// its callbacks, so open() asks for a 1000 Hz scheduler and schedules one asynchronous callback
+// that, every HD tick, reads position (mm -> m), transform (column-major; rotation -> quaternion)
+// and buttons into a triple buffer and applies the latest force from another triple buffer. read()
+// and set_force() only touch those buffers: neither side ever waits for the other. A sample's time
+// is its tick count / 1000 s (the HD thread's own DeviceClock), so reading the same tick twice
+// gives the same time.
 //
 // Limits come from HD_NOMINAL_MAX_FORCE (N), HD_NOMINAL_MAX_STIFFNESS (N/mm -> N/m),
 // HD_NOMINAL_MAX_DAMPING (N s/mm -> N s/m) and HD_USABLE_WORKSPACE_DIMENSIONS (mm -> m);

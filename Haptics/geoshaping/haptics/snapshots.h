@@ -12,7 +12,7 @@ namespace geoshaping::haptics
 
 using Clock = std::chrono::steady_clock;
 
-// Graphics -> servo: what the stylus should feel, already mapped into the DEVICE frame
+// Graphics -> servo: what the stylus should feel, already mapped into DEVICE coordinates
 // (metres) by the graphics side, which owns the camera and the workspace -> scene
 // mapping; the servo thread never converts coordinates and never calls the pipeline.
 struct SceneSnapshot
@@ -59,7 +59,7 @@ struct DeviceSnapshot
   Eigen::Vector3d force = Eigen::Vector3d::Zero(); // N, as sent
   ForceStatus status = ForceStatus::stale_scene;
   bool in_contact = false;
-  Eigen::Vector3d proxy = Eigen::Vector3d::Zero(); // the contact proxy, device frame
+  Eigen::Vector3d proxy = Eigen::Vector3d::Zero(); // the contact proxy, device coordinates
   std::uint64_t ticks = 0;                         // servo ticks so far
   std::uint64_t zero_ticks = 0;                    // ticks that rendered zero because of a fault
   std::uint64_t scene_sequence = 0;                // sequence of the scene snapshot used

@@ -2,7 +2,7 @@
 // Stylus traces: the plain-text file format shared by ReplayDevice, SimulatedDevice
 // keyframes and TraceRecorder, and interpolation between samples.
 //
-// One sample per line, whitespace separated, SI units in the device frame:
+// One sample per line, whitespace separated, SI units in device coordinates:
 //
 //   t x y z qw qx qy qz buttons
 //

@@ -12,8 +12,8 @@
 // declarations in Haptics/openhaptics_device.cpp, so a wrong value there fails a test.
 //
 // What the fake enforces (stricter than a lenient driver, never looser than HD):
-// device frames only on the scheduler thread and never nested, forces set only inside
-// a frame, one device initialised at a time. A breach raises an HD error and counts in
+// HD frames (hdBeginFrame ... hdEndFrame) only on the scheduler thread and never nested, forces set
+// only inside a frame, one device initialised at a time. A breach raises an HD error and counts in
 // FakeHDState::misuse.
 #include "fake_hd.h"
 

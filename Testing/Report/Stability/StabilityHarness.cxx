@@ -150,7 +150,7 @@ Outcome Check(vtkChainMailDeformationFilter* f, vtkPointSet* input, bool check_i
   const unsigned long e = f->AddObserver(vtkCommand::ErrorEvent, observer);
   const unsigned long w = f->AddObserver(vtkCommand::WarningEvent, observer);
   f->GenerateDiagnosticsOn();
-  // The whole suite runs once per valid region frame (CMakeLists.txt: Stability.* with
+  // The whole suite runs once per valid-region shape (CMakeLists.txt: Stability.* with
   // the default Axes, StabilityLink.* with GEOSHAPING_STABILITY_FRAME=1).
   if (const char* frame = std::getenv("GEOSHAPING_STABILITY_FRAME"))
     f->SetValidRegionFrame(std::atoi(frame));

@@ -10,12 +10,12 @@
 namespace geoshaping
 {
 
-// Which shape the valid region has (docs/deformer.md, "Valid region frame"):
+// Which shape the valid region has (docs/deformer.md, "Valid-region shape"):
 // - axes: the paper's box, aligned with the coordinate axes (default). Its shape depends
 //   on how the link is oriented: a link at 45 degrees gets a shear allowance
 //   h (|o_x| + |o_y|) = sqrt(2) h |o| per axis, one along an axis h |o|, so on a
 //   triangle grid a pull spreads as a diamond and rotating the mesh changes the result.
-// - link: a cylinder in the frame of the rest link (link_displacement_projection below),
+// - link: a cylinder around the rest link (link_displacement_projection below),
 //   the same whatever the orientation: rotating the mesh and the grasp displacement
 //   rotates the result.
 enum class ValidRegionFrame
@@ -208,7 +208,7 @@ inline Eigen::Vector3d required_displacement(ValidRegionFrame frame, const Eigen
 }
 
 // Distance from a displacement difference w = u[c] - u[s] to c's valid region w.r.t. s
-// (0 inside), in either frame.
+// (0 inside), with either region shape.
 inline double region_distance(ValidRegionFrame frame, const Eigen::Vector3d& o,
   const ChainMailParams& p, const Eigen::Vector3d& w)
 {

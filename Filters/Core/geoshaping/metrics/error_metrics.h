@@ -64,7 +64,7 @@ double rigid_error(const LinkMesh& mesh, const Displacements& u);
 // neighbour s, with c's own params (valid_region.h): for o = x0_c - x0_s and the
 // displacement bounds [lo, hi] of (o, params_c), the box is x_s + o + [lo, hi], so
 //   dist = | (u_c - u_s) - clamp(u_c - u_s, lo, hi) |;
-// in the Link frame the distance to the cylinder, | w - link_displacement_projection(o, w) |
+// with the Link region the distance to the cylinder, | w - link_displacement_projection(o, w) |
 // with w = u_c - u_s.
 // 0 when o is not finite (the deformer places no constraint there either).
 double link_distance(const LinkMesh& mesh, const Displacements& u, index_t c, index_t s);

@@ -29,7 +29,7 @@ void FramePasses::ensure_links(const ChainMailDeformer& deformer)
     gated_.assign(std::size_t(links_.size()), 0);
     beyond_.clear();
   }
-  links_.frame = deformer.valid_region_frame(); // the passes keep the frame's regions
+  links_.frame = deformer.valid_region_frame(); // the passes keep the deformer's region shape
 }
 
 void FramePasses::add_beyond(const ChainMailDeformer& deformer, const std::vector<index_t>& changed)

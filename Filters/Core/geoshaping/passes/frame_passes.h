@@ -67,7 +67,7 @@ public:
   ProjectionReport refine_with(const ChainMailDeformer& deformer,
     const std::function<ProjectionReport(const LinkMesh&, LinkProjector&)>& run);
   // Relaxation from the frame's shape so far (after refine() if it ran this frame):
-  // grasp, pins and rigid vertices fixed, links kept in the deformer's valid-region frame.
+  // grasp, pins and rigid vertices fixed, links kept in the deformer's valid-region shape.
   RelaxationReport relax(
     const ChainMailDeformer& deformer, index_t grasp, const RelaxationOptions& options);
 

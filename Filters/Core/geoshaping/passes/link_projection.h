@@ -21,7 +21,7 @@ namespace geoshaping
 //   (lo_cs, hi_cs) = displacement_bounds(o, p_c),  (lo_sc, hi_sc) = displacement_bounds(-o, p_s)
 //
 // which always contains 0 (k <= 1 <= t, h >= 0), so rest is feasible apart from the
-// grasp. In the Link frame (LinkMesh::frame, valid_region.h) c's cylinder around o and
+// grasp. With the Link region (LinkMesh::frame, valid_region.h) c's cylinder around o and
 // s's cylinder around -o (on -w) share the axis e = o / |o|, so both directions are one
 // cylinder on w: along e [max(k_c, k_s) - 1, min(t_c, t_s) - 1] |o|, radius
 // min(h_c, h_s) |o|, projected onto in closed form; everything below holds for either
@@ -67,7 +67,7 @@ namespace geoshaping
 //   one ADMM iteration and needs no factorisation, so a handful of sweeps is the
 //   cheapest way to take the worst links down (the filter's refinement).
 // - envelope: not the nearest point but a feasible one, exactly and in one pass (below);
-//   the Axes frame only (in the Link frame it runs Dykstra).
+//   the Axes region only (with the Link region it runs Dykstra).
 enum class ProjectionSolver
 {
   admm = 0,
@@ -77,7 +77,7 @@ enum class ProjectionSolver
 // "ADMM", "Dykstra", "Envelope" (the plugin's RefinementSolver entries).
 const char* solver_name(ProjectionSolver solver);
 
-// Envelope (Axes frame). Per axis i every link is a difference constraint
+// Envelope (Axes region). Per axis i every link is a difference constraint
 //   lo_ab <= u_a - u_b <= hi_ab   (lo <= 0 <= hi, both directions intersected, above),
 // i.e. u_a <= u_b + hi_ab and u_b <= u_a - lo_ab: an edge-weighted directed graph with
 // weights >= 0 (no negative cycle, so F restricted to an axis is never empty without
@@ -117,19 +117,19 @@ const char* solver_name(ProjectionSolver solver);
 // load 5-9: the first implementation 55-66 ms (frame + envelope 20-22x the frame), this
 // one 31-34 ms (11.3-11.8x). Dykstra and ADMM stall at ~0.9 L there because their grown
 // region is smaller than the feasible configurations' support (47,439 vertices).
-// A Link-frame envelope: a difference constraint bounds u_a - u_b on one world axis, so
+// A Link-region envelope: a difference constraint bounds u_a - u_b on one world axis, so
 // the only inner approximations of a link's cylinder that keep the lattice are boxes
 // aligned with the world axes (the largest cube around 0: half-side
 // min(r / sqrt(3), min(along_hi, -along_lo) / |e|_1)); a box aligned with the link is
 // not (its faces mix the axes). Such an envelope is feasible for the cylinders but
 // depends on how each link sits against the world axes: not rotation invariant, which
-// is what the Link frame is for, and tighter than the cylinder. Not implemented.
+// is what the Link region is for, and tighter than the cylinder. Not implemented.
 
 // ADMM. With x the free variables (weights m: 1, or the size of a rigid set), z their
 // start, and for link k the difference w_k = D_k x + c_k (c_k: the fixed end's value),
 // the projection is  min_x 1/2 sum_i m_i |x_i - z_i|^2  subject to  w_k in C_k,  with
-// C_k the link's feasible set (box in the Axes frame, the intersection of both
-// directions' cylinders in the Link frame, which share the axis e = o / |o|:
+// C_k the link's feasible set (box with the Axes region, the intersection of both
+// directions' cylinders with the Link region, which share the axis e = o / |o|:
 // along-link [max(k_c, k_s) - 1, min(t_c, t_s) - 1] l, radius min(h_c, h_s) l). Splitting
 // y_k = w_k with scaled multipliers lambda_k and over-relaxation alpha = 1.6, one
 // iteration is
@@ -334,7 +334,7 @@ private:
   std::unique_ptr<Factor> factor_;
 };
 
-// One axis of a link's feasible set (Axes frame): lo <= u_c[axis] - u_s[axis] <= hi, both
+// One axis of a link's feasible set (Axes region): lo <= u_c[axis] - u_s[axis] <= hi, both
 // directions intersected, exactly the numbers the envelope uses; false when the rest
 // offset is not finite (no constraint). For the partitioned envelope.
 bool link_axis_slab(const LinkMesh& mesh, index_t c, index_t s, int axis, double& lo, double& hi);
@@ -357,7 +357,7 @@ ProjectionReport refine_links(LinkProjector& projector, const ChainMailDeformer&
 // 0.013 L in 5,000 on the same scene, so rho stays fixed). When the cap ends the run
 // unconverged and options.finish is set, the result x (within the solver's residual of the
 // projection P(z), links violated by about that much) is itself projected: the envelope in
-// the Axes frame (exactly feasible, one pass); in the Link frame ADMM again from x with
+// the Axes region (exactly feasible, one pass); with the Link region ADMM again from x with
 // rho_scale 100 (up to max_iterations; a stiff penalty from a nearly feasible start takes
 // the violation down fast: equal malleability, Link, 1.26e-5 L after 5,000 iterations at
 // the default rho, then 4e-7 L after 90 at 100x, where the earlier finish, 20,000 Dykstra

@@ -85,7 +85,7 @@ bool Relaxer::update(index_t v, RelaxationReport& report)
     return false;
   // Tries current + t (q - current) for t = omega, 1, 1/2, 1/4, ...
   Eigen::Vector3d target = current + over_relaxation * (q - current);
-  // In the Axes frame a step beyond the box breaks a satisfied slab: start at q.
+  // With the Axes region a step beyond the box breaks a satisfied slab: start at q.
   int attempt = mesh_.frame == ValidRegionFrame::axes && box.clamp(target) != target ? 1 : 0;
   if (attempt == 1)
     target = q;

@@ -51,7 +51,7 @@ class ChainMailDeformer;
 //
 // So every link ChainMail satisfied stays satisfied and E_link never grows, while the
 // links ChainMail left violated (it guarantees only the sponsor links) do not freeze the
-// vertices at their ends. Per frame of the valid region:
+// vertices at their ends. Per valid-region shape:
 //
 // - Axes: a satisfied direction is a slab per axis on w = u_v - u_n; their intersection is
 //   a box in u_v containing the current u_v, and q = clamp(m, box) is the exact

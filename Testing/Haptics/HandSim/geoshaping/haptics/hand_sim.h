@@ -13,7 +13,7 @@
 namespace geoshaping::haptics
 {
 
-// The hand's force on the stylus (N, device frame) at time t (s), linear in between.
+// The hand's force on the stylus (N, device coordinates) at time t (s), linear in between.
 struct HandKey
 {
   double t = 0.0;
@@ -73,7 +73,7 @@ struct HandSimOptions
   double grasp_stiffness = 0.0;
 };
 
-// The scene at time t (device frame, metres): a triangle soup, filled into `soup`.
+// The scene at time t (device coordinates, metres): a triangle soup, filled into `soup`.
 using SceneAt = std::function<void(double t, std::vector<Eigen::Vector3d>& soup)>;
 
 // Runs until the last key's t: one row per servo tick, t = k T. Per tick: read the
