@@ -4,21 +4,13 @@ MalleabilityPaint (Falloff GEOSHAPING_GUI_FALLOFF, else the default) into
 ChainMailDeformation, coloured with the black-body map, seen from above."""
 import os
 
-from paraview.simple import *
+from paraview.simple import *  # noqa: F401,F403
 
-import geoshaping_presets  # ParaViewPlugin/Python, on PYTHONPATH
+from gui_scene import scene_ready, show_deformable
 
-surface = OpenDataFile(os.environ["GEOSHAPING_GUI_SURFACE"])
-paint = MalleabilityPaint(Input=surface)
-if os.environ.get("GEOSHAPING_GUI_FALLOFF"):
-    paint.Falloff = os.environ["GEOSHAPING_GUI_FALLOFF"]
-deformation = ChainMailDeformation(Input=paint)
-deformation.MalleabilityArray = ["POINTS", "Malleability"]
-view = GetActiveViewOrCreate("RenderView")
-display = Show(deformation, view)
-geoshaping_presets.show_malleability(display)
-view.OrientationAxesVisibility = 0
-Render(view)  # paraview.simple resets the camera on the first render: set it after
+surface = OpenDataFile(os.environ["GEOSHAPING_GUI_SURFACE"])  # noqa: F405
+deformation, view = show_deformable(surface, os.environ.get("GEOSHAPING_GUI_FALLOFF"))
+Render(view)  # noqa: F405 (paraview.simple resets the camera on the first render: set it after)
 bounds = surface.GetDataInformation().GetBounds()
 centre = [0.5 * (bounds[2 * i] + bounds[2 * i + 1]) for i in range(3)]
 view.CameraFocalPoint = centre
@@ -26,5 +18,4 @@ view.CameraPosition = [centre[0], centre[1], centre[2] + 1.0]
 view.CameraViewUp = [0.0, 1.0, 0.0]
 view.CameraParallelProjection = 0
 view.ResetCamera()
-SetActiveSource(deformation)
-Render(view)
+scene_ready(deformation, view)

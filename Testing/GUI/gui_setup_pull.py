@@ -5,6 +5,7 @@ through ChainMailDeformation: "Pull unit" (scaled to a 1 x 0.6 x 0.2 box at the 
 from paraview.simple import *
 
 import geoshaping_presets  # ParaViewPlugin/Python, on PYTHONPATH
+from gui_scene import scene_ready
 
 view = GetActiveViewOrCreate("RenderView")
 view.OrientationAxesVisibility = 0
@@ -17,5 +18,4 @@ for name, scale, offset in (("Pull unit", 0.01, [0.0, 0.0, 0.0]),
     deformation = ChainMailDeformation(Input=scaled, registrationName=name)
     deformation.MalleabilityArray = ["POINTS", "Malleability"]
     geoshaping_presets.show_malleability(Show(deformation, view))
-SetActiveSource(deformation)
-Render(view)
+scene_ready(deformation, view)

@@ -87,15 +87,17 @@ void pqHapticsTestHook::poll()
       this->StateLoaded = true;
       return;
     }
-    // Wait for the pipeline (the --script that builds it runs after the plugin loads),
-    // then one more second: the script's renders process events, so this timer can
-    // fire before the script has set the camera.
+    // Wait for the pipeline (the --script that builds it runs after the plugin loads).
+    // The script's renders process events, so this timer fires mid-script: a test's
+    // setup says when it is complete (gui_scene.py, GEOSHAPING_GUI_SCENE_READY) and a
+    // loaded state is complete; a demo's own script is given one more second.
     if (!pqHapticsFindSource("ChainMailDeformation") || !pqActiveObjects::instance().activeView())
     {
       this->ReadyPolls = 0;
       return;
     }
-    if (++this->ReadyPolls < 10)
+    const bool ready = this->StateLoaded || qEnvironmentVariableIsSet("GEOSHAPING_GUI_SCENE_READY");
+    if (!ready && (!this->Output.isEmpty() || ++this->ReadyPolls < 10))
     {
       return;
     }
