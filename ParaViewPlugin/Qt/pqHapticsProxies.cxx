@@ -101,6 +101,7 @@ pqPipelineSource* paintUpstreamOf(pqPipelineSource* source)
 
 void pqHapticsProxies::refresh()
 {
+  this->InformationRead = false;
   auto& active = pqActiveObjects::instance();
   this->View = qobject_cast<pqRenderView*>(active.activeView());
   pqPipelineSource* deformation = active.activeSource();
@@ -477,6 +478,7 @@ geoshaping::interactor::EditResult pqHapticsProxies::runEdit(
   {
     proxy->InvokeCommand(geoshaping::interactor::command_property(command));
   }
+  this->InformationRead = false;
   result.changed = proxy->GetLastEditChanged();
   result.edits = static_cast<std::size_t>(this->numberOfEdits());
   result.redoable = proxy->GetLastEditRedoable();
@@ -516,6 +518,7 @@ void pqHapticsProxies::render()
   {
     this->View->getViewProxy()->StillRender();
   }
+  this->InformationRead = false; // the filter may have updated
 }
 
 bool pqHapticsProxies::graspedVertex(Eigen::Vector3d& position, double& malleability) const
@@ -575,7 +578,7 @@ bool pqHapticsProxies::lastGraspFigure(const char* name, double& value) const
   {
     return false;
   }
-  proxy->UpdatePropertyInformation();
+  this->readInformation(proxy);
   if (vtkSMPropertyHelper(proxy, "LastGraspPointId").GetAsIdType() < 0)
   {
     return false;
@@ -601,8 +604,17 @@ double pqHapticsProxies::lastDeformationMilliseconds() const
   {
     return 0.0;
   }
-  proxy->UpdatePropertyInformation();
+  this->readInformation(proxy);
   return vtkSMPropertyHelper(proxy, "LastDeformationMilliseconds").GetAsDouble();
+}
+
+void pqHapticsProxies::readInformation(vtkSMProxy* proxy) const
+{
+  if (!this->InformationRead)
+  {
+    proxy->UpdatePropertyInformation();
+    this->InformationRead = true;
+  }
 }
 
 long long pqHapticsProxies::numberOfDisplacedPoints() const

@@ -119,6 +119,9 @@ private:
   // A LastGrasp... information property `name` of the filter's last update, read from the
   // server; false without the property or while there is no grasp yet.
   bool lastGraspFigure(const char* name, double& value) const;
+  // The filter's information properties from the server, once between two updates of
+  // the filter (render, an edit command, a new target): a frame reads them at most once.
+  void readInformation(vtkSMProxy* proxy) const;
   vtkSMProxy* representation(pqPipelineSource* source) const;
   vtkStaticCellLocator* cellLocator(vtkDataSet* data);
 
@@ -149,6 +152,7 @@ private:
   };
   std::vector<CellLocatorEntry> CellLocators;
   bool DeformationModified = false;
+  mutable bool InformationRead = false; // since the filter's last possible update
   bool PaintModified = false;
   bool RepresentationModified = false;
 };
