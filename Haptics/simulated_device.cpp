@@ -44,11 +44,6 @@ bool SimulatedDevice::open()
 {
   clear_error();
   clock_ = DeviceClock(step_);
-  for (auto& f : last_force_)
-    f.store(0.0);
-  max_force_sent_.store(0.0);
-  forces_sent_.store(0);
-  nonzero_after_error_.store(0);
   open_ = true;
   return true;
 }
@@ -68,26 +63,11 @@ bool SimulatedDevice::read(DeviceSample& sample)
   return true;
 }
 
-bool SimulatedDevice::set_force(const Eigen::Vector3d& force)
+bool SimulatedDevice::set_force(const Eigen::Vector3d&)
 {
   if (!open_)
     return false;
-  const Eigen::Vector3d f = safe_force(force);
-  for (int i = 0; i < 3; ++i)
-    last_force_[i].store(f[i], std::memory_order_relaxed);
-  // The raw request, not the clamped one: tests check the servo loop's own clamp.
-  const double n = force.allFinite() ? force.stableNorm() : HUGE_VAL;
-  if (n > max_force_sent_.load(std::memory_order_relaxed))
-    max_force_sent_.store(n, std::memory_order_relaxed);
-  forces_sent_.fetch_add(1, std::memory_order_relaxed);
-  if (has_error() && n != 0.0)
-    nonzero_after_error_.fetch_add(1, std::memory_order_relaxed);
   return !has_error();
-}
-
-Eigen::Vector3d SimulatedDevice::last_force() const
-{
-  return Eigen::Vector3d(last_force_[0].load(), last_force_[1].load(), last_force_[2].load());
 }
 
 } // namespace geoshaping::haptics

@@ -1,6 +1,6 @@
 #include "geoshaping/haptics/null_device.h"
 #include "geoshaping/haptics/openhaptics_device.h"
-#include "geoshaping/haptics/simulated_device.h"
+#include "recording_device.h"
 
 #include <gtest/gtest.h>
 
@@ -67,7 +67,7 @@ TEST(Devices, SimulatedDeviceFollowsItsScriptOnASteppedClock)
 
 TEST(Devices, SimulatedDeviceInErrorStopsReadingAndClampsForces)
 {
-  SimulatedDevice device;
+  RecordingDevice device;
   ASSERT_TRUE(device.open());
   device.set_force(Eigen::Vector3d(100, 0, 0));
   EXPECT_DOUBLE_EQ(device.last_force().x(), device.limits().max_force);

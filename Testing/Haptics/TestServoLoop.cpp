@@ -1,5 +1,5 @@
 #include "geoshaping/haptics/servo_loop.h"
-#include "geoshaping/haptics/simulated_device.h"
+#include "recording_device.h"
 
 #include <gtest/gtest.h>
 
@@ -61,9 +61,9 @@ DeviceSnapshot poll_until(ServoLoop& loop, Done done)
   return snap;
 }
 
-SimulatedDevice resting_at(const Eigen::Vector3d& x)
+RecordingDevice resting_at(const Eigen::Vector3d& x)
 {
-  return SimulatedDevice(
+  return RecordingDevice(
     [x](double)
     {
       DeviceSample s;
@@ -93,7 +93,7 @@ TEST(PeriodStats, PercentilesAndRateOfKnownPeriods)
 // the machine's load, so the lower bound only says that it runs at all.
 TEST(ServoLoop, RunsNearOneKilohertzWithASimulatedDevice)
 {
-  SimulatedDevice device;
+  RecordingDevice device;
   ServoConfig config;
   config.realtime_priority = 50;
   ServoLoop loop(device, config);
@@ -112,7 +112,7 @@ TEST(ServoLoop, RunsNearOneKilohertzWithASimulatedDevice)
 
 TEST(ServoLoop, CouplingForceReachesTheDeviceAndTheGraphicsSide)
 {
-  SimulatedDevice device = resting_at({ 0.01, 0, 0 });
+  RecordingDevice device = resting_at({ 0.01, 0, 0 });
   ServoLoop loop(device);
   Graphics graphics(loop, Eigen::Vector3d::Zero(), 200.0);
   ASSERT_TRUE(loop.start());
@@ -132,7 +132,7 @@ TEST(ServoLoop, CouplingForceReachesTheDeviceAndTheGraphicsSide)
 
 TEST(ServoLoop, SendsZeroForceOnceTheDeviceReportsAnError)
 {
-  SimulatedDevice device = resting_at({ 0.01, 0, 0 });
+  RecordingDevice device = resting_at({ 0.01, 0, 0 });
   ServoLoop loop(device);
   Graphics graphics(loop, Eigen::Vector3d::Zero(), 200.0);
   ASSERT_TRUE(loop.start());
@@ -151,7 +151,7 @@ TEST(ServoLoop, SendsZeroForceOnceTheDeviceReportsAnError)
 
 TEST(ServoLoop, StaleSceneFallsToZeroForce)
 {
-  SimulatedDevice device = resting_at({ 0.01, 0, 0 });
+  RecordingDevice device = resting_at({ 0.01, 0, 0 });
   ServoConfig config;
   config.force.stale_after = 30ms;
   ServoLoop loop(device, config);

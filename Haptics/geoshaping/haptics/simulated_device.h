@@ -1,5 +1,6 @@
 #pragma once
-// A scripted stylus for tests and benchmarks: deterministic motion, recorded forces.
+// A scripted stylus (the dock's Simulated device, tests and benchmarks): deterministic
+// motion; forces are accepted and dropped.
 #include "geoshaping/haptics/device.h"
 
 #include <functional>
@@ -35,21 +36,10 @@ public:
   // clear_error().
   void inject_error(const std::string& message) { set_error(message); }
 
-  // What the servo loop sent, read from any thread after it stopped (or racily while it
-  // runs: these are atomics, the vector is not torn, the components may mix two ticks).
-  Eigen::Vector3d last_force() const;
-  double max_force_sent() const { return max_force_sent_.load(); }
-  std::uint64_t forces_sent() const { return forces_sent_.load(); }
-  std::uint64_t nonzero_forces_after_error() const { return nonzero_after_error_.load(); }
-
 private:
   Motion motion_;
   double step_ = 0.0;
   DeviceClock clock_;
-  std::atomic<double> last_force_[3] = { 0.0, 0.0, 0.0 };
-  std::atomic<double> max_force_sent_{ 0.0 };
-  std::atomic<std::uint64_t> forces_sent_{ 0 };
-  std::atomic<std::uint64_t> nonzero_after_error_{ 0 };
 };
 
 } // namespace geoshaping::haptics
