@@ -37,7 +37,7 @@ void vtkChainMailDeformationFilter::Refine(std::int64_t grasp)
   options.max_iterations = this->RefinementIterations;
   options.tolerance = this->RefinementTolerance;
   options.solver = static_cast<geoshaping::ProjectionSolver>(this->RefinementSolver);
-  if (state.Partition) // collective, Envelope in the Axes frame; an abort is not agreed
+  if (state.Partition) // collective, Envelope with the Axes region; an abort is not agreed
   {
     const PartitionedRefinement refined = RefinePartitioned(
       state.Passes, state.Deformer, state.Envelope, grasp, options, *state.Processes);

@@ -77,7 +77,7 @@ bool vtkChainMailDeformationFilter::SelectInput(vtkPointSet*& input, vtkPointSet
     refused =
       std::string("refinement with RefinementSolver ") +
       geoshaping::solver_name(static_cast<geoshaping::ProjectionSolver>(this->RefinementSolver)) +
-      (this->ValidRegionFrame == AXES ? " in the Axes frame" : " in the Link frame") +
+      (this->ValidRegionFrame == AXES ? " with the Axes region" : " with the Link region") +
       " (use RefinementSolver Envelope with ValidRegionFrame Axes)";
   else if (this->RelaxationIterations > 0)
     refused = "RelaxationIterations > 0 (relaxation)";

@@ -19,7 +19,7 @@ struct PartitionedRefinement
   double milliseconds = 0.0;
 };
 
-// Collective: the envelope refinement (Axes frame) of the frame `deformer` holds on this
+// Collective: the envelope refinement (Axes region) of the frame `deformer` holds on this
 // piece, through `passes` (its result is read as a single process's is: passes.beyond(),
 // FinalDisplacement). `envelope` is set up on first use (reset it when the partition
 // changes). Equal to one process's refinement bit for bit (partitioned_envelope.h).

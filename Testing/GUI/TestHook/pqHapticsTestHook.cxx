@@ -6,7 +6,7 @@
 #include "pqHapticsUndoChecks.h"
 #include "pqPullTestDriver.h"
 
-#include "geoshaping/edit_history.h"
+#include "geoshaping/edit/edit_history.h"
 
 #include <pqActiveObjects.h>
 #include <pqCoreUtilities.h>
