@@ -170,6 +170,74 @@ void SuperstepQueue::seal(std::uint32_t generation)
   pending_.clear();
 }
 
+std::uint32_t SuperstepQueue::open_group(const ChainKey& k)
+{
+  constexpr std::size_t scan = 8; // groups looked up by a linear scan, more by hash
+  if (open_.empty())
+    open_begin_ = pool_.size();
+  else if (open_.size() <= scan)
+  {
+    for (std::size_t g = 0; g < open_.size(); ++g)
+      if (open_[g] == k)
+        return std::uint32_t(g);
+  }
+  else
+  {
+    for (std::size_t g = open_of_.size(); g < open_.size(); ++g)
+      open_of_.emplace(open_[g], std::uint32_t(g));
+    const auto found = open_of_.find(k);
+    if (found != open_of_.end())
+      return found->second;
+  }
+  if (open_.size() == 1)
+    tags_from_ = pool_.size(); // the entries before are all group 0
+  open_.push_back(k);
+  return std::uint32_t(open_.size() - 1);
+}
+
+void SuperstepQueue::seal_in_push_order(std::uint32_t generation)
+{
+  if (open_.empty())
+    return;
+  if (generation <= sealed_generation_)
+    throw std::invalid_argument("SuperstepQueue: generations must be sealed in increasing order");
+  sealed_generation_ = generation;
+  const std::size_t begin = open_begin_, end = pool_.size();
+  if (end > std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("SuperstepQueue: more than 2^32 entries in a frame");
+  auto file_open = [&](std::size_t g, std::size_t b, std::size_t e)
+  {
+    file({ { open_[g].band_generation, open_[g].gid, generation }, std::uint32_t(b),
+      std::uint32_t(e) });
+  };
+  if (open_.size() == 1)
+    file_open(0, begin, end);
+  else
+  {
+    // A stable counting sort of the generation by group.
+    const std::size_t n = open_.size();
+    offsets_.assign(n + 1, 0);
+    offsets_[1] = std::uint32_t(tags_from_ - begin);
+    for (const std::uint32_t t : tags_)
+      ++offsets_[t + 1];
+    for (std::size_t g = 1; g <= n; ++g)
+      offsets_[g] += offsets_[g - 1];
+    moving_.assign(pool_.begin() + std::ptrdiff_t(begin), pool_.end());
+    for (std::size_t i = 0; i < moving_.size(); ++i)
+    {
+      const std::uint32_t g = begin + i < tags_from_ ? 0 : tags_[begin + i - tags_from_];
+      pool_[begin + offsets_[g]++] = moving_[i];
+    }
+    // offsets_[g] is now group g's end (group 0's start was 0).
+    for (std::size_t g = 0, b = 0; g < n; b = offsets_[g], ++g)
+      file_open(g, begin + b, begin + offsets_[g]);
+  }
+  open_.clear();
+  tags_.clear();
+  if (!open_of_.empty())
+    open_of_.clear();
+}
+
 void SuperstepQueue::file(const Group& g)
 {
   const ChainKey ck{ g.key[0], g.key[1] };
@@ -248,6 +316,10 @@ void SuperstepQueue::clear()
   chains_.clear();
   heap_.clear();
   chain_of_.clear();
+  open_.clear();
+  tags_.clear();
+  if (!open_of_.empty())
+    open_of_.clear();
   last_ = nil;
   sealed_generation_ = 0;
 }

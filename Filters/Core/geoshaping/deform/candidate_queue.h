@@ -190,6 +190,24 @@ public:
   // Files the entries pushed since the last seal as `generation`, which must exceed the
   // previous seal's since clear() (std::invalid_argument otherwise).
   void seal(std::uint32_t generation);
+  // The deformer's path: (vertex, sponsor) appended with its (band, root) and filed by
+  // seal_in_push_order() into one group per (band, root), each in push order (no sort,
+  // 8 bytes per entry, a tag while a generation has several groups). A caller that
+  // pushes each candidate's entries in sponsor id order and examines a group's
+  // candidates independently of one another (ChainMailDeformer: it orders a superstep's
+  // moves by id afterwards) gets the result of the sorted order above. Not mixed with
+  // push() in one generation.
+  void append(index_t vertex, index_t sponsor, std::uint32_t band, const SuperstepRoot& root)
+  {
+    const ChainKey k{ std::uint64_t(band) << 32 | root.generation,
+      std::uint64_t(root.gid) ^ (std::uint64_t(1) << 63) }; // key()'s first two words
+    if (open_.empty() || !(open_[open_last_] == k))
+      open_last_ = open_group(k);
+    pool_.push_back({ vertex, sponsor });
+    if (open_.size() > 1)
+      tags_.push_back(open_last_);
+  }
+  void seal_in_push_order(std::uint32_t generation);
   // The lowest pending key, `none` when nothing is pending (drops finished chains: not
   // safe to call from two threads at once).
   SuperstepKey top() const
@@ -210,6 +228,8 @@ public:
            count_.capacity() * sizeof(std::uint32_t) + groups_.capacity() * sizeof(Group) +
            free_.capacity() * sizeof(std::uint32_t) + chains_.capacity() * sizeof(Chain) +
            heap_.capacity() * sizeof(std::uint32_t) +
+           (tags_.capacity() + offsets_.capacity()) * sizeof(std::uint32_t) +
+           moving_.capacity() * sizeof(Candidate) + open_.capacity() * sizeof(ChainKey) +
            chain_of_.size() * (sizeof(ChainKey) + 2 * sizeof(void*) + sizeof(std::uint32_t)) +
            chain_of_.bucket_count() * sizeof(void*);
   }
@@ -278,6 +298,15 @@ private:
   mutable std::vector<Chain> chains_;       // by chain id, the frame's (band, root)s
   mutable std::vector<std::uint32_t> heap_; // chains with pending groups, a heap on Later
   std::unordered_map<ChainKey, std::uint32_t, ChainHash> chain_of_; // chains_ by key
+  std::uint32_t open_group(const ChainKey& k);
+  std::vector<ChainKey> open_;         // append(): the (band, root)s of the generation
+  std::uint32_t open_last_ = 0;        // the last entry's, in open_
+  std::size_t open_begin_ = 0;         // its first entry in pool_
+  std::size_t tags_from_ = 0;          // entries before it (pushed under one group) have no tag
+  std::vector<std::uint32_t> tags_;    // open_ index of the later ones
+  std::vector<std::uint32_t> offsets_; // seal_in_push_order's counting sort
+  std::vector<Candidate> moving_;      // ditto
+  std::unordered_map<ChainKey, std::uint32_t, ChainHash> open_of_; // open_ by key, when large
   std::uint32_t last_ = nil; // the chain popped or filed to last (most often the next)
   std::uint32_t sealed_generation_ = 0;
 };

@@ -402,14 +402,22 @@ std::size_t ChainMailDeformer::superstep(const SuperstepKey& key)
 void ChainMailDeformer::end_superstep()
 {
   const bool banded = queue_kind_ == QueueKind::fifo_priority;
-  auto gid = [&](index_t i)
-  { return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)]; };
-  for (std::size_t slot = superstep_begin_; slot < moved_rec_.size(); ++slot)
+  // The sponsors in id order, so that each candidate's entries come in sponsor id order
+  // (SuperstepQueue::append): the superstep's own moves are (sorted_moves()); ghosts and
+  // aliases received after them may not be.
+  const std::size_t first = superstep_begin_, count = moved_rec_.size() - first;
+  const std::uint32_t* order = nullptr;
+  if (!ids_sorted(first, moved_rec_.size()))
   {
+    sort_by_id(first, moved_rec_.size());
+    order = by_id_.data();
+  }
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const std::size_t slot = first + (order ? order[k] : k);
     const index_t s = moved_rec_[slot].vertex;
-    const index_t s_rank = banded ? nodes_[std::size_t(s)].rank : 0;
-    const std::uint32_t s_band = banded ? rank_band_[std::size_t(s_rank)] : 0u;
-    const std::int64_t s_gid = gid(s);
+    const std::uint32_t s_band = banded ? rank_band_[std::size_t(nodes_[std::size_t(s)].rank)] : 0u;
+    const SuperstepRoot& s_root = moved_root_[slot];
     for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
     {
       const index_t c = neighbors_[e];
@@ -417,20 +425,59 @@ void ChainMailDeformer::end_superstep()
       if (node.stamp == frame_ || (!pinned_inner_.empty() && pinned_inner_[std::size_t(c)]) ||
           (!ghost_.empty() && ghost_[std::size_t(c)]))
         continue;
-      const index_t c_rank = banded ? node.rank : 0;
-      const std::uint32_t c_band = banded ? rank_band_[std::size_t(c_rank)] : 0u;
-      const std::int64_t c_gid = gid(c);
+      const std::uint32_t c_band = banded ? rank_band_[std::size_t(node.rank)] : 0u;
       // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base.
-      const SuperstepRoot root = c_band < s_band    ? SuperstepRoot{ superstep_ + 1, c_gid }
-                                 : c_band == s_band ? moved_root_[slot]
-                                                    : SuperstepRoot{};
-      supersteps_.push(c_gid, s_gid, root, c_band, std::uint32_t(c_rank), c, index_t(slot));
+      if (c_band == s_band)
+        supersteps_.append(c, index_t(slot), c_band, s_root);
+      else
+        supersteps_.append(c, index_t(slot), c_band,
+          c_band < s_band ? SuperstepRoot{ superstep_ + 1, global_id_inner(c) } : SuperstepRoot{});
       prefetch(neighbors_.data() + offsets_[std::size_t(c)]); // read by move() if c moves
     }
   }
-  supersteps_.seal(superstep_ + 1);
+  supersteps_.seal_in_push_order(superstep_ + 1);
   superstep_begin_ = moved_rec_.size();
   ++superstep_;
+}
+
+bool ChainMailDeformer::ids_sorted(std::size_t begin, std::size_t end) const
+{
+  for (std::size_t slot = begin + 1; slot < end; ++slot)
+    if (global_id_inner(moved_rec_[slot].vertex) < global_id_inner(moved_rec_[slot - 1].vertex))
+      return false;
+  return true;
+}
+
+void ChainMailDeformer::sort_by_id(std::size_t begin, std::size_t end)
+{
+  by_id_key_.resize(end - begin);
+  for (std::size_t slot = begin; slot < end; ++slot)
+    by_id_key_[slot - begin] = { global_id_inner(moved_rec_[slot].vertex),
+      std::uint32_t(slot - begin) };
+  std::sort(by_id_key_.begin(), by_id_key_.end());
+  by_id_.resize(end - begin);
+  for (std::size_t k = 0; k < by_id_.size(); ++k)
+    by_id_[k] = by_id_key_[k].second;
+}
+
+void ChainMailDeformer::sort_moves(std::size_t begin)
+{
+  const std::size_t end = moved_rec_.size();
+  if (end - begin > 1 && !ids_sorted(begin, end))
+  {
+    sort_by_id(begin, end);
+    moved_scratch_.assign(moved_rec_.begin() + std::ptrdiff_t(begin), moved_rec_.end());
+    for (std::size_t k = 0; k < by_id_.size(); ++k)
+    {
+      const MovedRecord& r = moved_scratch_[by_id_[k]];
+      moved_rec_[begin + k] = r;
+      slot_[std::size_t(r.vertex)] = index_t(begin + k);
+      moved_[begin + k] = outer_of_[std::size_t(r.vertex)];
+    }
+  }
+  if (obstacles_)
+    for (std::size_t slot = begin; slot < end; ++slot)
+      moved_rec_[slot].disp = admissible(moved_rec_[slot].vertex, moved_rec_[slot].disp);
 }
 
 template<ValidRegionFrame Frame>
@@ -449,19 +496,33 @@ template<ValidRegionFrame Frame>
 std::size_t ChainMailDeformer::examine(
   std::size_t begin, std::size_t end, const SuperstepRoot& root)
 {
+  // The group in push order: each candidate's entries in sponsor id order, and
+  // candidates independent of one another (their sponsors moved in earlier
+  // supersteps), so only the order of the moves differs from the (candidate id,
+  // sponsor id) order: sort_moves() restores it, and gates them in it.
   const Candidate* const entries = supersteps_.entries();
+  const std::size_t first = moved_rec_.size();
   for (std::size_t k = begin; k < end; ++k)
   {
     const Candidate& e = entries[k];
-    const Node& c = nodes_[std::size_t(e.vertex)];
+    Node& c = nodes_[std::size_t(e.vertex)];
     if (c.stamp == frame_) // moved by an earlier entry (a sponsor of lower id) or superstep
       continue;
     const MovedRecord& s = moved_rec_[std::size_t(e.sponsor)];
     const Eigen::Vector3d target =
       required_displacement<Frame>(c, nodes_[std::size_t(s.vertex)], s.disp);
-    if (!target.isZero(0.0))
-      move(e.vertex, target, e.sponsor, root);
+    if (target.isZero(0.0))
+      continue;
+    c.stamp = frame_;
+    for (std::uint32_t n = offsets_[std::size_t(e.vertex)]; n < offsets_[std::size_t(e.vertex) + 1];
+         ++n)
+      prefetch(&nodes_[std::size_t(neighbors_[n])]);
+    slot_[std::size_t(e.vertex)] = index_t(moved_rec_.size());
+    moved_rec_.push_back({ target, e.vertex, e.sponsor });
+    moved_root_.push_back(root);
+    moved_.push_back(outer_of_[std::size_t(e.vertex)]);
   }
+  sort_moves(first);
   return end - begin;
 }
 

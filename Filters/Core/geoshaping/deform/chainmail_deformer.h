@@ -288,6 +288,17 @@ private:
     const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const;
   void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,
     const SuperstepRoot& root = {});
+  std::int64_t global_id_inner(index_t i) const
+  {
+    return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)];
+  }
+  // Whether the moves in slots [begin, end) are in global id order; their order by id
+  // (by_id_, offsets from begin).
+  bool ids_sorted(std::size_t begin, std::size_t end) const;
+  void sort_by_id(std::size_t begin, std::size_t end);
+  // Puts the moves a superstep made from `begin` on into global id order (slots,
+  // moved()) and passes them through the obstacle gate in that order.
+  void sort_moves(std::size_t begin);
   // The obstacle gate of move() (see the class comment): d or the admissible part of it.
   Eigen::Vector3d admissible(index_t inner_vertex, const Eigen::Vector3d& d);
   void build_rigid_components();
@@ -311,9 +322,12 @@ private:
   std::vector<Eigen::Vector3d> committed_; // by caller id; empty until the first edit
   Eigen::Vector3d zero_ = Eigen::Vector3d::Zero();
   std::uint32_t frame_ = 0;
-  std::vector<index_t> moved_, previously_moved_; // caller ids
-  std::vector<MovedRecord> moved_rec_;            // by slot
-  std::vector<SuperstepRoot> moved_root_;         // by slot
+  std::vector<index_t> moved_, previously_moved_;                 // caller ids
+  std::vector<MovedRecord> moved_rec_;                            // by slot
+  std::vector<SuperstepRoot> moved_root_;                         // by slot
+  std::vector<std::pair<std::int64_t, std::uint32_t>> by_id_key_; // sort_by_id() scratch
+  std::vector<std::uint32_t> by_id_;
+  std::vector<MovedRecord> moved_scratch_;
 
   TransferFunction transfer_;
   QueueKind queue_kind_ = QueueKind::fifo_priority;
