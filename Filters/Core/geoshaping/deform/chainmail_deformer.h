@@ -295,6 +295,9 @@ private:
   // Whether the moves in slots [begin, end) are in global id order; their order by id
   // (by_id_, offsets from begin).
   bool ids_sorted(std::size_t begin, std::size_t end) const;
+  // end_superstep()'s pushes (Banded: FIFO Priority's bands and roots).
+  template<bool Banded>
+  void push_neighbours();
   void sort_by_id(std::size_t begin, std::size_t end);
   // Puts the moves a superstep made from `begin` on into global id order (slots,
   // moved()) and passes them through the obstacle gate in that order.
