@@ -139,6 +139,56 @@ TEST(CandidateQueue, SuperstepOrderIsTheFullKeysWhateverTheSortPath)
   }
 }
 
+// The deformer's path: open() and append() then seal_in_push_order() files a generation into one
+// group per (band, root) that keeps push order, the groups in key order as with push():
+// compared with a std::map of push-ordered lists on random generations of 1 to 2,000
+// entries in 1 group, a few (linear look-up) or up to 40 (hashed).
+TEST(CandidateQueue, AppendedGroupsComeInKeyOrderEachInPushOrder)
+{
+  std::mt19937_64 rng(26);
+  using Key = std::tuple<std::uint32_t, std::uint32_t, std::int64_t, std::uint32_t>;
+  using Pairs = std::vector<std::pair<index_t, index_t>>;
+  for (int trial = 0; trial < 30; ++trial)
+  {
+    const std::uint32_t kinds = trial % 3 == 0 ? 1 : (trial % 3 == 1 ? 5 : 40);
+    SuperstepQueue q;
+    std::map<Key, Pairs> expected;
+    for (std::uint32_t generation = 1; generation <= 3; ++generation)
+    {
+      const std::size_t k = std::size_t(1 + rng() % (trial % 2 ? 2000 : 40));
+      for (std::size_t i = 0; i < k; ++i)
+      {
+        const auto kind = std::uint32_t(rng() % kinds);
+        const std::uint32_t band = 0x3e800000u + (kind % 3) * 0x100000u;
+        const SuperstepRoot root =
+          kind < 3 ? SuperstepRoot{} : SuperstepRoot{ generation, std::int64_t(kind) - 20 };
+        const index_t vertex = index_t(rng() % 1000), sponsor = index_t(rng() % 1000);
+        q.append(q.open(band, root), vertex, sponsor);
+        expected[{ band, root.generation, root.gid, generation }].push_back({ vertex, sponsor });
+      }
+      q.seal_in_push_order(generation);
+    }
+    std::map<Key, Pairs> got;
+    std::vector<Key> keys;
+    for (SuperstepKey key; (key = q.top()) != SuperstepQueue::none;)
+    {
+      std::size_t b, e;
+      ASSERT_TRUE(q.pop(key, b, e));
+      const SuperstepRoot root = SuperstepQueue::root_of(key);
+      const Key full{ std::uint32_t(key[0] >> 32), root.generation, root.gid,
+        std::uint32_t(key[2]) };
+      keys.push_back(full);
+      for (std::size_t i = b; i < e; ++i)
+        got[full].push_back({ q.entries()[i].vertex, q.entries()[i].sponsor });
+    }
+    EXPECT_EQ(got, expected) << "trial " << trial;
+    std::vector<Key> want;
+    for (const auto& [key, pairs] : expected)
+      want.push_back(key);
+    EXPECT_EQ(keys, want) << "trial " << trial; // one group per key, in key order
+  }
+}
+
 TEST(CandidateQueue, HeapPriorityIsLowestRankFirstButNotFifoAmongEquals)
 {
   HeapPriorityQueue q;

@@ -173,11 +173,9 @@ void SuperstepQueue::seal(std::uint32_t generation)
 std::uint32_t SuperstepQueue::open_group(const ChainKey& k)
 {
   constexpr std::size_t scan = 8; // groups looked up by a linear scan, more by hash
-  if (open_.empty())
-    open_begin_ = pool_.size();
-  else if (open_.size() <= scan)
+  if (open_.size() <= scan)
   {
-    for (std::size_t g = 0; g < open_.size(); ++g)
+    for (std::size_t g = 1; g < open_.size(); ++g)
       if (open_[g] == k)
         return std::uint32_t(g);
   }
@@ -189,8 +187,6 @@ std::uint32_t SuperstepQueue::open_group(const ChainKey& k)
     if (found != open_of_.end())
       return found->second;
   }
-  if (open_.size() == 1)
-    tags_from_ = pool_.size(); // the entries before are all group 0
   open_.push_back(k);
   return std::uint32_t(open_.size() - 1);
 }
@@ -199,41 +195,44 @@ void SuperstepQueue::seal_in_push_order(std::uint32_t generation)
 {
   if (open_.empty())
     return;
+  if (pool_.size() == open_begin_ && side_.empty())
+  {
+    open_.clear(); // opened, nothing appended
+    return;
+  }
   if (generation <= sealed_generation_)
     throw std::invalid_argument("SuperstepQueue: generations must be sealed in increasing order");
   sealed_generation_ = generation;
-  const std::size_t begin = open_begin_, end = pool_.size();
+  const std::size_t begin = open_begin_, end = pool_.size() + side_.size();
   if (end > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("SuperstepQueue: more than 2^32 entries in a frame");
   auto file_open = [&](std::size_t g, std::size_t b, std::size_t e)
   {
-    file({ { open_[g].band_generation, open_[g].gid, generation }, std::uint32_t(b),
-      std::uint32_t(e) });
+    if (b < e)
+      file({ { open_[g].band_generation, open_[g].gid, generation }, std::uint32_t(b),
+        std::uint32_t(e) });
   };
-  if (open_.size() == 1)
-    file_open(0, begin, end);
-  else
+  file_open(0, begin, pool_.size());
+  if (!side_.empty())
   {
-    // A stable counting sort of the generation by group.
+    // The other groups after it, by a stable counting sort of the side buffer.
     const std::size_t n = open_.size();
     offsets_.assign(n + 1, 0);
-    offsets_[1] = std::uint32_t(tags_from_ - begin);
-    for (const std::uint32_t t : tags_)
-      ++offsets_[t + 1];
-    for (std::size_t g = 1; g <= n; ++g)
+    for (const SideEntry& e : side_)
+      ++offsets_[e.group + 1];
+    offsets_[1] = std::uint32_t(pool_.size());
+    for (std::size_t g = 2; g <= n; ++g)
       offsets_[g] += offsets_[g - 1];
-    moving_.assign(pool_.begin() + std::ptrdiff_t(begin), pool_.end());
-    for (std::size_t i = 0; i < moving_.size(); ++i)
-    {
-      const std::uint32_t g = begin + i < tags_from_ ? 0 : tags_[begin + i - tags_from_];
-      pool_[begin + offsets_[g]++] = moving_[i];
-    }
-    // offsets_[g] is now group g's end (group 0's start was 0).
-    for (std::size_t g = 0, b = 0; g < n; b = offsets_[g], ++g)
-      file_open(g, begin + b, begin + offsets_[g]);
+    const std::size_t side_begin = pool_.size();
+    pool_.resize(end);
+    for (const SideEntry& e : side_)
+      pool_[offsets_[e.group]++] = e.c;
+    // offsets_[g] is now group g's end.
+    for (std::size_t g = 1; g < n; ++g)
+      file_open(g, g == 1 ? side_begin : offsets_[g - 1], offsets_[g]);
+    side_.clear();
   }
   open_.clear();
-  tags_.clear();
   if (!open_of_.empty())
     open_of_.clear();
 }
@@ -317,7 +316,7 @@ void SuperstepQueue::clear()
   heap_.clear();
   chain_of_.clear();
   open_.clear();
-  tags_.clear();
+  side_.clear();
   if (!open_of_.empty())
     open_of_.clear();
   last_ = nil;

@@ -190,22 +190,32 @@ public:
   // Files the entries pushed since the last seal as `generation`, which must exceed the
   // previous seal's since clear() (std::invalid_argument otherwise).
   void seal(std::uint32_t generation);
-  // The deformer's path: (vertex, sponsor) appended with its (band, root) and filed by
-  // seal_in_push_order() into one group per (band, root), each in push order (no sort,
-  // 8 bytes per entry, a tag while a generation has several groups). A caller that
-  // pushes each candidate's entries in sponsor id order and examines a group's
-  // candidates independently of one another (ChainMailDeformer: it orders a superstep's
-  // moves by id afterwards) gets the result of the sorted order above. Not mixed with
-  // push() in one generation.
-  void append(index_t vertex, index_t sponsor, std::uint32_t band, const SuperstepRoot& root)
+  // The deformer's path: (vertex, sponsor) pairs appended to the group of their
+  // (band, root) and filed by seal_in_push_order() into one group per (band, root), each
+  // in push order (no sort, 8 bytes per entry). A caller that pushes each candidate's
+  // entries in sponsor id order and examines a group's candidates independently of one
+  // another (ChainMailDeformer: it orders a superstep's moves by id afterwards) gets the
+  // result of the sorted order above. open() gives the generation's group of a
+  // (band, root): the first opened (most often the only one) is written in place, the
+  // others go through a side buffer. Not mixed with push() in one generation.
+  std::uint32_t open(std::uint32_t band, const SuperstepRoot& root)
   {
     const ChainKey k{ std::uint64_t(band) << 32 | root.generation,
       std::uint64_t(root.gid) ^ (std::uint64_t(1) << 63) }; // key()'s first two words
-    if (open_.empty() || !(open_[open_last_] == k))
-      open_last_ = open_group(k);
-    pool_.push_back({ vertex, sponsor });
-    if (open_.size() > 1)
-      tags_.push_back(open_last_);
+    if (open_.empty())
+    {
+      open_begin_ = pool_.size();
+      open_.push_back(k);
+      return 0;
+    }
+    return open_[0] == k ? 0 : open_group(k);
+  }
+  void append(std::uint32_t group, index_t vertex, index_t sponsor)
+  {
+    if (group == 0)
+      pool_.push_back({ vertex, sponsor });
+    else
+      side_.push_back({ { vertex, sponsor }, group });
   }
   void seal_in_push_order(std::uint32_t generation);
   // The lowest pending key, `none` when nothing is pending (drops finished chains: not
@@ -227,9 +237,8 @@ public:
            (words_.capacity() + scratch_.capacity()) * sizeof(Word) +
            count_.capacity() * sizeof(std::uint32_t) + groups_.capacity() * sizeof(Group) +
            free_.capacity() * sizeof(std::uint32_t) + chains_.capacity() * sizeof(Chain) +
-           heap_.capacity() * sizeof(std::uint32_t) +
-           (tags_.capacity() + offsets_.capacity()) * sizeof(std::uint32_t) +
-           moving_.capacity() * sizeof(Candidate) + open_.capacity() * sizeof(ChainKey) +
+           heap_.capacity() * sizeof(std::uint32_t) + offsets_.capacity() * sizeof(std::uint32_t) +
+           side_.capacity() * sizeof(SideEntry) + open_.capacity() * sizeof(ChainKey) +
            chain_of_.size() * (sizeof(ChainKey) + 2 * sizeof(void*) + sizeof(std::uint32_t)) +
            chain_of_.bucket_count() * sizeof(void*);
   }
@@ -299,13 +308,15 @@ private:
   mutable std::vector<std::uint32_t> heap_; // chains with pending groups, a heap on Later
   std::unordered_map<ChainKey, std::uint32_t, ChainHash> chain_of_; // chains_ by key
   std::uint32_t open_group(const ChainKey& k);
-  std::vector<ChainKey> open_;         // append(): the (band, root)s of the generation
-  std::uint32_t open_last_ = 0;        // the last entry's, in open_
+  struct SideEntry
+  {
+    Candidate c;
+    std::uint32_t group;
+  };
+  std::vector<ChainKey> open_;         // open(): the (band, root)s of the generation
   std::size_t open_begin_ = 0;         // its first entry in pool_
-  std::size_t tags_from_ = 0;          // entries before it (pushed under one group) have no tag
-  std::vector<std::uint32_t> tags_;    // open_ index of the later ones
+  std::vector<SideEntry> side_;        // its entries of groups other than the first
   std::vector<std::uint32_t> offsets_; // seal_in_push_order's counting sort
-  std::vector<Candidate> moving_;      // ditto
   std::unordered_map<ChainKey, std::uint32_t, ChainHash> open_of_; // open_ by key, when large
   std::uint32_t last_ = nil; // the chain popped or filed to last (most often the next)
   std::uint32_t sealed_generation_ = 0;

@@ -359,6 +359,7 @@ void ChainMailDeformer::begin_frame()
   supersteps_.clear();
   superstep_ = 0;
   superstep_begin_ = 0;
+  sorted_begin_ = sorted_end_ = 0;
   blocked_ = 0;
   last_fraction_ = 1.0;
 }
@@ -417,35 +418,42 @@ void ChainMailDeformer::push_neighbours()
   // aliases received after them may not be.
   const std::size_t first = superstep_begin_, count = moved_rec_.size() - first;
   const std::uint32_t* order = nullptr;
-  if (!ids_sorted(first, moved_rec_.size()))
+  const bool known = sorted_begin_ == first && sorted_end_ == moved_rec_.size();
+  if (!known && !ids_sorted(first, moved_rec_.size()))
   {
     sort_by_id(first, moved_rec_.size());
     order = by_id_.data();
   }
-  const bool pins = !pinned_inner_.empty(), ghosts = !ghost_.empty();
+  const std::uint8_t* const pins = pinned_inner_.empty() ? nullptr : pinned_inner_.data();
+  const std::uint8_t* const ghosts = ghost_.empty() ? nullptr : ghost_.data();
+  const Node* const nodes = nodes_.data();
+  const std::uint32_t* const offsets = offsets_.data();
+  const index_t* const neighbors = neighbors_.data();
+  const std::uint32_t frame = frame_;
   for (std::size_t k = 0; k < count; ++k)
   {
     const std::size_t slot = first + (order ? order[k] : k);
     const index_t s = moved_rec_[slot].vertex;
-    const index_t s_rank = nodes_[std::size_t(s)].rank;
+    const index_t s_rank = nodes[s].rank;
     const std::uint32_t s_band = Banded ? rank_band_[std::size_t(s_rank)] : 0u;
-    const SuperstepRoot& s_root = moved_root_[slot];
-    for (std::uint32_t e = offsets_[std::size_t(s)]; e < offsets_[std::size_t(s) + 1]; ++e)
+    const std::uint32_t same = supersteps_.open(s_band, moved_root_[slot]);
+    for (std::uint32_t e = offsets[s], e_end = offsets[s + 1]; e < e_end; ++e)
     {
-      const index_t c = neighbors_[e];
-      const Node& node = nodes_[std::size_t(c)];
-      if (node.stamp == frame_ || (pins && pinned_inner_[std::size_t(c)]) ||
-          (ghosts && ghost_[std::size_t(c)]))
+      const index_t c = neighbors[e];
+      const Node& node = nodes[c];
+      if (node.stamp == frame || (pins && pins[c]) || (ghosts && ghosts[c]))
         continue;
       // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base
       // (ranks are in band order).
       if (!Banded || node.rank == s_rank)
-        supersteps_.append(c, index_t(slot), s_band, s_root);
+        supersteps_.append(same, c, index_t(slot));
       else
-        supersteps_.append(c, index_t(slot), rank_band_[std::size_t(node.rank)],
-          node.rank < s_rank ? SuperstepRoot{ superstep_ + 1, global_id_inner(c) }
-                             : SuperstepRoot{});
-      prefetch(neighbors_.data() + offsets_[std::size_t(c)]); // read if c moves
+        supersteps_.append(
+          supersteps_.open(rank_band_[std::size_t(node.rank)],
+            node.rank < s_rank ? SuperstepRoot{ superstep_ + 1, global_id_inner(c) }
+                               : SuperstepRoot{}),
+          c, index_t(slot));
+      prefetch(neighbors + offsets[c]); // read if c moves
     }
   }
   supersteps_.seal_in_push_order(superstep_ + 1);
@@ -486,6 +494,8 @@ void ChainMailDeformer::sort_moves(std::size_t begin)
       moved_[begin + k] = outer_of_[std::size_t(r.vertex)];
     }
   }
+  sorted_begin_ = begin;
+  sorted_end_ = end;
   if (obstacles_)
     for (std::size_t slot = begin; slot < end; ++slot)
       moved_rec_[slot].disp = admissible(moved_rec_[slot].vertex, moved_rec_[slot].disp);

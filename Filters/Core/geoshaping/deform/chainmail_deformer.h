@@ -351,8 +351,9 @@ private:
   std::vector<std::uint8_t> sliding_;       // by internal id; empty when none
   double last_fraction_ = 1.0;              // of the last gated move
   std::size_t blocked_ = 0;
-  std::uint32_t superstep_ = 0;     // the current superstep of the frame
-  std::size_t superstep_begin_ = 0; // slot of its first move
+  std::uint32_t superstep_ = 0;                   // the current superstep of the frame
+  std::size_t superstep_begin_ = 0;               // slot of its first move
+  std::size_t sorted_begin_ = 0, sorted_end_ = 0; // slots sort_moves() left in id order
 };
 
 } // namespace geoshaping
