@@ -48,7 +48,9 @@ struct FrameResult
 // so the entries (and the supersteps) do not depend on the order inside a superstep.
 // Hence the result depends only on the mesh, its global ids and the pull, never on the
 // vertex numbering or on a partition into pieces (partitioned_chainmail.h). Global
-// ids are the caller's ids unless set_global_ids() gives others. Priority (heap order)
+// ids are the caller's ids unless set_global_ids() gives others. (How: the sponsors are
+// taken in id order, a group is examined in push order and its moves are then put in
+// id order, see SuperstepQueue::open.) Priority (heap order)
 // and Max Violation pop one candidate at a time and push its neighbours at once.
 //
 // The region is the paper's axis-aligned box (ValidRegionFrame::axes, the default) or
