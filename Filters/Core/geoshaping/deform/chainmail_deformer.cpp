@@ -365,7 +365,7 @@ void ChainMailDeformer::begin_frame()
 }
 
 void ChainMailDeformer::move(
-  index_t i, const Eigen::Vector3d& d, index_t sponsor_slot, const SuperstepRoot& root)
+  index_t i, const Eigen::Vector3d& d, index_t sponsor_slot, const SuperstepRoot& root, bool gate)
 {
   nodes_[std::size_t(i)].stamp = frame_;
   // end_superstep() tests the neighbours: start loading their records (the row was
@@ -373,7 +373,7 @@ void ChainMailDeformer::move(
   for (std::uint32_t e = offsets_[std::size_t(i)]; e < offsets_[std::size_t(i) + 1]; ++e)
     prefetch(&nodes_[std::size_t(neighbors_[e])]);
   slot_[std::size_t(i)] = index_t(moved_rec_.size());
-  moved_rec_.push_back({ obstacles_ ? admissible(i, d) : d, i, sponsor_slot });
+  moved_rec_.push_back({ gate && obstacles_ ? admissible(i, d) : d, i, sponsor_slot });
   moved_root_.push_back(root);
   moved_.push_back(outer_of_[std::size_t(i)]);
 }
@@ -414,8 +414,8 @@ template<bool Banded>
 void ChainMailDeformer::push_neighbours()
 {
   // The sponsors in id order, so that each candidate's entries come in sponsor id order
-  // (SuperstepQueue::append): the superstep's own moves are (sort_moves()); ghosts and
-  // aliases received after them may not be.
+  // (SuperstepQueue::open): the superstep's own moves are in id order (sort_moves()),
+  // ghosts and aliases received after them may not be.
   const std::size_t first = superstep_begin_, count = moved_rec_.size() - first;
   const std::uint32_t* order = nullptr;
   const bool known = sorted_begin_ == first && sorted_end_ == moved_rec_.size();
@@ -503,7 +503,7 @@ void ChainMailDeformer::sort_moves(std::size_t begin)
 
 template<ValidRegionFrame Frame>
 #if defined(__GNUC__)
-__attribute__((always_inline)) // the inner loops' test: a call costs ~10 % of a frame
+__attribute__((always_inline)) // once per examined entry: not worth a call
 #endif
 inline Eigen::Vector3d
 ChainMailDeformer::required_displacement(
@@ -530,7 +530,7 @@ std::size_t ChainMailDeformer::examine(
   for (std::size_t k = begin; k < end; ++k)
   {
     const Candidate& e = entries[k];
-    Node& c = nodes_[std::size_t(e.vertex)];
+    const Node& c = nodes_[std::size_t(e.vertex)];
     if (c.stamp == frame_) // moved by an earlier entry (a sponsor of lower id) or superstep
       continue;
     const MovedRecord& s = moved_rec_[std::size_t(e.sponsor)];
@@ -538,14 +538,7 @@ std::size_t ChainMailDeformer::examine(
       required_displacement<Frame>(c, nodes_[std::size_t(s.vertex)], s.disp);
     if (target.isZero(0.0))
       continue;
-    c.stamp = frame_;
-    for (std::uint32_t n = offsets_[std::size_t(e.vertex)]; n < offsets_[std::size_t(e.vertex) + 1];
-         ++n)
-      prefetch(&nodes_[std::size_t(neighbors_[n])]);
-    slot_[std::size_t(e.vertex)] = index_t(moved_rec_.size());
-    moved_rec_.push_back({ target, e.vertex, e.sponsor });
-    moved_root_.push_back(root);
-    moved_.push_back(outer_of_[std::size_t(e.vertex)]);
+    move(e.vertex, target, e.sponsor, root, false);
   }
   sort_moves(first);
   return end - begin;

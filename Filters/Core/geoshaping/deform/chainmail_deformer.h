@@ -288,8 +288,9 @@ private:
   template<ValidRegionFrame Frame>
   Eigen::Vector3d required_displacement(
     const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const;
+  // gate false: d passes the obstacle gate later (sort_moves()).
   void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,
-    const SuperstepRoot& root = {});
+    const SuperstepRoot& root = {}, bool gate = true);
   std::int64_t global_id_inner(index_t i) const
   {
     return gid_.empty() ? std::int64_t(outer_of_[std::size_t(i)]) : gid_[std::size_t(i)];
