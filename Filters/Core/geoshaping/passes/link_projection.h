@@ -2,6 +2,7 @@
 // Projection of a configuration onto the set satisfying every ChainMail link: the
 // reference of E_ref and the optional refinement pass (docs/design.md, Error against run time).
 #include "geoshaping/metrics/error_metrics.h"
+#include "geoshaping/passes/envelope_axis.h"
 
 #include <cstdint>
 #include <functional>
@@ -273,8 +274,12 @@ private:
   void run_admm(const ProjectionOptions& options, ProjectionReport& report);
   void run_envelope(
     const std::vector<index_t>& start, const ProjectionOptions& options, ProjectionReport& report);
+  // The whole mesh as EnvelopeAxis's Net (envelope_axis.h).
+  struct EnvelopeNet;
   void envelope_min_pass(int axis, double sign, std::vector<index_t>& seeds);
-  void envelope_cone(int axis, double sign, const std::vector<index_t>& fixed);
+  // Calls raise(a, c) for each vertex a with a cone label c, after the run.
+  template<class Raise>
+  void envelope_cone(int axis, double sign, const std::vector<index_t>& fixed, Raise raise);
   // The Dijkstra loop both share: pops the queue in increasing label, skips stale
   // entries (value != label(b)), and offers each free, non-grasped neighbour a of b the
   // label value(b) + ub(b, a) through relax(a, cap).
@@ -307,8 +312,9 @@ private:
   double best_update_ = 0.0;
 
   // Envelope scratch (dense, allocated on first use): values of the current pass, the pass
-  // that set them, the lower envelope D per touched vertex, and the vertices touched.
-  std::vector<double> env_value_, env_down_;
+  // that set them, and the vertices touched; the per-axis step (D per vertex, the seeds).
+  EnvelopeAxis env_axis_;
+  std::vector<double> env_value_;
   std::vector<std::uint32_t> env_stamp_;
   std::uint32_t env_pass_ = 0;
   std::vector<index_t> env_touched_;
