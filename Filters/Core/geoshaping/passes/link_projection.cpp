@@ -31,16 +31,12 @@ bool link_slab(const LinkMesh& m, index_t c, index_t s, Eigen::Vector3d& lo, Eig
 }
 
 // link_slab on one axis only (the envelope works axis by axis): the same numbers as
-// displacement_bounds, a third of the work.
-bool axis_slab(const LinkMesh& m, index_t c, index_t s, int i, double& lo, double& hi)
+// displacement_bounds, a third of the work. `o` is rest_c - rest_s, finite.
+void axis_slab(const Eigen::Vector3d& o, const ChainMailParams& pc, const ChainMailParams& ps,
+  int i, double& lo, double& hi)
 {
-  const Eigen::Vector3d o = m.rest[std::size_t(c)] - m.rest[std::size_t(s)];
-  if (!o.allFinite())
-    return false;
   const Eigen::Vector3d a = o.cwiseAbs();
   const double side = a.sum() - a[i]; // S_i = sum_{j != i} |o_j|
-  const ChainMailParams& pc = m.params[std::size_t(c)];
-  const ChainMailParams& ps = m.params[std::size_t(s)];
   // c w.r.t. s on o, and s w.r.t. c on -o (negated), as in displacement_bounds.
   const double oi = o[i];
   const double c_near = (pc.compression - 1.0) * oi, c_far = (pc.stretch - 1.0) * oi;
@@ -51,6 +47,14 @@ bool axis_slab(const LinkMesh& m, index_t c, index_t s, int i, double& lo, doubl
   const double s_hi = (-oi >= 0.0 ? s_far : s_near) + ps.shear * side;
   lo = std::max(c_lo, -s_hi);
   hi = std::min(c_hi, -s_lo);
+}
+
+bool axis_slab(const LinkMesh& m, index_t c, index_t s, int i, double& lo, double& hi)
+{
+  const Eigen::Vector3d o = m.rest[std::size_t(c)] - m.rest[std::size_t(s)];
+  if (!o.allFinite())
+    return false;
+  axis_slab(o, m.params[std::size_t(c)], m.params[std::size_t(s)], i, lo, hi);
   return true;
 }
 } // namespace
@@ -521,20 +525,23 @@ std::int32_t LinkProjector::envelope_links(index_t v)
     return env_first_[v];
   const std::int32_t first = std::int32_t(env_nbr_.size());
   const Adjacency& adj = *mesh_.adjacency;
+  const Eigen::Vector3d& rest = mesh_.rest[std::size_t(v)];
+  const ChainMailParams& pv = mesh_.params[std::size_t(v)];
   for (const index_t* n = adj.begin(v); n != adj.end(v); ++n)
   {
-    double lo[3], hi[3];
-    if (!axis_slab(mesh_, *n, v, 0, lo[0], hi[0]))
+    const Eigen::Vector3d o = mesh_.rest[std::size_t(*n)] - rest;
+    if (!o.allFinite())
       continue;
-    axis_slab(mesh_, *n, v, 1, lo[1], hi[1]);
-    axis_slab(mesh_, *n, v, 2, lo[2], hi[2]);
     env_nbr_.push_back(*n);
     env_fixed_.push_back(mesh_.is_pinned(*n) ? 1 : 0);
     for (int i = 0; i < 3; ++i)
-    {
-      env_up_[i].push_back(hi[i]);
-      env_dn_[i].push_back(-lo[i]);
-    }
+      if (env_cache_axes_ & (1 << i))
+      {
+        double lo, hi;
+        axis_slab(o, mesh_.params[std::size_t(*n)], pv, i, lo, hi);
+        env_up_[i].push_back(hi);
+        env_dn_[i].push_back(-lo);
+      }
   }
   env_first_[v] = first;
   env_count_[v] = std::int32_t(env_nbr_.size()) - first;
@@ -758,13 +765,15 @@ void LinkProjector::run_envelope(
   const index_t n = mesh_.size();
   if (env_stamp_.size() != std::size_t(n))
   {
-    env_value_.assign(std::size_t(n), 0.0);
+    // Values are read only where stamped, counts only where cached: left uninitialised,
+    // so their pages cost only where the calls write (O(touched), not O(mesh)).
+    env_value_.reset(new double[std::size_t(n)]);
     env_axis_.resize(std::size_t(n));
     env_stamp_.assign(std::size_t(n), 0);
-    env_cone_.assign(std::size_t(n), 0.0);
+    env_cone_.reset(new double[std::size_t(n)]);
     env_cone_stamp_.assign(std::size_t(n), 0);
     env_first_.assign(std::size_t(n), -1);
-    env_count_.assign(std::size_t(n), 0);
+    env_count_.reset(new std::int32_t[std::size_t(n)]);
     env_cached_.clear();
   }
   const Adjacency& adj = *mesh_.adjacency;
@@ -775,21 +784,6 @@ void LinkProjector::run_envelope(
       expanded_[v] = 1;
       region_.push_back(v);
     }
-  // The link cache grows with the vertices the calls reach; past a bound proportional to
-  // this call's start it is dropped, so its memory stays O(displaced).
-  if (env_cached_.size() > 8 * region_.size() + 65536)
-  {
-    for (index_t v : env_cached_)
-      env_first_[v] = -1;
-    env_cached_.clear();
-    env_nbr_.clear();
-    env_fixed_.clear();
-    for (int i = 0; i < 3; ++i)
-    {
-      env_up_[i].clear();
-      env_dn_[i].clear();
-    }
-  }
   // The axes to run: those on which some start value is non-zero (on the others rest
   // satisfies every link and nothing moves; a vertex a later axis adds to the region is
   // at rest on the other axes).
@@ -801,6 +795,41 @@ void LinkProjector::run_envelope(
         env_axes_ |= 1 << axis;
         break;
       }
+  // The link cache grows with the vertices the calls reach and holds the axes the calls
+  // ran; past a bound proportional to this call's start, or without an axis this call
+  // runs, it is dropped, so its memory stays O(displaced).
+  const bool too_big = env_cached_.size() > 8 * region_.size() + 65536;
+  if (too_big || (env_axes_ & ~env_cache_axes_))
+  {
+    for (index_t v : env_cached_)
+      env_first_[v] = -1;
+    env_cached_.clear();
+    env_nbr_.clear();
+    env_fixed_.clear();
+    for (int i = 0; i < 3; ++i)
+    {
+      env_up_[i].clear();
+      env_dn_[i].clear();
+    }
+    env_cache_axes_ = too_big ? env_axes_ : env_cache_axes_ | env_axes_;
+  }
+  // Room for the links of about twice the start's vertices (the D and U runs reach
+  // ~1.6x at the paper's scale): the slots are not moved while the cache grows.
+  const std::size_t slots =
+    adj.offsets.empty() ? 0
+                        : std::size_t(adj.offsets.back()) / std::size_t(std::max<index_t>(n, 1));
+  const std::size_t room = env_nbr_.size() + 2 * (slots + 1) * region_.size();
+  if (env_nbr_.capacity() < room)
+  {
+    env_nbr_.reserve(room);
+    env_fixed_.reserve(room);
+    for (int i = 0; i < 3; ++i)
+      if (env_cache_axes_ & (1 << i))
+      {
+        env_up_[i].reserve(room);
+        env_dn_[i].reserve(room);
+      }
+  }
   std::vector<index_t> fixed;
   if (grasp_ >= 0)
     fixed.push_back(grasp_);
