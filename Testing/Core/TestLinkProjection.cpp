@@ -11,6 +11,7 @@
 #include <limits>
 #include <queue>
 #include <set>
+#include <string>
 
 using namespace geoshaping;
 using geoshaping::testing::grid_id;
@@ -892,6 +893,27 @@ void random_scene(std::uint32_t seed, RandomScene& r)
     r.values.push_back(x);
   }
 }
+ProjectionOptions envelope_options()
+{
+  ProjectionOptions o;
+  o.solver = ProjectionSolver::envelope;
+  o.tolerance = 1e-9;
+  return o;
+}
+
+// Every coordinate of the projector's result equals the first implementation's, bit for
+// bit, the sign of a zero included.
+void expect_same_bits(
+  const LinkProjector& p, const OldEnvelope& old, index_t n, const std::string& what)
+{
+  for (index_t v = 0; v < n; ++v)
+    for (int i = 0; i < 3; ++i)
+    {
+      const double a = p.displacement(v)[i], b = old.u[v][i];
+      ASSERT_TRUE(a == b && std::signbit(a) == std::signbit(b))
+        << what << " vertex " << v << " axis " << i << ": " << a << " vs " << b;
+    }
+}
 } // namespace
 
 TEST(LinkProjection, EnvelopeFastPathEqualsTheFirstImplementationBitForBit)
@@ -906,24 +928,17 @@ TEST(LinkProjection, EnvelopeFastPathEqualsTheFirstImplementationBitForBit)
     RandomScene sc;
     random_scene(seed, sc);
     LinkProjector p(sc.mesh);
-    ProjectionOptions o;
-    o.solver = ProjectionSolver::envelope;
-    o.tolerance = 1e-9;
+    const ProjectionOptions o = envelope_options();
     const index_t other = sc.vertices.empty() ? -1 : sc.vertices[sc.vertices.size() / 2];
     for (const index_t grasp : { sc.grasp, other, sc.grasp })
     {
       const OldEnvelope old(sc.mesh, grasp, sc.vertices, sc.values);
       const ProjectionReport r = p.project(grasp, sc.vertices, sc.values, o);
       EXPECT_EQ(r.violation, old.violation) << "seed " << seed;
-      for (index_t v = 0; v < sc.mesh.size(); ++v)
-        for (int i = 0; i < 3; ++i)
-        {
-          // Bit for bit, the sign of a zero included.
-          const double a = p.displacement(v)[i], b = old.u[v][i];
-          ASSERT_TRUE(a == b && std::signbit(a) == std::signbit(b))
-            << "seed " << seed << " grasp " << grasp << " vertex " << v << " axis " << i << ": "
-            << a << " vs " << b;
-        }
+      expect_same_bits(
+        p, old, sc.mesh.size(), "seed " + std::to_string(seed) + " grasp " + std::to_string(grasp));
+      if (HasFatalFailure())
+        return;
       std::set<index_t> mine(p.changed().begin(), p.changed().end());
       std::set<index_t> theirs(old.changed.begin(), old.changed.end());
       EXPECT_EQ(mine, theirs) << "seed " << seed;
@@ -935,6 +950,38 @@ TEST(LinkProjection, EnvelopeFastPathEqualsTheFirstImplementationBitForBit)
   }
   EXPECT_EQ(compared, 180);
   EXPECT_GT(changed_total, 180 * 10); // the scenes do move vertices
+}
+
+TEST(LinkProjection, EnvelopeCacheOfSomeAxesServesCallsOnOtherAxesBitForBit)
+{
+  // The link cache holds the bounds of the axes its calls ran: one projector pulls along
+  // z only, then along every axis, then along x only, then along z again; each call equals
+  // the first implementation on a fresh start, bit for bit.
+  int compared = 0;
+  for (std::uint32_t seed = 0; seed < 20; ++seed)
+  {
+    RandomScene sc;
+    random_scene(seed, sc);
+    LinkProjector p(sc.mesh);
+    const ProjectionOptions o = envelope_options();
+    for (const int axes : { 4, 7, 1, 4 })
+    {
+      Displacements values = sc.values;
+      for (Eigen::Vector3d& u : values)
+        for (int i = 0; i < 3; ++i)
+          if (!(axes & (1 << i)))
+            u[i] = 0.0;
+      const OldEnvelope old(sc.mesh, sc.grasp, sc.vertices, values);
+      const ProjectionReport r = p.project(sc.grasp, sc.vertices, values, o);
+      EXPECT_EQ(r.violation, old.violation) << "seed " << seed << " axes " << axes;
+      expect_same_bits(
+        p, old, sc.mesh.size(), "seed " + std::to_string(seed) + " axes " + std::to_string(axes));
+      if (HasFatalFailure())
+        return;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 80);
 }
 
 TEST(LinkProjection, EnvelopeKeepsAFeasibleStartAndReportsAnEmptyFeasibleSet)

@@ -71,10 +71,108 @@ void PartitionedEnvelope::set_piece(
   in_region_.assign(n, 0);
   region_.clear();
   changed_.clear();
-  down_.assign(n, std::numeric_limits<double>::quiet_NaN());
+  axis_.resize(n);
   cone_.begin(n);
   env_.begin(n);
 }
+
+// The piece for EnvelopeAxis: links read from the adjacency (link_axis_slab), labels in
+// SparseLabels, runs by PartitionedLabels::correct across the pieces. The scan reads every
+// link of the piece's copies of the start (S); the check the owned region vertices' links,
+// a link between two region vertices once, at its end of lower global id.
+struct PartitionedEnvelope::Net
+{
+  PartitionedEnvelope& p;
+  const LinkMesh& mesh;
+  Exchange& exchange;
+  const std::vector<index_t>& start;
+  const std::vector<index_t>& fixed;
+  const double (&top)[3][2]; // [axis][sign > 0]: the largest start y over S
+
+  bool is_fixed(index_t v) const { return p.is_fixed(v); }
+  double u(index_t v, int axis) const { return p.u_[std::size_t(v)][axis]; }
+  template<class F>
+  void for_each_scanned(F f) const
+  {
+    for (index_t v : start)
+      f(v);
+  }
+  template<class F>
+  void for_each_checked(F f) const
+  {
+    for (index_t v : p.region_)
+      if (p.pieces_.owned(v))
+        f(v);
+  }
+  bool scanned_from(index_t, index_t) const { return false; }
+  bool checked_from(index_t m, index_t v) const
+  {
+    return p.in_region_[std::size_t(m)] && p.pieces_.gid(m) < p.pieces_.gid(v);
+  }
+  template<class F>
+  void for_each_link(index_t v, int axis, F f) const
+  {
+    const Adjacency& adj = *mesh.adjacency;
+    double lo, hi;
+    for (const index_t* m = adj.begin(v); m != adj.end(v); ++m)
+      if (link_axis_slab(mesh, v, *m, axis, lo, hi))
+        f(*m, lo, hi, p.is_fixed(*m));
+  }
+  void begin_run(int, double) { p.env_.begin(std::size_t(p.n_)); }
+  double label(index_t v, int axis, double sign) const
+  {
+    return p.env_.has(v) ? p.env_.value[std::size_t(v)] : p.start_y(v, axis, sign);
+  }
+  void set_label(index_t v, int, double, double y) { p.env_.set(v, y); }
+  const std::vector<index_t>& touched() const { return p.env_.touched; }
+  // Relaxes b's links into its free neighbours a: y_a <= y_b + ub(a, b) on y = sign u.
+  auto relax(int axis, double sign) const
+  {
+    return [this, axis, sign](index_t b, double y, const auto& lower)
+    {
+      const Adjacency& adj = *mesh.adjacency;
+      double lo, hi;
+      for (const index_t* it = adj.begin(b); it != adj.end(b); ++it)
+        if (!p.is_fixed(*it) && link_axis_slab(mesh, *it, b, axis, lo, hi))
+          lower(*it, y + (sign > 0.0 ? hi : -lo));
+    };
+  }
+  // The fixed vertices' cones, kept below top.
+  template<class F>
+  void cone(int axis, double sign, F raise)
+  {
+    const double top_here = top[axis][sign > 0.0];
+    SparseLabels& cone = p.cone_;
+    cone.begin(std::size_t(p.n_));
+    std::vector<index_t> seeds, owned_fixed;
+    for (index_t f : fixed)
+    {
+      cone.set(f, p.start_y(f, axis, sign));
+      seeds.push_back(f);
+      if (p.pieces_.owned(f))
+        owned_fixed.push_back(f);
+    }
+    const auto label = [&](index_t v)
+    { return cone.has(v) ? cone.value[std::size_t(v)] : std::numeric_limits<double>::infinity(); };
+    p.supersteps_ += p.pieces_.correct(
+      cone, label, relax(axis, sign), [&](index_t, double cap) { return cap < top_here; }, seeds,
+      owned_fixed, exchange);
+    for (index_t a : cone.touched)
+      raise(a, cone.value[std::size_t(a)]);
+  }
+  void min_pass(int axis, double sign, std::vector<index_t>& seeds)
+  {
+    // The labels the cones raised are the same on every copy: nothing to send first.
+    p.supersteps_ += p.pieces_.correct(
+      p.env_, [&](index_t v) { return label(v, axis, sign); }, relax(axis, sign),
+      [](index_t, double) { return true; }, seeds, {}, exchange);
+  }
+  void change(index_t v, int axis, double value)
+  {
+    p.u_[std::size_t(v)][axis] = value;
+    mark_changed(p.in_region_[std::size_t(v)], v, p.region_, p.changed_);
+  }
+};
 
 bool PartitionedEnvelope::is_fixed(index_t v) const
 {
@@ -166,147 +264,17 @@ ProjectionReport PartitionedEnvelope::project(const LinkMesh& mesh, std::int64_t
       top[axis][0] = std::max(top[axis][0], from_bits(p[std::size_t(3 * axis + 2)]));
     }
 
-  double lo, hi;
-  std::vector<index_t> seeds, seeds_up, down;
-  const auto prescan = [&](int axis)
-  {
-    seeds.clear();
-    seeds_up.clear();
-    for (index_t v : start)
-      for (const index_t* m = adj.begin(v); m != adj.end(v); ++m)
-      {
-        if (!link_axis_slab(mesh, v, *m, axis, lo, hi))
-          continue;
-        const double w = u_[std::size_t(v)][axis] - u_[std::size_t(*m)][axis];
-        const index_t high = w > hi ? v : (w < lo ? *m : -1);
-        if (high < 0)
-          continue;
-        const index_t low = high == v ? *m : v;
-        if (!is_fixed(high))
-          seeds.push_back(low);
-        if (!is_fixed(low))
-          seeds_up.push_back(high);
-      }
-  };
-  const double infinity = std::numeric_limits<double>::infinity();
-  // One envelope run (D: sign +1, U: sign -1) into env_, y = sign u.
-  const auto envelope = [&](int axis, double sign, std::vector<index_t>& from)
-  {
-    // Relaxes b's links into its free neighbours a: y_a <= y_b + ub(a, b) on y = s u.
-    const auto links = [&](double s)
-    {
-      return [&, s](index_t b, double y, const auto& lower)
-      {
-        for (const index_t* it = adj.begin(b); it != adj.end(b); ++it)
-          if (!is_fixed(*it) && link_axis_slab(mesh, *it, b, axis, lo, hi))
-            lower(*it, y + (s > 0.0 ? hi : -lo));
-      };
-    };
-    // The fixed vertices' cones on y' = -y, kept below top.
-    const double cone_sign = -sign;
-    const double top_here = top[axis][cone_sign > 0.0];
-    cone_.begin(std::size_t(n_));
-    std::vector<index_t> cone_seeds, owned_fixed;
-    for (index_t f : fixed)
-    {
-      cone_.set(f, start_y(f, axis, cone_sign));
-      cone_seeds.push_back(f);
-      if (pieces_.owned(f))
-        owned_fixed.push_back(f);
-    }
-    const auto cone_label = [&](index_t v)
-    { return cone_.has(v) ? cone_.value[std::size_t(v)] : infinity; };
-    supersteps_ += pieces_.correct(
-      cone_, cone_label, links(cone_sign), [&](index_t, double cap) { return cap < top_here; },
-      cone_seeds, owned_fixed, exchange);
-    env_.begin(std::size_t(n_));
-    const auto value = [&](index_t v)
-    { return env_.has(v) ? env_.value[std::size_t(v)] : start_y(v, axis, sign); };
-    for (index_t a : cone_.touched)
-      if (!is_fixed(a) && cone_.value[std::size_t(a)] < -value(a))
-        env_.set(a, -cone_.value[std::size_t(a)]);
-    // Links the cones broke seed the min run too (the raised values are the same on
-    // every copy: nothing to send first).
-    for (index_t v : env_.touched)
-      for (const index_t* m = adj.begin(v); m != adj.end(v); ++m)
-      {
-        if (!link_axis_slab(mesh, v, *m, axis, lo, hi))
-          continue;
-        const double yv = value(v), ym = value(*m);
-        const double ub_vm = sign > 0.0 ? hi : -lo;
-        const double ub_mv = sign > 0.0 ? -lo : hi;
-        if (yv > ym + ub_vm && !is_fixed(v))
-          from.push_back(*m);
-        if (ym > yv + ub_mv && !is_fixed(*m))
-          from.push_back(v);
-      }
-    supersteps_ += pieces_.correct(
-      env_, value, links(sign), [](index_t, double) { return true; }, from, {}, exchange);
-  };
-
-  double squared = 0.0;
+  Net net{ *this, mesh, exchange, start, fixed, top };
   std::vector<std::int64_t> worst_bits(3, bits(0.0));
   for (int axis = 0; axis < 3; ++axis)
-  {
-    if (zero[axis])
-      continue;
-    prescan(axis);
-    envelope(axis, 1.0, seeds);
-    down.clear();
-    for (index_t v : env_.touched)
-    {
-      down.push_back(v);
-      down_[std::size_t(v)] = env_.value[std::size_t(v)]; // y = u for sign +1
-    }
-    envelope(axis, -1.0, seeds_up);
-    const auto combine = [&](index_t v)
-    {
-      const double old = u_[std::size_t(v)][axis];
-      const double d = std::isnan(down_[std::size_t(v)]) ? old : down_[std::size_t(v)];
-      const double u = env_.has(v) ? -env_.value[std::size_t(v)] : old;
-      const double mid = d == u ? d : 0.5 * (d + u);
-      if (is_fixed(v) || mid == old || !std::isfinite(mid))
-        return;
-      u_[std::size_t(v)][axis] = mid;
-      if (!in_region_[std::size_t(v)])
-        region_.push_back(v);
-      if (in_region_[std::size_t(v)] != 2)
-        changed_.push_back(v);
-      in_region_[std::size_t(v)] = 2;
-    };
-    for (index_t v : down)
-      combine(v);
-    for (index_t v : env_.touched)
-      combine(v);
-    for (index_t v : down)
-      down_[std::size_t(v)] = std::numeric_limits<double>::quiet_NaN();
-    // E_link bound on this axis over the owned vertices' links (as LinkProjector: a link
-    // between two region vertices once, at its end of lower global id).
-    double worst = 0.0;
-    for (index_t v : region_)
-    {
-      if (!pieces_.owned(v))
-        continue;
-      for (const index_t* m = adj.begin(v); m != adj.end(v); ++m)
-        if (!(in_region_[std::size_t(*m)] && pieces_.gid(*m) < pieces_.gid(v)) &&
-            link_axis_slab(mesh, v, *m, axis, lo, hi) && !(is_fixed(v) && is_fixed(*m)))
-        {
-          const double w = u_[std::size_t(v)][axis] - u_[std::size_t(*m)][axis];
-          worst = std::max(worst, std::max(lo - w, w - hi));
-        }
-    }
-    worst_bits[std::size_t(axis)] = bits(worst);
-  }
+    if (!zero[axis])
+      worst_bits[std::size_t(axis)] = bits(axis_.run(net, axis));
   // Copies of a vertex follow it.
   for (const auto& [copy, rep] : pieces_.aliases())
     if (in_region_[std::size_t(rep)] == 2 && u_[std::size_t(copy)] != u_[std::size_t(rep)])
     {
       u_[std::size_t(copy)] = u_[std::size_t(rep)];
-      if (!in_region_[std::size_t(copy)])
-        region_.push_back(copy);
-      if (in_region_[std::size_t(copy)] != 2)
-        changed_.push_back(copy);
-      in_region_[std::size_t(copy)] = 2;
+      mark_changed(in_region_[std::size_t(copy)], copy, region_, changed_);
     }
 
   std::int64_t changed_owned = 0, region_owned = 0;
@@ -327,6 +295,7 @@ ProjectionReport PartitionedEnvelope::project(const LinkMesh& mesh, std::int64_t
     changed_total += p[3];
     region_total += p[4];
   }
+  double squared = 0.0;
   for (int axis = 0; axis < 3; ++axis)
     squared += worst[axis] * worst[axis];
   changed_total_ = std::size_t(changed_total);

@@ -8,7 +8,8 @@
 // PartitionedChainMail leaves the frame: ghosts hold their owners' displacements).
 //
 // What is computed (per axis i and direction sign, y = sign u_i): two label-correcting
-// runs, exactly those of LinkProjector::run_envelope.
+// runs, exactly those of LinkProjector's envelope: both run the one per-axis step,
+// EnvelopeAxis (envelope_axis.h).
 //   cone:  c_a = min_f fl(c_f + ub'(a, f) ...) from the fixed vertices f (grasp, and pins in
 //          or next to S = start + grasp) on y' = -y, labels kept only below
 //          top = max(0, max_{v in S} y'_v); then z'_a = max(z_a, -c_a) for free a;
@@ -40,6 +41,7 @@
 // of a flag; two small all_gathers per call (the reductions). set_piece is O(piece) and
 // gathers every piece's ghost ids (once per partition).
 #include "geoshaping/parallel/partitioned_labels.h"
+#include "geoshaping/passes/envelope_axis.h"
 #include "geoshaping/passes/link_projection.h"
 
 #include <cstdint>
@@ -79,6 +81,8 @@ public:
   std::size_t changed_total() const { return changed_total_; }
 
 private:
+  // The piece as EnvelopeAxis's Net (envelope_axis.h).
+  struct Net;
   bool is_fixed(index_t v) const;
   double start_y(index_t v, int axis, double sign) const { return sign * u_[std::size_t(v)][axis]; }
 
@@ -92,7 +96,7 @@ private:
   std::vector<std::uint8_t> in_region_; // 1: start or grasp, 2: changed
   std::vector<index_t> region_, changed_;
   SparseLabels cone_, env_;
-  std::vector<double> down_; // D per vertex (NaN: not set)
+  EnvelopeAxis axis_; // the per-axis step, shared with LinkProjector
   std::size_t supersteps_ = 0, changed_total_ = 0;
 };
 

@@ -31,16 +31,12 @@ bool link_slab(const LinkMesh& m, index_t c, index_t s, Eigen::Vector3d& lo, Eig
 }
 
 // link_slab on one axis only (the envelope works axis by axis): the same numbers as
-// displacement_bounds, a third of the work.
-bool axis_slab(const LinkMesh& m, index_t c, index_t s, int i, double& lo, double& hi)
+// displacement_bounds, a third of the work. `o` is rest_c - rest_s, finite.
+void axis_slab(const Eigen::Vector3d& o, const ChainMailParams& pc, const ChainMailParams& ps,
+  int i, double& lo, double& hi)
 {
-  const Eigen::Vector3d o = m.rest[std::size_t(c)] - m.rest[std::size_t(s)];
-  if (!o.allFinite())
-    return false;
   const Eigen::Vector3d a = o.cwiseAbs();
   const double side = a.sum() - a[i]; // S_i = sum_{j != i} |o_j|
-  const ChainMailParams& pc = m.params[std::size_t(c)];
-  const ChainMailParams& ps = m.params[std::size_t(s)];
   // c w.r.t. s on o, and s w.r.t. c on -o (negated), as in displacement_bounds.
   const double oi = o[i];
   const double c_near = (pc.compression - 1.0) * oi, c_far = (pc.stretch - 1.0) * oi;
@@ -51,6 +47,14 @@ bool axis_slab(const LinkMesh& m, index_t c, index_t s, int i, double& lo, doubl
   const double s_hi = (-oi >= 0.0 ? s_far : s_near) + ps.shear * side;
   lo = std::max(c_lo, -s_hi);
   hi = std::min(c_hi, -s_lo);
+}
+
+bool axis_slab(const LinkMesh& m, index_t c, index_t s, int i, double& lo, double& hi)
+{
+  const Eigen::Vector3d o = m.rest[std::size_t(c)] - m.rest[std::size_t(s)];
+  if (!o.allFinite())
+    return false;
+  axis_slab(o, m.params[std::size_t(c)], m.params[std::size_t(s)], i, lo, hi);
   return true;
 }
 } // namespace
@@ -521,20 +525,23 @@ std::int32_t LinkProjector::envelope_links(index_t v)
     return env_first_[v];
   const std::int32_t first = std::int32_t(env_nbr_.size());
   const Adjacency& adj = *mesh_.adjacency;
+  const Eigen::Vector3d& rest = mesh_.rest[std::size_t(v)];
+  const ChainMailParams& pv = mesh_.params[std::size_t(v)];
   for (const index_t* n = adj.begin(v); n != adj.end(v); ++n)
   {
-    double lo[3], hi[3];
-    if (!axis_slab(mesh_, *n, v, 0, lo[0], hi[0]))
+    const Eigen::Vector3d o = mesh_.rest[std::size_t(*n)] - rest;
+    if (!o.allFinite())
       continue;
-    axis_slab(mesh_, *n, v, 1, lo[1], hi[1]);
-    axis_slab(mesh_, *n, v, 2, lo[2], hi[2]);
     env_nbr_.push_back(*n);
     env_fixed_.push_back(mesh_.is_pinned(*n) ? 1 : 0);
     for (int i = 0; i < 3; ++i)
-    {
-      env_up_[i].push_back(hi[i]);
-      env_dn_[i].push_back(-lo[i]);
-    }
+      if (env_cache_axes_ & (1 << i))
+      {
+        double lo, hi;
+        axis_slab(o, mesh_.params[std::size_t(*n)], pv, i, lo, hi);
+        env_up_[i].push_back(hi);
+        env_dn_[i].push_back(-lo);
+      }
   }
   env_first_[v] = first;
   env_count_[v] = std::int32_t(env_nbr_.size()) - first;
@@ -653,8 +660,10 @@ void LinkProjector::envelope_min_pass(int axis, double sign, std::vector<index_t
 // The cones of the fixed vertices on y = sign u: c(a) = min_f (y_f + d(f, a)) by Dijkstra
 // on labels of their own (a cone must pass vertices that are already above it), pruned
 // where c >= the largest y of every vertex (beyond, the cone lowers nothing: weights >= 0);
-// then y_a = min(y_a, c(a)).
-void LinkProjector::envelope_cone(int axis, double sign, const std::vector<index_t>& fixed)
+// raise(a, c(a)) then takes y_a = min(y_a, c(a)) on free vertices (EnvelopeAxis).
+template<class Raise>
+void LinkProjector::envelope_cone(
+  int axis, double sign, const std::vector<index_t>& fixed, Raise raise)
 {
   if (fixed.empty())
     return;
@@ -688,9 +697,67 @@ void LinkProjector::envelope_cone(int axis, double sign, const std::vector<index
         set(a, cap);
     });
   for (index_t a : env_cone_touched_)
-    if (!is_fixed(a) && env_cone_[a] < envelope_value(a, axis, sign))
-      envelope_touch(a, sign * env_cone_[a]);
+    raise(a, env_cone_[a]);
 }
+
+// The whole mesh for EnvelopeAxis: links from the cache (slot k of v holds the slab of
+// u_m - u_v as [-dn, up], so lo <= u_v - u_m <= hi is [-up, dn] exactly: axis_slab is
+// antisymmetric), labels in env_value_ (as u), runs on the radix heap. A link between two
+// region vertices is read once, from its end of lower index.
+struct LinkProjector::EnvelopeNet
+{
+  LinkProjector& p;
+  const std::vector<index_t>& fixed;
+
+  bool is_fixed(index_t v) const { return p.is_fixed(v); }
+  double u(index_t v, int axis) const { return p.u_[v][axis]; }
+  template<class F>
+  void for_each_scanned(F f) const
+  {
+    for (index_t v : p.region_)
+      f(v);
+  }
+  template<class F>
+  void for_each_checked(F f) const
+  {
+    for_each_scanned(f);
+  }
+  bool scanned_from(index_t m, index_t v) const { return p.expanded_[m] && m < v; }
+  bool checked_from(index_t m, index_t v) const { return scanned_from(m, v); }
+  template<class F>
+  void for_each_link(index_t v, int axis, F f) const
+  {
+    const std::int32_t first = p.envelope_links(v), last = first + p.env_count_[v];
+    const double* up = p.env_up_[axis].data();
+    const double* dn = p.env_dn_[axis].data();
+    const index_t* nbr = p.env_nbr_.data();
+    const std::uint8_t* pinned = p.env_fixed_.data();
+    for (std::int32_t k = first; k < last; ++k)
+      f(nbr[k], -up[k], dn[k], pinned[k] || nbr[k] == p.grasp_);
+  }
+  void begin_run(int, double)
+  {
+    ++p.env_pass_;
+    p.env_touched_.clear();
+  }
+  double label(index_t v, int axis, double sign) const { return p.envelope_value(v, axis, sign); }
+  void set_label(index_t v, int, double sign, double y) { p.envelope_touch(v, sign * y); }
+  const std::vector<index_t>& touched() const { return p.env_touched_; }
+  template<class F>
+  void cone(int axis, double sign, F raise)
+  {
+    p.envelope_cone(axis, sign, fixed, raise);
+  }
+  void min_pass(int axis, double sign, std::vector<index_t>& seeds)
+  {
+    p.envelope_min_pass(axis, sign, seeds);
+  }
+  void change(index_t v, int axis, double value)
+  {
+    p.u_[v][axis] = value;
+    mark_changed(p.expanded_[v], v, p.region_, p.changed_);
+  }
+};
 
 void LinkProjector::run_envelope(
   const std::vector<index_t>& start, const ProjectionOptions& options, ProjectionReport& report)
@@ -698,13 +765,15 @@ void LinkProjector::run_envelope(
   const index_t n = mesh_.size();
   if (env_stamp_.size() != std::size_t(n))
   {
-    env_value_.assign(std::size_t(n), 0.0);
-    env_down_.assign(std::size_t(n), std::numeric_limits<double>::quiet_NaN());
+    // Values are read only where stamped, counts only where cached: left uninitialised,
+    // so their pages cost only where the calls write (O(touched), not O(mesh)).
+    env_value_.reset(new double[std::size_t(n)]);
+    env_axis_.resize(std::size_t(n));
     env_stamp_.assign(std::size_t(n), 0);
-    env_cone_.assign(std::size_t(n), 0.0);
+    env_cone_.reset(new double[std::size_t(n)]);
     env_cone_stamp_.assign(std::size_t(n), 0);
     env_first_.assign(std::size_t(n), -1);
-    env_count_.assign(std::size_t(n), 0);
+    env_count_.reset(new std::int32_t[std::size_t(n)]);
     env_cached_.clear();
   }
   const Adjacency& adj = *mesh_.adjacency;
@@ -715,21 +784,6 @@ void LinkProjector::run_envelope(
       expanded_[v] = 1;
       region_.push_back(v);
     }
-  // The link cache grows with the vertices the calls reach; past a bound proportional to
-  // this call's start it is dropped, so its memory stays O(displaced).
-  if (env_cached_.size() > 8 * region_.size() + 65536)
-  {
-    for (index_t v : env_cached_)
-      env_first_[v] = -1;
-    env_cached_.clear();
-    env_nbr_.clear();
-    env_fixed_.clear();
-    for (int i = 0; i < 3; ++i)
-    {
-      env_up_[i].clear();
-      env_dn_[i].clear();
-    }
-  }
   // The axes to run: those on which some start value is non-zero (on the others rest
   // satisfies every link and nothing moves; a vertex a later axis adds to the region is
   // at rest on the other axes).
@@ -741,7 +795,42 @@ void LinkProjector::run_envelope(
         env_axes_ |= 1 << axis;
         break;
       }
-  std::vector<index_t> fixed, seeds, down;
+  // The link cache grows with the vertices the calls reach and holds the axes the calls
+  // ran; past a bound proportional to this call's start, or without an axis this call
+  // runs, it is dropped, so its memory stays O(displaced).
+  const bool too_big = env_cached_.size() > 8 * region_.size() + 65536;
+  if (too_big || (env_axes_ & ~env_cache_axes_))
+  {
+    for (index_t v : env_cached_)
+      env_first_[v] = -1;
+    env_cached_.clear();
+    env_nbr_.clear();
+    env_fixed_.clear();
+    for (int i = 0; i < 3; ++i)
+    {
+      env_up_[i].clear();
+      env_dn_[i].clear();
+    }
+    env_cache_axes_ = too_big ? env_axes_ : env_cache_axes_ | env_axes_;
+  }
+  // Room for the links of about twice the start's vertices (the D and U runs reach
+  // ~1.6x at the paper's scale): the slots are not moved while the cache grows.
+  const std::size_t slots =
+    adj.offsets.empty() ? 0
+                        : std::size_t(adj.offsets.back()) / std::size_t(std::max<index_t>(n, 1));
+  const std::size_t room = env_nbr_.size() + 2 * (slots + 1) * region_.size();
+  if (env_nbr_.capacity() < room)
+  {
+    env_nbr_.reserve(room);
+    env_fixed_.reserve(room);
+    for (int i = 0; i < 3; ++i)
+      if (env_cache_axes_ & (1 << i))
+      {
+        env_up_[i].reserve(room);
+        env_dn_[i].reserve(room);
+      }
+  }
+  std::vector<index_t> fixed;
   if (grasp_ >= 0)
     fixed.push_back(grasp_);
   if (!mesh_.pinned.empty())
@@ -756,126 +845,13 @@ void LinkProjector::run_envelope(
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
 
-  // The links violated in the start seed both runs (one scan, each link once): with
-  // w = u_v - u_m outside [lo, hi], D lowers the high end from the low one and U raises
-  // the low end from the high one. Slot k of v holds the slab of u_m - u_v, so the slab
-  // of u_v - u_m is [lo, hi] = [-up, dn] (exactly: axis_slab is antisymmetric).
-  std::vector<index_t> seeds_up;
-  const auto prescan = [&](int axis)
-  {
-    seeds.clear();
-    seeds_up.clear();
-    const std::vector<double>& up = env_up_[axis];
-    const std::vector<double>& dn = env_dn_[axis];
-    for (index_t v : region_)
-    {
-      const std::int32_t first = envelope_links(v), last = first + env_count_[v];
-      const double uv = u_[v][axis];
-      for (std::int32_t k = first; k < last; ++k)
-      {
-        const index_t m = env_nbr_[std::size_t(k)];
-        if (expanded_[m] && m < v)
-          continue;
-        const double w = uv - u_[m][axis];
-        const index_t high = w > dn[std::size_t(k)] ? v : (w < -up[std::size_t(k)] ? m : -1);
-        if (high < 0)
-          continue;
-        const index_t low = high == v ? m : v;
-        if (!is_fixed(high))
-          seeds.push_back(low);
-        if (!is_fixed(low))
-          seeds_up.push_back(high);
-      }
-    }
-  };
-  // One envelope run: D (sign +1: the fixed vertices' lower cones, then min-plus) or U
-  // (sign -1: the same on -u), from the prescan's seeds plus the ends of the links the
-  // cones broke. Leaves the values in env_value_ for env_touched_.
-  const auto envelope = [&](int axis, double sign, std::vector<index_t>& from)
-  {
-    ++env_pass_;
-    env_touched_.clear();
-    envelope_cone(axis, -sign, fixed); // the fixed vertices' cones, on -y
-    const std::vector<double>& up = env_up_[axis];
-    const std::vector<double>& dn = env_dn_[axis];
-    for (std::size_t i = 0; i < env_touched_.size(); ++i)
-    {
-      const index_t v = env_touched_[i];
-      const std::int32_t first = envelope_links(v), last = first + env_count_[v];
-      const double yv = envelope_value(v, axis, sign);
-      const bool v_fixed = is_fixed(v);
-      const std::vector<double>& ub_out = sign > 0.0 ? dn : up; // ub(v, m) per slot
-      const std::vector<double>& ub_in = sign > 0.0 ? up : dn;  // ub(m, v)
-      for (std::int32_t k = first; k < last; ++k)
-      {
-        const index_t m = env_nbr_[std::size_t(k)];
-        const double ym = envelope_value(m, axis, sign);
-        // v - m in [lo, hi] = [-up, dn]: y_v <= y_m + ub(v, m) and y_m <= y_v + ub(m, v).
-        const double ub_vm = ub_out[std::size_t(k)];
-        const double ub_mv = ub_in[std::size_t(k)];
-        if (yv > ym + ub_vm && !v_fixed)
-          from.push_back(m);
-        if (ym > yv + ub_mv && !env_fixed_[std::size_t(k)] && m != grasp_)
-          from.push_back(v);
-      }
-    }
-    envelope_min_pass(axis, sign, from);
-  };
-
+  EnvelopeNet net{ *this, fixed };
   double squared = 0.0; // sum over the axes of the squared largest slab distance
   for (int axis = 0; axis < 3; ++axis)
   {
     if (!(env_axes_ & (1 << axis)))
       continue; // every value 0 on this axis: rest satisfies every link, nothing to do
-    prescan(axis);
-    envelope(axis, 1.0, seeds);
-    down = env_touched_;
-    for (index_t v : down)
-      env_down_[v] = env_value_[v];
-    envelope(axis, -1.0, seeds_up);
-    const auto combine = [&](index_t v)
-    {
-      const double old = u_[v][axis];
-      const double d = std::isnan(env_down_[v]) ? old : env_down_[v];
-      const double u = env_stamp_[v] == env_pass_ ? env_value_[v] : old;
-      const double mid = d == u ? d : 0.5 * (d + u);
-      if (is_fixed(v) || mid == old || !std::isfinite(mid))
-        return;
-      u_[v][axis] = mid;
-      if (!expanded_[v])
-        region_.push_back(v);
-      if (expanded_[v] != 2)
-        changed_.push_back(v);
-      expanded_[v] = 2;
-    };
-    for (index_t v : down)
-      combine(v);
-    for (index_t v : env_touched_)
-      combine(v);
-    for (index_t v : down)
-      env_down_[v] = std::numeric_limits<double>::quiet_NaN();
-    // The check: the largest distance of a link's difference to its slab on this axis.
-    // In the Axes frame a direction's distance is the Euclidean norm of its per-axis
-    // distances, each at most the slab's (the slab is inside both directions' boxes), and
-    // an axis left out is 0 everywhere (0 is in every slab); so the root of the sum of
-    // the squared per-axis maxima bounds E_link from above.
-    double worst = 0.0;
-    const std::vector<double>& up = env_up_[axis];
-    const std::vector<double>& dn = env_dn_[axis];
-    for (index_t v : region_)
-    {
-      const std::int32_t first = envelope_links(v), last = first + env_count_[v];
-      const double uv = u_[v][axis];
-      const bool v_fixed = is_fixed(v);
-      for (std::int32_t k = first; k < last; ++k)
-      {
-        const index_t m = env_nbr_[std::size_t(k)];
-        if ((expanded_[m] && m < v) || (v_fixed && (env_fixed_[std::size_t(k)] || m == grasp_)))
-          continue;
-        const double w = uv - u_[m][axis];
-        worst = std::max(worst, std::max(-up[std::size_t(k)] - w, w - dn[std::size_t(k)]));
-      }
-    }
+    const double worst = env_axis_.run(net, axis);
     squared += worst * worst;
   }
   report.iterations = 1;

@@ -2,6 +2,7 @@
 // Projection of a configuration onto the set satisfying every ChainMail link: the
 // reference of E_ref and the optional refinement pass (docs/design.md, Error against run time).
 #include "geoshaping/metrics/error_metrics.h"
+#include "geoshaping/passes/envelope_axis.h"
 
 #include <cstdint>
 #include <functional>
@@ -106,9 +107,14 @@ const char* solver_name(ProjectionSolver solver);
 // above every such y, and the end state is one), so Dijkstra's order is only a matter
 // of speed (a FIFO order popped 4x and 10.6x more vertices in the two large passes at the
 // paper's scale, and was slower).
-// Each link's slab on each axis is computed once (axis_slab, cached per vertex in flat
-// arrays and kept across calls: the mesh is constant for the projector's life; the cache
-// is dropped past 8x the start + 65,536 vertices, so its memory stays O(displaced)).
+// Each link's slab on each axis that runs is computed once, when a pass first reaches the
+// link's vertex (axis_slab, cached per vertex in flat arrays and kept across calls: the
+// mesh is constant for the projector's life). The cache holds only the axes its calls
+// ran (a pull along z fills a third); a call on another axis, or a cache past 8x the
+// start + 65,536 vertices, drops it, so its memory stays O(displaced). The dense scratch
+// is allocated by the first call: stamps and marks set (20 bytes per mesh vertex), the
+// values and counts (20 bytes) left uninitialised, as they are read only where a stamp or
+// the cache says they were written.
 // It is not the projection (E_ref measures how far it lies from it, docs/report.md); with
 // inconsistent fixed values (F empty) the conflicting links stay violated and
 // `converged` is false.
@@ -273,8 +279,12 @@ private:
   void run_admm(const ProjectionOptions& options, ProjectionReport& report);
   void run_envelope(
     const std::vector<index_t>& start, const ProjectionOptions& options, ProjectionReport& report);
+  // The whole mesh as EnvelopeAxis's Net (envelope_axis.h).
+  struct EnvelopeNet;
   void envelope_min_pass(int axis, double sign, std::vector<index_t>& seeds);
-  void envelope_cone(int axis, double sign, const std::vector<index_t>& fixed);
+  // Calls raise(a, c) for each vertex a with a cone label c, after the run.
+  template<class Raise>
+  void envelope_cone(int axis, double sign, const std::vector<index_t>& fixed, Raise raise);
   // The Dijkstra loop both share: pops the queue in increasing label, skips stale
   // entries (value != label(b)), and offers each free, non-grasped neighbour a of b the
   // label value(b) + ub(b, a) through relax(a, cap).
@@ -307,23 +317,26 @@ private:
   double best_update_ = 0.0;
 
   // Envelope scratch (dense, allocated on first use): values of the current pass, the pass
-  // that set them, the lower envelope D per touched vertex, and the vertices touched.
-  std::vector<double> env_value_, env_down_;
+  // that set them, and the vertices touched; the per-axis step (D per vertex, the seeds).
+  EnvelopeAxis env_axis_;
+  std::unique_ptr<double[]> env_value_;
   std::vector<std::uint32_t> env_stamp_;
   std::uint32_t env_pass_ = 0;
   std::vector<index_t> env_touched_;
-  std::vector<double> env_cone_; // the fixed vertices' cones, with their own pass stamps
+  std::unique_ptr<double[]> env_cone_; // the fixed vertices' cones, with their own pass stamps
   std::vector<std::uint32_t> env_cone_stamp_;
   std::uint32_t env_cone_pass_ = 0;
   std::vector<index_t> env_cone_touched_;
   // The link cache of one call (envelope_links): per vertex reached its first slot (-1:
   // none yet) and slot count (dense), and per slot the neighbour, whether it is fixed and,
   // per active axis, the slab bounds the passes relax with.
-  std::vector<std::int32_t> env_first_, env_count_;
+  std::vector<std::int32_t> env_first_;
+  std::unique_ptr<std::int32_t[]> env_count_;
   std::vector<index_t> env_cached_, env_nbr_;
   std::vector<std::uint8_t> env_fixed_;
   std::vector<double> env_up_[3], env_dn_[3];
-  int env_axes_ = 0; // bit i: axis i runs in this call
+  int env_axes_ = 0;       // bit i: axis i runs in this call
+  int env_cache_axes_ = 0; // bit i: the link cache holds axis i's bounds
   // The passes' radix heap: 65 buckets, the last key popped, the entries queued.
   std::vector<RadixEntry> env_buckets_[65];
   std::uint64_t env_last_ = 0;
