@@ -389,6 +389,9 @@ std::int64_t vtkChainMailDeformationFilter::ResolveGrasp(vtkPointSet* input)
       state.Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
       state.Locator->SetDataSet(input);
       state.Locator->BuildLocator();
+      // Kept until Invalidate drops it (the geometry changed): the input's MTime moves
+      // on every frame, and a query would otherwise rebuild it, O(points) a frame.
+      state.Locator->UseExistingSearchStructureOn();
     }
     double dist2 = 0.0;
     const vtkIdType v = NearestPoint(

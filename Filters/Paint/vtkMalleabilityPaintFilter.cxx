@@ -13,6 +13,7 @@
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkSparseArrayChanges.h"
 #include "vtkSparsePointChanges.h"
@@ -71,9 +72,15 @@ struct vtkMalleabilityPaintFilter::vtkInternals
   vtkMTimeType GeometryTime = 0;
   bool GeometryValid = false;
   std::vector<double> Xyz;
+  // Built on first use (geodesic dabs, single-dab reach): Euclidean strokes go through the
+  // painter's own vertex grid instead.
   vtkSmartPointer<vtkStaticPointLocator> Locator;
+  vtkStaticPointLocator* GetLocator();
   bool AdjacencyValid = false;
   geoshaping::Adjacency Adjacency;
+  // Kept between updates: its vertex grid (built once per geometry) and the open stroke
+  // of the array in Painted, which appended dabs continue.
+  std::unique_ptr<geoshaping::Painter> Painter;
 
   // The last painted array, what it was painted from (input geometry, source array,
   // settings) and the dabs applied to it: an update that only appends dabs continues it.
@@ -135,7 +142,7 @@ void vtkMalleabilityPaintFilter::vtkInternals::UpdateIds(vtkPointSet* input)
 
 geoshaping::index_t vtkMalleabilityPaintFilter::vtkInternals::Nearest(const Eigen::Vector3d& p)
 {
-  const vtkIdType first = this->Locator->FindClosestPoint(p.data());
+  const vtkIdType first = this->GetLocator()->FindClosestPoint(p.data());
   if (first < 0)
     return -1;
   // The distance as the core measures it (brush.cpp), and every point as near.
@@ -173,6 +180,7 @@ bool vtkMalleabilityPaintFilter::vtkInternals::Update(
   this->GeometryTime = time;
   this->AdjacencyValid = false;
   this->Adjacency = {};
+  this->Painter.reset();
   this->IdsFromCoordinates = false; // numbered again by UpdateIds
   vtkIdType firstBad;
   const vtkIdType bad = vtkGeoShapingAdapter::PointsAsDouble(points, this->Xyz, firstBad);
@@ -186,8 +194,9 @@ bool vtkMalleabilityPaintFilter::vtkInternals::Update(
   this->Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
   if (this->GeometryValid)
   {
-    this->Locator->SetDataSet(input);
-    this->Locator->BuildLocator();
+    vtkNew<vtkPolyData> cloud; // the points alone: the input may change its cells later
+    cloud->SetPoints(points);
+    this->Locator->SetDataSet(cloud);
   }
   ++self->NumberOfRebuilds;
   return this->GeometryValid;
@@ -205,17 +214,25 @@ std::vector<std::uintptr_t> vtkMalleabilityPaintFilter::vtkInternals::Signature(
   return s;
 }
 
+vtkStaticPointLocator* vtkMalleabilityPaintFilter::vtkInternals::GetLocator()
+{
+  if (this->Locator->GetDataSet() && this->Locator->GetBuildTime() == 0)
+  {
+    this->Locator->BuildLocator();
+  }
+  return this->Locator;
+}
+
 geoshaping::PointQueries vtkMalleabilityPaintFilter::vtkInternals::Queries()
 {
-  vtkStaticPointLocator* locator = this->Locator;
   geoshaping::PointQueries q;
   q.nearest = [this](const Eigen::Vector3d& p) { return this->Nearest(p); };
   auto found = vtkSmartPointer<vtkIdList>::New();
-  q.within = [locator, found](
+  q.within = [this, found](
                const Eigen::Vector3d& p, double r, std::vector<geoshaping::index_t>& ids)
   {
     // A hair wider than asked: the core keeps exactly those within r by its own test.
-    locator->FindPointsWithinRadius(r * (1.0 + 1e-9), p.data(), found);
+    this->GetLocator()->FindPointsWithinRadius(r * (1.0 + 1e-9), p.data(), found);
     ids.assign(found->begin(), found->end());
   };
   return q;
@@ -434,6 +451,7 @@ int vtkMalleabilityPaintFilter::RequestData(
                                                     : static_cast<vtkPointSet*>(input));
     this->SetAbortOutput(false);
     this->SetAbortExecute(0);
+    this->Internals->Painted = nullptr; // the painter's open stroke is not that array's
     vtkErrorMacro("Painting was aborted after "
                   << this->NumberOfAppliedDabs << " of " << this->Internals->Dabs.size()
                   << " dabs; the output is the previous one (change a property to paint again).");
@@ -448,6 +466,7 @@ int vtkMalleabilityPaintFilter::RequestData(
     for (vtkIdType i = 0; i < n; ++i)
       pins->SetValue(i, m[i] >= 0.5f ? 1 : 0);
     output->GetPointData()->AddArray(pins);
+    this->Internals->Painted = nullptr; // the painter's open stroke is the mask's
   }
   else
   {
@@ -560,28 +579,33 @@ bool vtkMalleabilityPaintFilter::ApplyDabs(
   }
 
   const auto start = std::chrono::steady_clock::now();
-  geoshaping::Painter painter(in.Xyz.data(), geoshaping::index_t(n), &in.Adjacency, in.Queries());
-  const std::vector<geoshaping::Dab> dabs(in.Dabs.begin() + std::ptrdiff_t(first), in.Dabs.end());
+  if (!in.Painter)
+  {
+    in.Painter = std::make_unique<geoshaping::Painter>(
+      in.Xyz.data(), geoshaping::index_t(n), &in.Adjacency, in.Queries());
+  }
+  std::vector<geoshaping::Dab> appended;
+  if (first > 0)
+    appended.assign(in.Dabs.begin() + std::ptrdiff_t(first), in.Dabs.end());
+  const std::vector<geoshaping::Dab>& dabs = first > 0 ? appended : in.Dabs;
+  const auto falloff = static_cast<geoshaping::Falloff>(this->Falloff);
+  geoshaping::PaintReport report;
   if (touched)
   {
-    geoshaping::Reach reach;
-    for (const geoshaping::Dab& dab : dabs)
-    {
-      if (*geoshaping::validate_dab(dab) == '\0')
-      {
-        painter.reach(dab, mode, reach);
-        touched->insert(touched->end(), reach.vertices.begin(), reach.vertices.end());
-      }
-    }
+    // Appended dabs: a few, painted in place, continuing the last stroke.
+    std::vector<geoshaping::index_t> written;
+    report = in.Painter->append(dabs, falloff, mode, m, written);
+    touched->insert(touched->end(), written.begin(), written.end());
   }
-  const geoshaping::PaintReport report =
-    painter.paint(dabs, static_cast<geoshaping::Falloff>(this->Falloff), mode, m,
-      touched ? geoshaping::Progress() // appended dabs: a few, painted in place
-              : [this](double done)
+  else
+  {
+    report = in.Painter->paint(dabs, falloff, mode, m,
+      [this](double done)
       {
         this->UpdateProgress(done);
         return !this->CheckAbort();
       });
+  }
   this->LastPaintMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfAppliedDabs = static_cast<int>(report.applied);
@@ -712,6 +736,8 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
   const auto start = std::chrono::steady_clock::now();
   const auto falloff = static_cast<geoshaping::Falloff>(this->Falloff);
   geoshaping::Reach reach;
+  geoshaping::StrokeAccumulator stroke; // the rule of one process (brush.h)
+  std::vector<geoshaping::index_t> written;
   std::int64_t painted = 0;
   std::vector<std::pair<std::size_t, std::string>> rejected;
   int applied = 0;
@@ -725,13 +751,17 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
       continue;
     }
     in.Geodesic->compute(dab.center, dab.radius, n > 0 ? in.Nearest(dab.center) : -1, reach, ex);
-    geoshaping::apply_dab(dab, falloff, reach, m);
-    for (geoshaping::index_t v : reach.vertices)
-    {
-      painted += in.Geodesic->pieces().owned(v);
-      if (touched)
-        touched->push_back(v);
-    }
+    if (stroke.continues(dab))
+      stroke.move(dab.center);
+    else
+      stroke.begin(dab, falloff);
+    written.clear();
+    const std::size_t before = stroke.members().size();
+    stroke.add(reach, m, &written);
+    for (std::size_t k = before; k < stroke.members().size(); ++k)
+      painted += in.Geodesic->pieces().owned(stroke.members()[k]);
+    if (touched)
+      touched->insert(touched->end(), written.begin(), written.end());
     ++applied;
   }
   std::int64_t total = 0;

@@ -11,17 +11,22 @@
  * than points is refused: error, output = input. The array is
  * made the active scalars so that a mapper colours by it.
  *
- * Each dab (x y z radius value strength) is applied in order: a vertex at distance d
- * from the dab's centre with d <= radius moves toward `value`,
+ * Dabs (x y z radius value strength) are painted in order, stroke by stroke: a vertex
+ * at distance d <= radius from a dab's centre moves toward `value`,
  *
  *   m += strength * falloff(d / radius) * (value - m),
  *
- * with Falloff CONSTANT, LINEAR, SMOOTH or GAUSSIAN (see geoshaping/paint/brush.h). Distance
+ * with Falloff CONSTANT, LINEAR, SMOOTH or GAUSSIAN (see geoshaping/paint/brush.h), and
+ * consecutive dabs of one brush whose centres follow a path (each within one radius of
+ * the previous, as the GUI's brush lays them) form a stroke that moves each vertex
+ * once, with the weight of its nearest dab: where such dabs overlap their weights no
+ * longer compound. Distance
  * is EUCLIDEAN (a sphere, found with a vtkStaticPointLocator) or GEODESIC (the path
  * along cell edges from the vertex nearest the centre, bounded by the radius), so a
- * brush on one side of a fault gap or a tight fold does not paint the other side. A dab
- * costs time in proportion to the vertices under it; the locator and the adjacency are
- * built once per geometry. The result is deterministic: the same input and dabs give a
+ * brush on one side of a fault gap or a tight fold does not paint the other side. A
+ * Euclidean stroke costs time in proportion to the vertices it covers, a geodesic dab to
+ * the vertices under it; the vertex grid, locator and adjacency are built once per
+ * geometry. The result is deterministic: the same input and dabs give a
  * bit-identical array, so a ParaView state file or a script reproduces the painting.
  *
  * Point dabs (id value weight) paint given vertices after the dabs:
@@ -132,8 +137,8 @@ public:
 
   ///@{
   /// Figures of the last update: dabs applied and skipped, vertex values written
-  /// (a vertex under two dabs counts twice), and the painting time in milliseconds
-  /// (dabs only, not the array copy).
+  /// (a vertex under two strokes counts twice, under two dabs of one stroke once), and the painting
+  /// time in milliseconds (dabs only, not the array copy).
   vtkGetMacro(NumberOfAppliedDabs, int);
   vtkGetMacro(NumberOfRejectedDabs, int);
   vtkGetMacro(NumberOfPaintedValues, vtkIdType);

@@ -291,8 +291,9 @@ TEST(Painter, ReportsProgressAndStopsWhenAsked)
 {
   const geoshaping::testing::Mesh s = geoshaping::testing::triangle_grid(30, 30, 1.0);
   std::vector<Dab> dabs;
+  // Alternate values: each dab is a stroke of its own (brush.h), a point where it can stop.
   for (int i = 0; i < 250; ++i)
-    dabs.push_back({ Eigen::Vector3d(i % 30, (i / 30) % 30, 0.0), 2.0, 0.0, 1.0 });
+    dabs.push_back({ Eigen::Vector3d(i % 30, (i / 30) % 30, 0.0), 2.0, double(i % 2), 1.0 });
   std::vector<float> m(std::size_t(s.size()), 0.5f);
   Painter painter(s.xyz.data(), s.size(), nullptr, brute_force_queries(s.xyz.data(), s.size()));
 

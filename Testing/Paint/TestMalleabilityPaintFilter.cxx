@@ -337,7 +337,12 @@ TEST(MalleabilityPaint, ReportsProgressAndAnAbortLeavesThePreviousOutput)
   vtkNew<vtkMalleabilityPaintFilter> paint;
   paint->SetInputData(Scene(false));
   paint->SetFalloff(vtkMalleabilityPaintFilter::CONSTANT);
-  AddFigure5CDabs(paint); // hundreds of dabs
+  // 300 dabs, each a stroke of its own (alternate values): progress comes between strokes.
+  for (int i = 0; i < 300; ++i)
+  {
+    const double x = 5.0 + 3.0 * (i % 30);
+    paint->AddDab(x, 5.0 + 5.0 * (i / 30), x < 47.0 ? 20.0 : 0.0, 2.5, i % 2 ? 0.9 : 0.1, 1.0);
+  }
   std::vector<double> progress;
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetClientData(&progress);

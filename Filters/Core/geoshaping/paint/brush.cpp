@@ -229,31 +229,137 @@ Eigen::Vector3d malleability_color(double m)
          f * Eigen::Vector3d(b[1] - a[1], b[2] - a[2], b[3] - a[3]);
 }
 
+bool StrokeAccumulator::continues(const Dab& dab) const
+{
+  if (!open_ || dab.radius != brush_.radius || dab.value != brush_.value ||
+      dab.strength != brush_.strength)
+    return false;
+  const double step = (dab.center - brush_.center).norm();
+  return step > 0.0 && step <= dab.radius;
+}
+
+void StrokeAccumulator::begin(const Dab& dab, Falloff falloff)
+{
+  for (index_t v : members_)
+    distance_[std::size_t(v)] = infinity;
+  members_.clear();
+  open_ = true;
+  brush_ = dab;
+  falloff_ = falloff;
+}
+
+std::size_t StrokeAccumulator::add(const Reach& reach, float* m, std::vector<index_t>* written)
+{
+  std::size_t first = 0;
+  if (!reach.vertices.empty())
+  {
+    const std::size_t size =
+      std::size_t(*std::max_element(reach.vertices.begin(), reach.vertices.end())) + 1;
+    if (size > distance_.size())
+    {
+      distance_.resize(size, infinity);
+      base_.resize(size);
+    }
+  }
+  for (std::size_t i = 0; i < reach.vertices.size(); ++i)
+  {
+    const std::size_t v = std::size_t(reach.vertices[i]);
+    double& d = distance_[v];
+    if (d == infinity)
+    {
+      base_[v] = m[v];
+      members_.push_back(index_t(v));
+      ++first;
+    }
+    else if (!(reach.distances[i] < d))
+      continue;
+    d = reach.distances[i];
+    if (written)
+      written->push_back(index_t(v));
+    // apply_dab's expression, from the value before the stroke.
+    const double w = brush_.strength * falloff_weight(falloff_, d / brush_.radius);
+    const double b = base_[v];
+    m[v] = w > 0.0 ? float(std::clamp(b + w * (brush_.value - b), 0.0, 1.0)) : base_[v];
+  }
+  return first;
+}
+
 PaintReport Painter::paint(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode,
   float* malleability, const Progress& progress)
 {
+  stroke_.end();
+  return run(dabs, falloff, mode, malleability, progress, nullptr);
+}
+
+PaintReport Painter::append(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode,
+  float* malleability, std::vector<index_t>& touched)
+{
+  return run(dabs, falloff, mode, malleability, {}, &touched);
+}
+
+PaintReport Painter::run(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode, float* m,
+  const Progress& progress, std::vector<index_t>* touched)
+{
   PaintReport report;
   ProgressTicker ticker(progress, dabs.size());
+  const bool euclidean = mode == DistanceMode::euclidean;
+  if (euclidean && !grid_ && n_ > 0)
+    grid_ = std::make_unique<VertexGrid>(xyz_, n_);
+  // A Euclidean stroke's centres wait here until the stroke ends, then paint at once.
+  centres_.clear();
+  const auto flush = [&]
+  {
+    if (centres_.empty())
+      return;
+    union_.compute(*grid_, xyz_, centres_, stroke_.brush().radius, falloff != Falloff::constant,
+      reach_.vertices, reach_.distances);
+    report.painted += stroke_.add(reach_, m, touched);
+    centres_.clear();
+  };
   for (std::size_t i = 0; i < dabs.size(); ++i)
   {
-    const char* problem = validate_dab(dabs[i]);
+    const Dab& dab = dabs[i];
+    const char* problem = validate_dab(dab);
     if (*problem)
     {
       report.rejected.emplace_back(i, problem);
     }
     else
     {
-      reach(dabs[i], mode, reach_);
-      apply_dab(dabs[i], falloff, reach_, malleability);
+      if (stroke_.continues(dab))
+      {
+        stroke_.move(dab.center);
+      }
+      else
+      {
+        // A Euclidean stroke is painted whole: progress and a stop come between strokes.
+        const bool pending = !centres_.empty();
+        flush();
+        if (pending && !ticker.tick(i))
+        {
+          report.aborted = true;
+          return report;
+        }
+        stroke_.begin(dab, falloff);
+      }
       ++report.applied;
-      report.painted += reach_.vertices.size();
+      if (!euclidean)
+      {
+        reach(dab, mode, reach_);
+        report.painted += stroke_.add(reach_, m, touched);
+      }
+      else if (n_ > 0 && dab.radius > 0.0)
+      {
+        centres_.push_back(dab.center);
+      }
     }
-    if (!ticker.tick(i + 1))
+    if (centres_.empty() && !ticker.tick(i + 1))
     {
       report.aborted = i + 1 < dabs.size();
       return report;
     }
   }
+  flush();
   ticker.finish(); // every dab applied: a stop asked now has nothing left to stop
   return report;
 }

@@ -1,11 +1,13 @@
 #pragma once
 // Malleability painting: a brush dab moves the values under it toward its value.
 #include "geoshaping/mesh/adjacency.h"
+#include "geoshaping/paint/dab_union.h"
 #include "geoshaping/paint/progress.h"
 
 #include <Eigen/Core>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -88,6 +90,48 @@ struct Reach
 // computed in double and stored as float, clamped to [0, 1]. Touches only `reach`.
 void apply_dab(const Dab& dab, Falloff falloff, const Reach& reach, float* malleability);
 
+// A stroke: consecutive dabs of one brush (equal radius, value and strength) whose
+// centres follow a path, each at most one radius from the previous and not on it, as
+// BrushStroke places them (geoshaping/paint/brush_stroke.h). A stroke paints each vertex once,
+// with its strongest weight: for the distance d of the stroke's nearest centre (the
+// distances of GeodesicReach in geodesic mode),
+//
+//   m = b + strength * falloff(d / radius) * (value - b),   b the value before the stroke,
+//
+// which is the weight of the strongest dab (every falloff is non-increasing). Where the
+// dabs do not overlap this is apply_dab's value bit for bit; where they overlap, dabs
+// applied one after the other would compound to 1 - prod(1 - w_i) instead of max(w_i).
+// A dab that repeats the previous centre or jumps farther than its radius starts a new
+// stroke, so a second click on the same spot paints again.
+//
+// The accumulator keeps the open stroke's distances and base values (sparse, reset
+// sparsely), so dabs appended later continue it as if painted in one go.
+class StrokeAccumulator
+{
+public:
+  bool open() const { return open_; }
+  const Dab& brush() const { return brush_; }                      // centre: the last dab's
+  const std::vector<index_t>& members() const { return members_; } // in first-reach order
+  // Whether `dab` continues the open stroke (then move() to its centre).
+  bool continues(const Dab& dab) const;
+  void move(const Eigen::Vector3d& centre) { brush_.center = centre; }
+  // Closes the open stroke and opens one with `dab`'s brush (and this falloff).
+  void begin(const Dab& dab, Falloff falloff);
+  void end() { open_ = false; }
+  // Lowers the stroke's distance of each vertex of `reach` (distances from a centre of
+  // the stroke) and writes its value to m, appending the vertices written to `written`
+  // when given. Returns the number of vertices the stroke reaches for the first time.
+  std::size_t add(const Reach& reach, float* m, std::vector<index_t>* written = nullptr);
+
+private:
+  bool open_ = false;
+  Dab brush_;
+  Falloff falloff_ = Falloff::constant;
+  std::vector<double> distance_; // +inf off the open stroke
+  std::vector<float> base_;
+  std::vector<index_t> members_;
+};
+
 // Graph distance along mesh edges (each edge weighted by its rest length) from a source
 // vertex that lies `start_distance` from the dab centre, bounded by `radius`: Dijkstra
 // that never records a vertex farther than `radius`, so its cost is proportional to the
@@ -135,28 +179,39 @@ struct PaintReport
 {
   bool aborted = false; // the Progress asked to stop: dabs from `applied` on were not applied
   std::size_t applied = 0;
-  std::size_t painted = 0; // vertex values written (a vertex under two dabs counts twice)
+  std::size_t painted = 0; // vertices painted (once per stroke reaching them)
   std::vector<std::pair<std::size_t, std::string>> rejected; // (dab index, reason)
 };
 
-// Applies `dabs` in order to `malleability` (n floats). A rejected dab changes nothing;
-// the others are applied as if it were absent. Euclidean distance is measured from the
+// Paints `dabs` in order on `malleability` (n floats), stroke by stroke (see
+// StrokeAccumulator). A rejected dab changes nothing; the others are painted as if it were
+// absent (it does not break a stroke). Euclidean distance is measured from the
 // dab centre; geodesic distance is the centre-to-nearest-vertex distance plus the
 // GeodesicReach path from that vertex. Deterministic: the same input gives a
-// bit-identical result.
+// bit-identical result. A Euclidean stroke costs the vertices it covers (DabUnion over a
+// VertexGrid built on the first Euclidean paint), however many dabs it has.
 class Painter
 {
 public:
   Painter(const double* xyz, index_t n, const Adjacency* adjacency, PointQueries queries);
 
   // `progress` (optional) is told the fraction of dabs done and can stop the painting
-  // between dabs (geoshaping/paint/progress.h).
+  // between strokes, and between the dabs of a geodesic stroke (geoshaping/paint/progress.h).
   PaintReport paint(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode,
     float* malleability, const Progress& progress = {});
+  // Paints dabs appended to those of the last paint() or append() on the same array with
+  // the same falloff and mode: their first stroke continues the last one when its dab
+  // continues it, so the array is bit for bit what paint() of the whole list gives. The
+  // vertices painted are appended to `touched`.
+  PaintReport append(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode,
+    float* malleability, std::vector<index_t>& touched);
   // The vertices one dab reaches, with distances (also used by paint()).
   void reach(const Dab& dab, DistanceMode mode, Reach& out);
 
 private:
+  PaintReport run(const std::vector<Dab>& dabs, Falloff falloff, DistanceMode mode, float* m,
+    const Progress& progress, std::vector<index_t>* touched);
+
   const double* xyz_;
   index_t n_;
   const Adjacency* adjacency_;
@@ -164,6 +219,10 @@ private:
   GeodesicReach geodesic_;
   std::vector<index_t> ids_;
   Reach reach_;
+  StrokeAccumulator stroke_;
+  std::unique_ptr<VertexGrid> grid_;
+  DabUnion union_;
+  std::vector<Eigen::Vector3d> centres_;
 };
 
 } // namespace geoshaping

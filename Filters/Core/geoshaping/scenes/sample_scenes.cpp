@@ -193,9 +193,13 @@ std::vector<Dab> fault_step_painting(const FaultStepParams& p, double border)
   {
     const Profile across = resample(step, pitch);
     const index_t nv = rows(p.width, pitch);
-    for (const Eigen::Vector2d& q : across)
-      for (index_t j = 0; j < nv; ++j)
+    // Back and forth along y, so that each colour is one stroke (brush.h): every centre
+    // within a pitch (less than the radius) of the previous one.
+    for (std::size_t a = 0; a < across.size(); ++a)
+      for (index_t k = 0; k < nv; ++k)
       {
+        const Eigen::Vector2d& q = across[a];
+        const index_t j = a % 2 ? nv - 1 - k : k;
         Dab d;
         d.center = p.origin + Eigen::Vector3d(q.x(), p.width * j / (nv - 1), q.y());
         d.radius = radius;

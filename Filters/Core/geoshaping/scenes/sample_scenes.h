@@ -62,8 +62,8 @@ SampleMesh fault_step_slab(const FaultStepParams& p);
 
 // The default painting of Figure 5C as a dab list to apply to `fault_step_red`: a
 // white band of `border` on both sides of the step, then the step black (dabs centred
-// on the step surface, Constant falloff, Euclidean distance, strength 1). Dab centres
-// include p.origin.
+// on the step surface, Constant falloff, Euclidean distance, strength 1), each colour
+// laid back and forth as one stroke (brush.h). Dab centres include p.origin.
 constexpr double fault_step_red = 0.4; // red in the black-body map
 std::vector<Dab> fault_step_painting(const FaultStepParams& p, double border = 6.0);
 
