@@ -4,6 +4,7 @@
 #include "geoshaping/parallel/partitioned_chainmail.h"
 #include "test_meshes.h"
 #include "test_pieces.h"
+#include "test_sheets.h"
 
 #include <gtest/gtest.h>
 
@@ -437,4 +438,154 @@ TEST(PartitionedChainMail, APointHeldTwiceByAPieceMovesAsOne)
       ASSERT_TRUE(same_bits(got[p][0].disp[v], whole[0].disp[g])) << p << " " << v;
     }
   EXPECT_GT(whole[0].result.moved, 20u);
+}
+
+namespace
+{
+// The painted grid under a tilted ceiling (z = 3 + 0.1 x), with a wall (y = 2.5) that
+// the vertices of row 2 slide on: obstacles.h's scene for the partitioned tests.
+geoshaping::testing::Sheet ceiling_and_wall()
+{
+  using geoshaping::testing::sheet;
+  auto s = sheet(14, { -3.0, -3.0, 2.7 }, { 42.0, 0.0, 4.2 }, { 0.0, 36.0, 0.0 });
+  s.add(sheet(9, { -3.0, 2.5, -6.0 }, { 42.0, 0.0, 0.0 }, { 0.0, 0.0, 40.0 }));
+  return s;
+}
+
+// Owners with the rigid block (malleability 0) given whole to the owner of its first vertex.
+std::vector<int> rigid_block_whole(const Scene& s, std::vector<int> owner)
+{
+  int block = -1;
+  for (std::size_t v = 0; v < owner.size(); ++v)
+    if (s.malleability[v] == 0.0f)
+      owner[v] = block = block < 0 ? owner[v] : block;
+  return owner;
+}
+} // namespace
+
+TEST(PartitionedChainMail, ObstaclesGiveTheWholeMeshsBitsForAnyPartition)
+{
+  const index_t nx = 36, ny = 30;
+  const Scene s = painted_grid(nx, ny);
+  const auto obstacle = ceiling_and_wall();
+  std::vector<std::uint8_t> sliding(std::size_t(s.mesh.size()), 0);
+  for (index_t i = 0; i < nx; ++i)
+    sliding[std::size_t(2 * nx + i)] = !s.pins[std::size_t(2 * nx + i)];
+  const std::vector<Frame> frames = { { gid_at(s, (ny / 2) * nx + nx / 2), { 0.5, -0.3, 6.0 } },
+    { gid_at(s, (ny / 2 + 2) * nx + nx / 3 + 2), { 3.0, 2.0, 10.0 } }, // the rigid block
+    { gid_at(s, 2 * nx + 20), { 4.0, 1.0, 5.0 } },                     // a sliding grasp
+    { gid_at(s, 3), { -1.0, 0.0, 25.0 } } };
+  std::size_t blocked_frames = 0;
+  for (double clearance : { 0.0, 0.3 })
+    for (QueueKind q : { QueueKind::fifo_priority, QueueKind::fifo })
+      for (ValidRegionFrame f : { ValidRegionFrame::axes, ValidRegionFrame::link })
+      {
+        // The piece's sliding flags, by its vertices' positions in the whole mesh.
+        auto setup_with = [&](const std::vector<std::uint8_t>& mask)
+        {
+          return [&, mask](ChainMailDeformer& d)
+          {
+            d.set_queue(q);
+            d.set_valid_region_frame(f);
+            ASSERT_EQ(d.set_obstacles(obstacle.xyz.data(), obstacle.points(), obstacle.tri.data(),
+                        obstacle.triangles()),
+              "");
+            ASSERT_TRUE(d.set_obstacle_clearance(clearance));
+            d.set_sliding(mask.data());
+          };
+        };
+        const auto whole = run_whole(s, frames, setup_with(sliding));
+        for (const Outcome& w : whole)
+        {
+          ASSERT_TRUE(w.result.ok) << w.result.message;
+          blocked_frames += w.result.blocked > 0;
+        }
+        EXPECT_LT(whole[0].result.grasp_fraction, 1.0); // the centre's pull hits the ceiling
+        for (int pieces = 1; pieces <= 4; ++pieces)
+        {
+          std::vector<int> all(static_cast<std::size_t>(pieces));
+          std::iota(all.begin(), all.end(), 0);
+          const std::string name = std::string(queue_name(q)) + " " + frame_name(f) +
+                                   " clearance " + std::to_string(clearance) + " " +
+                                   std::to_string(pieces) + " pieces";
+          for (int random = 0; random < 2; ++random)
+          {
+            const auto owner = rigid_block_whole(
+              s, random ? random_owner(s, all, unsigned(pieces)) : striped(s, pieces));
+            auto parts = split(s, owner, pieces, {}, 9);
+            const PieceSetup setup = [&](ChainMailDeformer& d)
+            {
+              // This piece: the one whose vertex count matches (set up in its thread).
+              for (const auto& part : parts)
+                if (index_t(part.global.size()) == d.size() && part.gid[0] == d.global_id(0))
+                  setup_with(part.gather(sliding))(d);
+            };
+            const auto got = run_pieces(parts, frames, setup);
+            const std::string where = name + (random ? " random" : " striped");
+            expect_same(parts, got, whole, where);
+            for (std::size_t k = 0; k < frames.size(); ++k)
+            {
+              std::size_t blocked = 0, owners = 0;
+              for (std::size_t p = 0; p < parts.size(); ++p)
+              {
+                blocked += got[p][k].result.blocked;
+                for (std::size_t v = 0; v < parts[p].gid.size(); ++v)
+                  if (parts[p].owned[v] && parts[p].gid[v] == frames[k].grasp)
+                  {
+                    ++owners;
+                    EXPECT_EQ(got[p][k].result.grasp_fraction, whole[k].result.grasp_fraction)
+                      << where << " frame " << k;
+                  }
+              }
+              EXPECT_EQ(owners, 1u);
+              EXPECT_EQ(blocked, whole[k].result.blocked) << where << " frame " << k;
+            }
+          }
+        }
+      }
+  // The obstacles act: 30 of the 32 whole-mesh frames held vertices back.
+  EXPECT_EQ(blocked_frames, 30u);
+}
+
+TEST(PartitionedChainMail, ARigidRegionSplitAcrossPiecesWithObstaclesIsRefusedOnEveryPiece)
+{
+  const index_t nx = 36, ny = 30;
+  const Scene s = painted_grid(nx, ny);
+  const auto obstacle = ceiling_and_wall();
+  // Two stripes: the border x = 18 runs through the rigid block (x from 12 to 17) only
+  // when the block is given to both; striped_owner cuts at the middle.
+  auto owner = striped(s, 2);
+  std::size_t left = 0, right = 0;
+  for (std::size_t v = 0; v < owner.size(); ++v)
+    if (s.malleability[v] == 0.0f)
+    {
+      owner[v] = int(v % std::size_t(nx) >= 15);
+      (owner[v] ? right : left)++;
+    }
+  ASSERT_GT(left, 0u);
+  ASSERT_GT(right, 0u);
+  const std::vector<Frame> frames = { { gid_at(s, (ny / 2) * nx + nx / 2), { 0.5, -0.3, 6.0 } } };
+  for (bool with : { false, true })
+  {
+    auto parts = split(s, owner, 2);
+    const auto got = run_pieces(parts, frames,
+      [&](ChainMailDeformer& d)
+      {
+        if (with)
+          ASSERT_EQ(d.set_obstacles(obstacle.xyz.data(), obstacle.points(), obstacle.tri.data(),
+                      obstacle.triangles()),
+            "");
+      });
+    for (const auto& piece : got)
+    {
+      EXPECT_EQ(piece[0].result.ok, !with) << piece[0].result.message;
+      EXPECT_EQ(piece[0].result.message, got[0][0].result.message);
+      if (with)
+      {
+        EXPECT_NE(
+          piece[0].result.message.find("rigid region split across pieces"), std::string::npos);
+        EXPECT_EQ(std::count(piece[0].moved.begin(), piece[0].moved.end(), 1), 0);
+      }
+    }
+  }
 }

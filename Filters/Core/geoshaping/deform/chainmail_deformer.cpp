@@ -262,6 +262,7 @@ void ChainMailDeformer::set_global_ids(const std::int64_t* gid)
 
 void ChainMailDeformer::set_owned(const std::uint8_t* mask)
 {
+  rigid_of_.clear(); // rigid_component_split() depends on the ghosts
   ghost_.clear();
   if (mask)
     to_inner(ghost_, mask, outer_of_, [](std::uint8_t m) { return m == 0; });
@@ -662,12 +663,24 @@ void ChainMailDeformer::build_rigid_components()
     }
     rigid_first_.push_back(std::uint32_t(rigid_members_.size()));
   }
+  // On a piece: a component holding an owned vertex and a ghost continues on another
+  // piece (one made of ghosts only is another piece's, never gated here).
+  rigid_split_ = false;
+  for (std::size_t c = 0; c + 1 < rigid_first_.size() && !ghost_.empty() && !rigid_split_; ++c)
+  {
+    bool owned = false, ghost = false;
+    for (std::uint32_t k = rigid_first_[c]; k < rigid_first_[c + 1]; ++k)
+      (ghost_[std::size_t(rigid_members_[k])] ? ghost : owned) = true;
+    rigid_split_ = owned && ghost;
+  }
   rigid_stamp_.assign(rigid_first_.size() - 1, 0u);
   rigid_disp_.assign(rigid_first_.size() - 1, Eigen::Vector3d::Zero());
 }
 
 Eigen::Vector3d ChainMailDeformer::admissible(index_t i, const Eigen::Vector3d& d)
 {
+  if (!ghost_.empty() && ghost_[std::size_t(i)])
+    return d; // a ghost moves by its owner's word, gated there
   double f = 1.0;
   if (!sliding_.empty() && sliding_[std::size_t(i)])
   {

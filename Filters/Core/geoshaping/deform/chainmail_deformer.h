@@ -79,7 +79,9 @@ struct FrameResult
 //   Sliding vertices (set_sliding: on an obstacle, a horizon's cut-off line on its
 //   fault) pass the gate by Obstacles::slide instead: a sliding vertex whose target is
 //   x0 + u lands on the obstacle point nearest to it, so it stays on the surface and
-//   moves along it; it is left out of the rigid components, as pins are.
+//   moves along it; it is left out of the rigid components, as pins are. On a piece
+//   (set_owned) a ghost passes the gate unchanged: it moves by its owner's word, which
+//   the owner's gate gave.
 //   Cost: O(log T) per move for T obstacle triangles, O(component) once per frame for
 //   a rigid component it enters; the components are found once per malleability, pins,
 //   sliding mask and transfer function (O(mesh)). Without obstacles the gate is one
@@ -160,6 +162,20 @@ public:
   bool set_obstacle_clearance(double c);
   double obstacle_clearance() const { return clearance_; }
   const Obstacles* obstacles() const { return obstacles_.get(); }
+  // The fraction of the last gated move (1 without obstacles) and the vertices held back
+  // so far this frame: FrameResult's grasp_fraction and blocked, for a driver that moves
+  // vertices itself (PartitionedChainMail).
+  double last_fraction() const { return last_fraction_; }
+  std::size_t blocked() const { return blocked_; }
+  // On a piece (set_owned): whether a rigid component of the gate (pins and sliding
+  // vertices left out) holds a ghost, i.e. continues on another piece. Builds the
+  // components when they are stale (O(mesh)); false without ghosts.
+  bool rigid_component_split()
+  {
+    if (rigid_of_.empty())
+      build_rigid_components();
+    return rigid_split_;
+  }
   // Optional mask: non-zero = sliding (the vertex lies on an obstacle and stays on it,
   // see the class comment); nullptr clears. Cleared by set_mesh; without obstacles it
   // has no effect.
@@ -354,8 +370,9 @@ private:
   std::vector<std::uint8_t> sliding_;       // by internal id; empty when none
   double last_fraction_ = 1.0;              // of the last gated move
   std::size_t blocked_ = 0;
-  std::uint32_t superstep_ = 0;                   // the current superstep of the frame
-  std::size_t superstep_begin_ = 0;               // slot of its first move
+  bool rigid_split_ = false;        // a component holds a ghost (build_rigid_components)
+  std::uint32_t superstep_ = 0;     // the current superstep of the frame
+  std::size_t superstep_begin_ = 0; // slot of its first move
   std::size_t sorted_begin_ = 0, sorted_end_ = 0; // slots sort_moves() left in id order
 };
 

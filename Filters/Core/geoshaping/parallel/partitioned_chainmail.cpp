@@ -249,14 +249,21 @@ FrameResult PartitionedChainMail::deform(
     g = it->second;
     state = deformer_.pinned(g) ? 2 : (deformer_.rest_local(g).allFinite() ? 1 : 3);
   }
-  std::int64_t owners = 0, found = 0;
-  for (const auto& s : exchange.all_gather({ state }))
+  // With obstacles, a rigid component continued on another piece would need the
+  // smallest fraction over all its members (see the header): refused on every piece.
+  const bool split = deformer_.obstacles() && deformer_.rigid_component_split();
+  std::int64_t owners = 0, found = 0, splits = 0;
+  for (const auto& s : exchange.all_gather({ state, split }))
   {
     owners += s[0] != 0;
     found = s[0] ? s[0] : found;
+    splits += s[1];
   }
   const std::string id = std::to_string(grasp);
-  if (owners != 1)
+  if (splits > 0)
+    result.message = "with obstacles, a rigid region split across pieces would stop as one "
+                     "only with every piece's part of it: keep each rigid region on one piece";
+  else if (owners != 1)
     result.message = "grasp global id " + id + " is owned by " + std::to_string(owners) + " pieces";
   else if (found == 2)
     result.message = "grasp global id " + id + " is pinned";
@@ -266,7 +273,11 @@ FrameResult PartitionedChainMail::deform(
     return result;
 
   if (g >= 0)
+  {
     deformer_.move_vertex(g, displacement);
+    if (deformer_.obstacles())
+      result.grasp_fraction = deformer_.last_fraction();
+  }
   rounds_ = 0;
   fill_outbox();
   trade(exchange, false);
@@ -325,6 +336,7 @@ FrameResult PartitionedChainMail::deform(
   result.ok = true;
   for (index_t v : deformer_.moved())
     result.moved += deformer_.owned(v);
+  result.blocked = deformer_.blocked();
   return result;
 }
 

@@ -45,6 +45,17 @@
 // one piece a frame is one round.
 // Setting up a piece gathers every piece's ghost ids on every piece (once per mesh).
 //
+// Obstacles (obstacles.h): every piece's deformer holds the same obstacle triangles
+// (set_obstacles after set_piece, the whole obstacle on every piece, given in the same
+// order). An owned vertex passes the gate on its owner, with the same arithmetic as on
+// the whole mesh (the same local origin and tree); a ghost takes its owner's gated
+// displacement unchanged. A rigid component stops as one at the smallest fraction over
+// its members: exact when each component lies on one piece (its members owned by one
+// piece); a component that continues on another piece (a rigid ghost joined to it) is
+// refused, with obstacles, on every piece (it would need a collective per component
+// entered). The grasp's owner reports the grasp's fraction; blocked counts this piece's
+// owned vertices held back.
+//
 // Only FIFO and FIFO Priority are partitioned: Priority (heap order) and Max Violation
 // are sequential, and a partitioned frame refuses them on every piece.
 #include "geoshaping/deform/chainmail_deformer.h"
@@ -79,8 +90,9 @@ public:
   const ChainMailDeformer& deformer() const { return deformer_; }
 
   // Collective: one frame, grasping the vertex of global id `grasp`. ok and message are
-  // the same on every piece; moved and examined count this piece's owned vertices and
-  // examined entries. The piece's ghosts hold their owners' displacements afterwards.
+  // the same on every piece; moved, examined and blocked count this piece's owned
+  // vertices and examined entries; grasp_fraction is the grasp owner's (1 elsewhere). The piece's
+  // ghosts hold their owners' displacements afterwards.
   FrameResult deform(std::int64_t grasp, const Eigen::Vector3d& displacement, Exchange& exchange);
   // Supersteps of the last frame (the same on every piece).
   std::size_t supersteps() const { return supersteps_; }
