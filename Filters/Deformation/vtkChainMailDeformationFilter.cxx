@@ -89,9 +89,10 @@ int vtkChainMailDeformationFilter::RequestData(
     return 1;
   }
   const vtkIdType n = input->GetNumberOfPoints();
-  if (!state.AllAgree(
-        n == 0 || (this->UpdateMalleabilityAndPins(input) && this->UpdateObstacles(inputVector) &&
-                    this->UpdateSliding(input))))
+  // The obstacles are collective on several processes (every piece to every process).
+  if (!state.AllAgree(n == 0 || this->UpdateMalleabilityAndPins(input)) ||
+      !(state.Processes ? this->UpdateObstaclesParallel(input, *state.Processes)
+                        : this->UpdateObstacles(inputVector) && this->UpdateSliding(input)))
   {
     return 1;
   }

@@ -89,6 +89,7 @@ class vtkPiecewiseFunction;
 namespace geoshaping
 {
 struct Adjacency;
+class Exchange;
 struct FrameResult;
 }
 
@@ -479,6 +480,11 @@ private:
   // The obstacles of port 1 into the deformer (vtkChainMailDeformationFilterObstacles.cxx);
   // false (after an error) when they are refused.
   bool UpdateObstacles(vtkInformationVector** inputVector);
+  // On several processes (vtkChainMailDeformationFilterParallelObstacles.cxx, collective):
+  // every process's piece of the obstacles gathered to every process, the same triangles
+  // everywhere, and the sliding mask of `input`; false (after an error, on every process)
+  // when refused.
+  bool UpdateObstaclesParallel(vtkPointSet* input, geoshaping::Exchange& exchange);
   // The sliding mask (input array 2 of `input`, the data worked on) into the deformer;
   // false (after an error) when it is refused.
   bool UpdateSliding(vtkPointSet* input);

@@ -282,6 +282,12 @@ inline geoshaping::TransferFunction Transfer(vtkChainMailDeformationFilter* self
   tf.exact_rigid_at_zero = self->GetExactRigidAtZero();
   return tf;
 }
+// The boundary triangles of one obstacle (its polygons, or its surface when it is not
+// polydata, triangulated) appended to xyz and triangles (indices into xyz / 3). Returns
+// 0, the number of points with non-finite coordinates (nothing appended), or -1 when
+// `obstacle` is not a vtkDataSet (vtkChainMailDeformationFilterObstacles.cxx).
+vtkIdType AppendObstacle(
+  vtkDataObject* obstacle, std::vector<double>& xyz, std::vector<std::int64_t>& triangles);
 } // namespace vtkChainMailDeformationFilterDetail
 
 inline void vtkChainMailDeformationFilter::vtkInternals::Invalidate(Stale level)

@@ -1,5 +1,5 @@
 // The obstacles of input port 1 (docs/obstacles.md): triangulated once per obstacle
-// geometry and handed to the core (geoshaping/deform/obstacles.h), which holds the rule.
+// geometry and handed to the core (geoshaping/obstacles.h), which holds the rule.
 #include "vtkChainMailDeformationFilterInternals.h"
 
 #include "vtkAlgorithm.h"
@@ -19,6 +19,53 @@ int vtkChainMailDeformationFilter::FillInputPortInformation(int port, vtkInforma
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
   return 1;
+}
+
+vtkIdType vtkChainMailDeformationFilterDetail::AppendObstacle(
+  vtkDataObject* obstacle, std::vector<double>& xyz, std::vector<std::int64_t>& triangles)
+{
+  vtkDataSet* data = vtkDataSet::SafeDownCast(obstacle);
+  if (!data)
+    return -1;
+  vtkSmartPointer<vtkPolyData> surface = vtkPolyData::SafeDownCast(data);
+  if (!surface)
+  {
+    vtkNew<vtkDataSetSurfaceFilter> boundary;
+    boundary->SetInputData(data);
+    boundary->Update();
+    surface = boundary->GetOutput();
+  }
+  vtkIdType bad = 0;
+  double x[3];
+  for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
+  {
+    surface->GetPoint(p, x);
+    bad += !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]));
+  }
+  if (bad > 0)
+    return bad;
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(surface);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  vtkPolyData* tris = triangulate->GetOutput();
+  const auto base = std::int64_t(xyz.size() / 3);
+  for (vtkIdType p = 0; p < tris->GetNumberOfPoints(); ++p)
+  {
+    tris->GetPoint(p, x);
+    xyz.insert(xyz.end(), { x[0], x[1], x[2] });
+  }
+  auto cells = vtk::TakeSmartPointer(tris->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    cells->GetCurrentCell(npts, pts);
+    if (npts == 3)
+      triangles.insert(triangles.end(), { base + pts[0], base + pts[1], base + pts[2] });
+  }
+  return 0;
 }
 
 bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** inputVector)
@@ -53,26 +100,13 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
   std::vector<std::int64_t> triangles;
   for (int i = 0; i < count; ++i)
   {
-    vtkDataSet* data = vtkDataSet::SafeDownCast(sources[std::size_t(i)].first);
-    if (!data)
+    vtkDataObject* data = sources[std::size_t(i)].first;
+    const std::size_t before = triangles.size();
+    const vtkIdType bad = vtkChainMailDeformationFilterDetail::AppendObstacle(data, xyz, triangles);
+    if (bad < 0)
     {
       vtkErrorMacro("Obstacle " << i << " is not a vtkDataSet; output is the undeformed input.");
       return false;
-    }
-    vtkSmartPointer<vtkPolyData> surface = vtkPolyData::SafeDownCast(data);
-    if (!surface)
-    {
-      vtkNew<vtkDataSetSurfaceFilter> boundary;
-      boundary->SetInputData(data);
-      boundary->Update();
-      surface = boundary->GetOutput();
-    }
-    vtkIdType bad = 0;
-    double x[3];
-    for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
-    {
-      surface->GetPoint(p, x);
-      bad += !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]));
     }
     if (bad > 0)
     {
@@ -81,34 +115,13 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
                                    "undeformed input.");
       return false;
     }
-    vtkNew<vtkTriangleFilter> triangulate;
-    triangulate->SetInputData(surface);
-    triangulate->PassVertsOff();
-    triangulate->PassLinesOff();
-    triangulate->Update();
-    vtkPolyData* tris = triangulate->GetOutput();
-    if (tris->GetNumberOfPolys() == 0)
+    if (triangles.size() == before)
     {
       vtkErrorMacro("Obstacle " << i << " (" << data->GetClassName() << ", "
-                                << data->GetNumberOfCells()
+                                << vtkDataSet::SafeDownCast(data)->GetNumberOfCells()
                                 << " cells) has no triangles or polygons; output is the "
                                    "undeformed input.");
       return false;
-    }
-    const auto base = std::int64_t(xyz.size() / 3);
-    for (vtkIdType p = 0; p < tris->GetNumberOfPoints(); ++p)
-    {
-      tris->GetPoint(p, x);
-      xyz.insert(xyz.end(), { x[0], x[1], x[2] });
-    }
-    auto cells = vtk::TakeSmartPointer(tris->GetPolys()->NewIterator());
-    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-    {
-      vtkIdType npts;
-      const vtkIdType* pts;
-      cells->GetCurrentCell(npts, pts);
-      if (npts == 3)
-        triangles.insert(triangles.end(), { base + pts[0], base + pts[1], base + pts[2] });
     }
   }
   const std::string error = state.Deformer.set_obstacles(
@@ -125,8 +138,8 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
 bool vtkChainMailDeformationFilter::UpdateSliding(vtkPointSet* input)
 {
   vtkInternals& state = *this->Internals;
-  const vtkIdType n = input->GetNumberOfPoints();
   bool valid = true;
+  const vtkIdType n = input->GetNumberOfPoints();
   vtkDataArray* sliding = this->PointMask(2, "Sliding", input, valid);
   if (!valid)
   {

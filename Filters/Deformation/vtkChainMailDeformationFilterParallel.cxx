@@ -81,8 +81,8 @@ bool vtkChainMailDeformationFilter::SelectInput(vtkPointSet*& input, vtkPointSet
       " (use RefinementSolver Envelope with ValidRegionFrame Axes)";
   else if (this->RelaxationIterations > 0)
     refused = "RelaxationIterations > 0 (relaxation)";
-  else if (this->GetNumberOfInputConnections(1) > 0)
-    refused = "Obstacles (obstacle surfaces are not distributed yet)";
+  else if (this->RefinementIterations > 0 && this->GetNumberOfInputConnections(1) > 0)
+    refused = "refinement with Obstacles (the passes' obstacle gate is not distributed)";
   else if (this->CandidateQueue != FIFO && this->CandidateQueue != FIFO_PRIORITY)
     refused = std::string("the ") +
               geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) +

@@ -7,7 +7,8 @@ mpi_deform.py does, deforms it with ChainMailDeformation and one envelope refine
   OUT/stats.json  the filter's figures (all ranks' totals).
 Arguments: SCENE OUT [SOLVER] (surface or slab; SOLVER Envelope by default: another one is
 refused on more than one rank, and the output is the undeformed input; "Obstacles" keeps
-Envelope and connects an obstacle below the scene, refused on more than one rank too)."""
+Envelope and connects an obstacle below the scene: the refinement with obstacles is refused on more
+than one rank)."""
 import json
 import os
 import sys
