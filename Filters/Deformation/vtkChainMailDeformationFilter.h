@@ -355,9 +355,11 @@ public:
   /// rigid regions stop as one; pins stay. Sliding contact: a vertex flagged non-zero in
   /// the sliding mask (input array 2) lands on the obstacle point nearest its target,
   /// so it stays on the obstacle while it moves along it. The triangles' tree is built
-  /// once per obstacle geometry. Refused with an error (output = input): an obstacle with
-  /// non-finite points or no triangle, obstacles on more than one process, a sliding mask
-  /// that is not numeric point data with one value per point.
+  /// once per obstacle geometry. On several processes every process's piece of the
+  /// obstacles is gathered to every process (same bits as one process). Refused with an
+  /// error (output = input): an obstacle with non-finite points or no triangle, a sliding
+  /// mask that is not numeric point data with one value per point, and on several
+  /// processes a rigid region owned by several of them or the refinement with obstacles.
   void AddObstacleConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
   void SetObstacleConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void AddObstacleData(vtkDataObject* data) { this->AddInputDataObject(1, data); }
@@ -371,12 +373,26 @@ public:
   /// Obstacle figures of the last update: the part of Displacement the grasp moved (1
   /// when nothing stopped it or without obstacles, NaN without a grasp), whether an
   /// obstacle stopped it (the stopped grasp is at rest + fraction * Displacement: where a
-  /// haptic coupling should pull), and the vertices an obstacle held back.
+  /// haptic coupling should pull), the vertices an obstacle held back: by the frame and
+  /// by the refinement and relaxation passes' gate (a vertex held back by the frame and
+  /// again by a pass, or by both passes, counts each time), and the passes' part of it.
   double GetLastGraspObstacleFraction() { return this->Statistics.LastGraspObstacleFraction; }
   bool GetLastGraspBlocked() { return this->Statistics.LastGraspObstacleFraction < 1.0; }
   vtkIdType GetNumberOfObstacleBlockedPoints()
   {
     return this->Statistics.NumberOfObstacleBlockedPoints;
+  }
+  /// Where the grasp landed in the last update: its output position minus its rest
+  /// position (NaN without a grasp). Displacement bit for bit for a free grasp; fraction
+  /// x Displacement for a grasp an obstacle stopped; the landed point on the obstacle
+  /// for a sliding grasp (even at fraction 1): where a haptic coupling should pull.
+  double* GetLastGraspDisplacement() VTK_SIZEHINT(3)
+  {
+    return this->Statistics.LastGraspDisplacement;
+  }
+  vtkIdType GetNumberOfPassObstacleBlockedPoints()
+  {
+    return this->Statistics.NumberOfPassObstacleBlockedPoints;
   }
   ///@}
 
@@ -434,6 +450,9 @@ protected:
     vtkIdType NumberOfRounds = 0;
     double LastGraspObstacleFraction = std::numeric_limits<double>::quiet_NaN();
     vtkIdType NumberOfObstacleBlockedPoints = 0;
+    vtkIdType NumberOfPassObstacleBlockedPoints = 0;
+    double LastGraspDisplacement[3] = { std::numeric_limits<double>::quiet_NaN(),
+      std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN() };
   };
   FrameStatistics Statistics;
   int NumberOfRebuilds = 0;

@@ -490,7 +490,8 @@ void vtkChainMailDeformationFilter::RecordFrame(
   vtkInternals& state = *this->Internals;
   // Totals over the processes (each point counted by its owner; the bytes include the
   // refinement's), and the grasp's figures from the process that owns it.
-  std::int64_t owner[2] = { -1, -1 }; // malleability, obstacle fraction (bits)
+  // Malleability, obstacle fraction, where the grasp landed (bits).
+  std::int64_t owner[5] = { -1, -1, -1, -1, -1 };
   std::vector<geoshaping::index_t> holding;
   state.Holders(grasp, holding);
   for (geoshaping::index_t v : holding)
@@ -498,23 +499,31 @@ void vtkChainMailDeformationFilter::RecordFrame(
     {
       owner[0] = geoshaping::bit_cast<std::int64_t>(double(state.Deformer.malleability(v)));
       owner[1] = geoshaping::bit_cast<std::int64_t>(r.grasp_fraction);
+      for (int k = 0; k < 3; ++k)
+        owner[2 + k] = geoshaping::bit_cast<std::int64_t>(state.Deformer.displacement(v)[k]);
     }
   const std::int64_t bytes = state.Processes ? std::int64_t(state.Processes->bytes_sent()) : 0;
-  std::int64_t total[4] = { 0, 0, 0, 0 };
+  // Everything an obstacle held back: the frame's vertices and the refinement's and
+  // relaxation's (their gate, each pass counted).
+  std::int64_t total[5] = { 0, 0, 0, 0, 0 };
   for (const auto& v : state.AllGather({ std::int64_t(r.moved), std::int64_t(r.examined),
-         std::int64_t(r.blocked), bytes, owner[0], owner[1] }))
+         std::int64_t(r.blocked), bytes, std::int64_t(state.Passes.held_back()), owner[0], owner[1],
+         owner[2], owner[3], owner[4] }))
   {
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < 5; ++k)
       total[k] += v[std::size_t(k)];
-    if (v[4] != -1)
+    if (v[5] != -1)
     {
-      this->Statistics.LastGraspMalleability = geoshaping::bit_cast<double>(v[4]);
-      this->Statistics.LastGraspObstacleFraction = geoshaping::bit_cast<double>(v[5]);
+      this->Statistics.LastGraspMalleability = geoshaping::bit_cast<double>(v[5]);
+      this->Statistics.LastGraspObstacleFraction = geoshaping::bit_cast<double>(v[6]);
+      for (int k = 0; k < 3; ++k)
+        this->Statistics.LastGraspDisplacement[k] = geoshaping::bit_cast<double>(v[7 + k]);
     }
   }
   this->Statistics.NumberOfDisplacedPoints = vtkIdType(total[0]);
   this->Statistics.NumberOfExaminedCandidates = vtkIdType(total[1]);
-  this->Statistics.NumberOfObstacleBlockedPoints = vtkIdType(total[2]);
+  this->Statistics.NumberOfPassObstacleBlockedPoints = vtkIdType(total[4]);
+  this->Statistics.NumberOfObstacleBlockedPoints = vtkIdType(total[2] + total[4]);
   this->Statistics.NumberOfBytesExchanged = vtkIdType(total[3]);
   this->Statistics.LastGraspPointId = r.ok ? grasp : -1;
   if (state.Partition) // the refinement's supersteps are counted by Refine

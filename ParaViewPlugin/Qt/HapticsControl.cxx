@@ -147,11 +147,24 @@ HandActions HandController::update(const StylusState& stylus, const Brush& brush
 bool stopped_grasp(const Eigen::Vector3d& press, const Eigen::Vector3d& displacement,
   double fraction, const Eigen::Vector3d* moved, Eigen::Vector3d& stopped)
 {
-  if (!(fraction < 1.0) || !(fraction >= 0.0))
+  if (!(fraction >= 0.0))
+  {
+    return false; // no grasp yet
+  }
+  if (moved && moved->allFinite())
+  {
+    if (*moved == displacement)
+    {
+      return false; // where the stylus put it
+    }
+    stopped = press + *moved;
+    return stopped.allFinite();
+  }
+  if (!(fraction < 1.0))
   {
     return false;
   }
-  stopped = press + (moved ? *moved : Eigen::Vector3d(fraction * displacement));
+  stopped = press + fraction * displacement;
   return stopped.allFinite();
 }
 

@@ -131,11 +131,12 @@ private:
 // Where a grasp an obstacle held back is, on the stylus's side, in the coordinates of
 // the object (docs/obstacles.md, docs/interactor.md "Forces"): `press` (the stylus at the
 // press) moved by what the grasp made of `displacement` in the filter's last update.
-// `fraction` is that update's LastGraspObstacleFraction: NaN (no grasp yet) or >= 1 (the
-// grasp went where the stylus put it) return false, and the coupling stays as it is.
-// `moved`, when known, is the grasped vertex's output position minus its position at the
-// press (builtin sessions; a sliding grasp's landed point included); otherwise the grasp
-// made fraction x displacement. Non-finite inputs return false.
+// `fraction` is that update's LastGraspObstacleFraction: NaN (no grasp yet) returns
+// false. `moved`, when known (finite), is where the grasp landed: that update's
+// LastGraspDisplacement (a sliding grasp's landed point included, at fraction 1 too);
+// equal to `displacement` (the grasp went where the stylus put it) it returns false, and
+// the coupling stays as it is. Without it the grasp made fraction x displacement, and
+// fraction >= 1 returns false. Non-finite results return false.
 bool stopped_grasp(const Eigen::Vector3d& press, const Eigen::Vector3d& displacement,
   double fraction, const Eigen::Vector3d* moved, Eigen::Vector3d& stopped);
 

@@ -42,8 +42,6 @@ struct pqHapticsInteractor::Hand
   std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
   Eigen::Vector3d anchor = Eigen::Vector3d::Zero(); // device coordinates
   Eigen::Vector3d press = Eigen::Vector3d::Zero();  // the stylus at the press, object coordinates
-  bool pressVertexKnown = false; // builtin: the grasped vertex as shown at the press
-  Eigen::Vector3d pressVertex = Eigen::Vector3d::Zero();
   double stiffness = 0.0;
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkPolyDataMapper> mapper;
@@ -259,7 +257,6 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
     if (hand.device)
     {
       hand.press = actions.grasp_position;
-      hand.pressVertexKnown = this->Proxies.shownGraspedVertex(hand.pressVertex);
       const Eigen::Vector3d world =
         (this->Proxies.objectMatrix() * actions.grasp_position.homogeneous()).hnormalized();
       hand.anchor = hand.mapping.to_device(world);
@@ -410,8 +407,8 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   Eigen::Vector3d moved = Eigen::Vector3d::Zero(), stopped;
   if (scene.grasping && this->Proxies.lastGraspObstacleFraction(fraction))
   {
-    const bool known = hand.pressVertexKnown && this->Proxies.shownGraspedVertex(moved);
-    moved -= hand.pressVertex;
+    // Where the grasp landed (LastGraspDisplacement: a sliding grasp's landed point too).
+    const bool known = this->Proxies.lastGraspDisplacement(moved);
     if (interactor::stopped_grasp(
           hand.press, this->RenderedDisplacement, fraction, known ? &moved : nullptr, stopped))
     {

@@ -597,6 +597,21 @@ bool pqHapticsProxies::lastGraspObstacleFraction(double& fraction) const
   return this->lastGraspFigure("LastGraspObstacleFraction", fraction);
 }
 
+bool pqHapticsProxies::lastGraspDisplacement(Eigen::Vector3d& landed) const
+{
+  double x = 0.0;
+  if (!this->lastGraspFigure("LastGraspDisplacement", x))
+  {
+    return false;
+  }
+  vtkSMPropertyHelper helper(this->Deformation->getProxy(), "LastGraspDisplacement");
+  for (int k = 0; k < 3; ++k)
+  {
+    landed[k] = helper.GetAsDouble(k);
+  }
+  return landed.allFinite();
+}
+
 double pqHapticsProxies::lastDeformationMilliseconds() const
 {
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;

@@ -111,6 +111,10 @@ public:
   // LastGraspObstacleFraction of the filter's last update, read from the server; false
   // while there is no grasp yet.
   bool lastGraspObstacleFraction(double& fraction) const;
+  // LastGraspDisplacement of the filter's last update (where the grasp landed, minus its
+  // rest position), read from the server; false while there is no grasp yet or when it
+  // is not finite.
+  bool lastGraspDisplacement(Eigen::Vector3d& landed) const;
 
   double lastDeformationMilliseconds() const;
   long long numberOfDisplacedPoints() const;

@@ -123,12 +123,21 @@ TEST(ChainMailObstacles, RefinementAndRelaxationKeepTheHorizonAboveTheLowerOne)
   f->SetStretchFunction(functions[0]);
   f->SetCompressionFunction(functions[1]);
   f->SetShearFunction(functions[2]);
+  Update(f);
+  const vtkIdType frameHeld = f->GetNumberOfObstacleBlockedPoints();
+  EXPECT_GT(frameHeld, 0);
+  EXPECT_EQ(f->GetNumberOfPassObstacleBlockedPoints(), 0);
   f->SetRefinementIterations(64);
   f->SetRelaxationIterations(50);
   vtkPointSet* out = Update(f);
   EXPECT_TRUE(errors->GetErrorMessage().empty()) << errors->GetErrorMessage();
   EXPECT_GT(f->GetNumberOfRefinedPoints(), 0);
   EXPECT_GT(f->GetNumberOfRelaxedPoints(), 0);
+  // Everything held back is said: the frame's (the same frame as without the passes)
+  // and the passes' gate's.
+  EXPECT_GT(f->GetNumberOfPassObstacleBlockedPoints(), 0);
+  EXPECT_EQ(
+    f->GetNumberOfObstacleBlockedPoints(), frameHeld + f->GetNumberOfPassObstacleBlockedPoints());
   double x[3], lowest = 0.0;
   for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
   {
@@ -358,4 +367,50 @@ TEST(ChainMailObstacles, SlidingArrayKeepsTheCutOffLineOnTheFault)
     horizon->GetPoint(p, r);
     ASSERT_TRUE(x[0] == r[0] && x[1] == r[1] && x[2] == r[2]) << p;
   }
+}
+
+TEST(ChainMailObstacles, LastGraspDisplacementSaysWhereTheGraspLanded)
+{
+  // The horizon of SlidingArrayKeepsTheCutOffLineOnTheFault, grasped on its cut-off line
+  // (sliding) and pulled straight down: the grasp slides down the fault x = 10 - 0.5 z,
+  // fraction 1, but lands off rest + Displacement, on the fault's plane (computed here).
+  auto horizon = TriangleGridPolyData(11, 21, 1.0, {});
+  vtkNew<vtkUnsignedCharArray> onFault;
+  onFault->SetName("OnFault");
+  onFault->SetNumberOfTuples(horizon->GetNumberOfPoints());
+  onFault->Fill(0);
+  for (int j = 0; j < 21; ++j)
+    onFault->SetValue(j * 11 + 10, 1);
+  horizon->GetPointData()->AddArray(onFault);
+  const double o[3] = { 15, -5, -10 }, du[3] = { 0, 30.0 / 8, 0 },
+               dv[3] = { -10.0 / 8, 0, 20.0 / 8 };
+  auto fault = Sheet(9, o, du, dv);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputData(horizon);
+  f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  const vtkIdType grasp = 10 * 11 + 10;
+  f->SetGraspPointId(grasp);
+  f->SetDisplacement(0, 0, -4);
+  // No grasp yet: NaN. Free: Displacement, bit for bit.
+  EXPECT_TRUE(std::isnan(f->GetLastGraspDisplacement()[0]));
+  Update(f);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(f->GetLastGraspDisplacement()[k], f->GetDisplacement()[k]) << k;
+
+  f->AddObstacleData(fault);
+  f->SetInputArrayToProcess(2, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "OnFault");
+  vtkPointSet* out = Update(f);
+  EXPECT_EQ(f->GetLastGraspObstacleFraction(), 1.0);
+  double x[3], rest[3];
+  out->GetPoint(grasp, x);
+  horizon->GetPoint(grasp, rest);
+  const double* landed = f->GetLastGraspDisplacement();
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(landed[k], x[k] - rest[k]) << k;
+  // On the fault, and not where the stylus put it: the projection of (10, 10, -4) onto
+  // the plane x + 0.5 z = 10 is (10, 10, -4) + 1.6 (1, 0, 0.5).
+  EXPECT_NEAR(x[0] + 0.5 * x[2], 10.0, 1e-9);
+  EXPECT_NEAR(landed[0], 1.6, 1e-9);
+  EXPECT_NEAR(landed[1], 0.0, 1e-9);
+  EXPECT_NEAR(landed[2], -3.2, 1e-9);
 }

@@ -264,6 +264,22 @@ TEST(StoppedGrasp, AGraspHeldBackIsWhereItStoppedNotWhereTheStylusPutIt)
   EXPECT_EQ(stopped, press);
 }
 
+TEST(StoppedGrasp, ASlidingGraspThatSlidFreelyPullsTowardWhereItLanded)
+{
+  // Fraction 1, but the grasp landed on the obstacle, off the stylus's straight path.
+  const Vector3d press(1, 2, 3), displacement(0, 0, -4), landed(1.6, 0, -3.2);
+  Vector3d stopped;
+  ASSERT_TRUE(stopped_grasp(press, displacement, 1.0, &landed, stopped));
+  EXPECT_TRUE(stopped.isApprox(Vector3d(2.6, 2, -0.2), 1e-15));
+  // Landed exactly where the stylus put it: the coupling stays as it is.
+  EXPECT_FALSE(stopped_grasp(press, displacement, 1.0, &displacement, stopped));
+  // Not known (NaN): the fraction decides.
+  const Vector3d unknown(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  EXPECT_FALSE(stopped_grasp(press, displacement, 1.0, &unknown, stopped));
+  ASSERT_TRUE(stopped_grasp(press, displacement, 0.5, &unknown, stopped));
+  EXPECT_EQ(stopped, Vector3d(1, 2, 1));
+}
+
 TEST(StoppedGrasp, AFreeGraspOrNoGraspLeavesTheCouplingAsItIs)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
