@@ -56,7 +56,8 @@ np.save(os.path.join(out, "rank%d.npy" % rank), rows)
 chain.UpdatePropertyInformation()
 stats = {key: chain.GetProperty(name).GetData() for key, name in (
     ("displaced", "NumberOfDisplacedPoints"), ("blocked", "NumberOfObstacleBlockedPoints"),
-    ("fraction", "LastGraspObstacleFraction"), ("supersteps", "NumberOfSupersteps"))}
+    ("fraction", "LastGraspObstacleFraction"), ("supersteps", "NumberOfSupersteps"),
+    ("landed", "LastGraspDisplacement"))}
 if rank == 0:
     tris = ceiling.GetClientSideObject().GetOutputDataObject(0)
     xyz = vtk_to_numpy(tris.GetPoints().GetData()).astype(float)

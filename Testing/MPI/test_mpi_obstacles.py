@@ -1,7 +1,8 @@
 """Obstacles on distributed data (docs/obstacles.md, "On several processes"):
 `mpiexec -n 1/2/3 pvbatch --sym` runs mpi_obstacles.py (a plane pulled up into a tilted
 ceiling); the gathered points of 2 and 3 ranks must equal the 1-rank result bit for bit,
-with the same held-back count and grasp fraction, and no point's path from rest to
+with the same held-back count, grasp fraction and LastGraspDisplacement (the grasp's
+output minus rest, fraction x the pull), and no point's path from rest to
 deformed may cross a ceiling triangle (Cramer's rule, computed here with numpy) or, with
 a clearance, end closer than it to the ceiling's plane.
 Usage: test_mpi_obstacles.py [CLEARANCE]."""
@@ -74,6 +75,14 @@ if len(one) != 31 * 31 or displaced < 50:
     fail("%d points, %d displaced on 1 rank" % (len(one), displaced))
 if not (stats[1]["blocked"] > 0 and stats[1]["fraction"] < 1.0):
     fail("the ceiling held nothing back on 1 rank: %s" % stats[1])
+# Where the grasp landed: the grasp's output minus rest (to the output's rounding),
+# fraction x the pull.
+grasp = int(np.searchsorted(one[:, 0], 15 * 31 + 15))
+landed = np.array(stats[1]["landed"])
+if not (np.allclose(landed, moved[grasp] - rest[grasp], rtol=0.0, atol=1e-12)
+        and np.allclose(landed, stats[1]["fraction"] * np.array([1.0, 0.0, 10.0]), atol=1e-12)):
+    fail("LastGraspDisplacement %s is not where the grasp landed (%s)"
+         % (landed, moved[grasp] - rest[grasp]))
 crossed = crossings(rest, moved, tris)
 # The ceiling's plane: z = 2 + 0.2 (x + 5); its distance below it, for the clearance.
 below = ((2.0 + 0.2 * (moved[:, 0] + 5.0)) - moved[:, 2]) / np.sqrt(1.0 + 0.2 ** 2)
@@ -86,7 +95,7 @@ for n in (2, 3):
     if results[n].shape != one.shape or not np.array_equal(results[n], one):
         diff = np.abs(results[n] - one).max() if results[n].shape == one.shape else "shape"
         fail("%d ranks differ from 1 rank (max difference %s)" % (n, diff))
-    for key in ("displaced", "blocked", "fraction"):
+    for key in ("displaced", "blocked", "fraction", "landed"):
         if stats[n][key] != stats[1][key]:
             fail("%d ranks report %s %s, 1 rank %s" % (n, key, stats[n][key], stats[1][key]))
     print("ok: %d ranks equal 1 rank bit for bit (%d held back, %d supersteps)"
