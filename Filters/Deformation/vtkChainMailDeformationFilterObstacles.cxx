@@ -1,5 +1,5 @@
 // The obstacles of input port 1 (docs/obstacles.md): triangulated once per obstacle
-// geometry and handed to the core (geoshaping/obstacles.h), which holds the rule.
+// geometry and handed to the core (geoshaping/deform/obstacles.h), which holds the rule.
 #include "vtkChainMailDeformationFilterInternals.h"
 
 #include "vtkAlgorithm.h"
