@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
-#include <tuple>
-#include <utility>
 
 namespace geoshaping
 {
@@ -23,151 +21,6 @@ const char* queue_name(QueueKind kind)
       return "Max Violation";
   }
   return "";
-}
-
-namespace
-{
-// The full key of an entry, ties (duplicate ids on a piece) by vertex and sponsor.
-inline bool before(const SuperstepEntry& a, const SuperstepEntry& b)
-{
-  return std::tie(a.band, a.root.generation, a.root.gid, a.candidate_gid, a.sponsor_gid, a.vertex,
-           a.sponsor) < std::tie(b.band, b.root.generation, b.root.gid, b.candidate_gid,
-                          b.sponsor_gid, b.vertex, b.sponsor);
-}
-
-// Sizes a scratch buffer to at least n (its tail beyond n is left as it is).
-template<class T>
-void grow(std::vector<T>& v, std::size_t n)
-{
-  if (v.size() < n)
-    v.resize(n);
-}
-
-int bit_width(std::uint64_t x)
-{
-  int n = 0;
-  for (; x; x >>= 1)
-    ++n;
-  return n;
-}
-} // namespace
-
-bool SuperstepQueue::sort_cheaply()
-{
-  const std::size_t k = pending_.size();
-  if (k > std::numeric_limits<std::uint32_t>::max())
-    return false;
-  std::uint32_t min_order = pending_[0].order, max_order = min_order;
-  std::int64_t min_id = pending_[0].candidate_gid, max_id = min_id;
-  for (const SuperstepEntry& e : pending_)
-  {
-    min_order = std::min(min_order, e.order);
-    max_order = std::max(max_order, e.order);
-    min_id = std::min(min_id, e.candidate_gid);
-    max_id = std::max(max_id, e.candidate_gid);
-  }
-  const int id_bits = bit_width(std::uint64_t(max_id) - std::uint64_t(min_id));
-  const int bits = id_bits + bit_width(max_order - min_order);
-  if (bits > 64)
-    return false;
-  grow(words_, k);
-  for (std::size_t i = 0; i < k; ++i)
-  {
-    const SuperstepEntry& e = pending_[i];
-    const std::uint64_t order = e.order - min_order;
-    words_[i] = { (id_bits < 64 ? order << id_bits : 0) |
-                    (std::uint64_t(e.candidate_gid) - std::uint64_t(min_id)),
-      std::uint32_t(i) };
-  }
-  // Insertion sort while it makes few moves (a generation comes nearly sorted: the
-  // neighbours of vertices taken in id order); past the budget a radix sort of all.
-  std::size_t moves = 0, i = 1;
-  for (const std::size_t budget = 4 * k; i < k && moves <= budget; ++i)
-    for (std::size_t j = i; j > 0 && words_[j].key < words_[j - 1].key; --j, ++moves)
-      std::swap(words_[j], words_[j - 1]);
-  if (i < k)
-  {
-    // LSD radix sort: ceil(bits / 11) stable counting passes of equal width (at most
-    // 2^11 counters), a pass skipped when its digit is the same in all words.
-    const int passes = (bits + 10) / 11;
-    const int width = passes ? (bits + passes - 1) / passes : 0;
-    const std::uint64_t mask = (std::uint64_t(1) << width) - 1;
-    grow(scratch_, k);
-    count_.resize(std::size_t(1) << width);
-    for (int shift = 0; shift < bits; shift += width)
-    {
-      std::fill(count_.begin(), count_.end(), 0);
-      for (std::size_t w = 0; w < k; ++w)
-        ++count_[(words_[w].key >> shift) & mask];
-      if (count_[(words_[0].key >> shift) & mask] == k)
-        continue;
-      std::uint32_t sum = 0;
-      for (std::uint32_t& c : count_)
-        sum += std::exchange(c, sum);
-      for (std::size_t w = 0; w < k; ++w)
-        scratch_[count_[(words_[w].key >> shift) & mask]++] = words_[w];
-      words_.swap(scratch_);
-    }
-  }
-  // Runs of one word (one candidate) by sponsor id, then the check on the full key.
-  for (std::size_t i = 1; i < k; ++i)
-    for (std::size_t j = i;
-         j > 0 && words_[j].key == words_[j - 1].key &&
-         pending_[words_[j].index].sponsor_gid < pending_[words_[j - 1].index].sponsor_gid;
-         --j)
-      std::swap(words_[j], words_[j - 1]);
-  for (std::size_t i = 1; i < k; ++i)
-    if (before(pending_[words_[i].index], pending_[words_[i - 1].index]))
-      return false;
-  return true;
-}
-
-void SuperstepQueue::sort_fully()
-{
-  const std::size_t k = pending_.size();
-  grow(words_, k);
-  for (std::size_t i = 0; i < k; ++i)
-    words_[i] = { 0, std::uint32_t(i) };
-  auto less = [&](const Word& a, const Word& b)
-  { return before(pending_[a.index], pending_[b.index]); };
-  if (k <= small)
-    for (std::size_t i = 1; i < k; ++i)
-      for (std::size_t j = i; j > 0 && less(words_[j], words_[j - 1]); --j)
-        std::swap(words_[j], words_[j - 1]);
-  else
-    std::sort(words_.begin(), words_.begin() + std::ptrdiff_t(k), less);
-}
-
-void SuperstepQueue::seal(std::uint32_t generation)
-{
-  if (pending_.empty())
-    return;
-  if (generation <= sealed_generation_)
-    throw std::invalid_argument("SuperstepQueue: generations must be sealed in increasing order");
-  sealed_generation_ = generation;
-  if (pending_.size() <= small || !sort_cheaply())
-    sort_fully();
-  const std::size_t k = pending_.size();
-  if (pool_.size() + k > std::numeric_limits<std::uint32_t>::max())
-    throw std::length_error("SuperstepQueue: more than 2^32 entries in a frame");
-  std::size_t begin = pool_.size();
-  for (std::size_t i = 0; i < k;)
-  {
-    const SuperstepEntry& first = pending_[words_[i].index];
-    std::size_t j = i;
-    for (; j < k; ++j)
-    {
-      const SuperstepEntry& e = pending_[words_[j].index];
-      if (e.band != first.band || !(e.root == first.root))
-        break;
-      pool_.push_back({ e.vertex, e.sponsor });
-    }
-    file({ key(first.band, first.root, generation), std::uint32_t(begin),
-      std::uint32_t(pool_.size()) });
-    begin = pool_.size();
-    i = j;
-  }
-  pending_.clear();
 }
 
 std::uint32_t SuperstepQueue::open_group(const ChainKey& k)
@@ -309,7 +162,6 @@ bool SuperstepQueue::pop(const SuperstepKey& k, std::size_t& begin, std::size_t&
 void SuperstepQueue::clear()
 {
   pool_.clear();
-  pending_.clear();
   groups_.clear();
   free_.clear();
   chains_.clear();

@@ -75,11 +75,12 @@ public:
   void push(Candidate c, index_t rank, double) { push_keyed(c, rank); }
 };
 
-// The superstep order of FIFO and FIFO Priority (docs/deformer.md, "Order"): it does
-// not depend on insertion order, so a partitioned mesh gives the same result as one
-// piece. An entry is (candidate c, sponsor s) with the key
+// The superstep order of FIFO and FIFO Priority (docs/deformer.md, "Order"): the order
+// of its groups does not depend on the order in which they are filled, so a partitioned
+// mesh gives the same result as one piece. An entry is (candidate c, sponsor s) in the
+// group of the key
 //
-//   (band, root, generation | candidate global id, sponsor global id)
+//   (band, root, generation)
 //
 // - band = c's malleability (FIFO: 0 for all): lowest first;
 // - root = where propagation entered c's band region. An entry into a lower band than
@@ -90,51 +91,38 @@ public:
 //   band before moving anything else): a rigid region moves as one.
 // - generation = 1 + the superstep in which s moved (the grasp moves in superstep 0).
 //
-// A superstep takes every pending entry of the lowest (band, root, generation) and
-// examines them in (candidate id, sponsor id) order. The entries a superstep creates
+// A superstep takes the group of the lowest pending key, its entries in the order they
+// were appended (the queue sorts no entry; see open() for how the deformer gets the
+// (candidate id, sponsor id) order's result from that). The entries a superstep creates
 // all have generation t + 1 for superstep t, while its own group has generation
-// g <= t: they never join the superstep that creates them, so the deformer queues them
-// after it ("seal").
+// g <= t: they never join the superstep that creates them, so the deformer files them
+// after it (seal_in_push_order).
 //
 // band is the bit pattern of a float in [0, 1] (+0 for -0), whose unsigned order is the
 // numeric order, so pieces with different sets of malleability values agree on it.
 //
-// Cost: a frame of P pushes (P <= the sum of the degrees of the moved vertices) filed
-// in S supersteps with R distinct (band, root)s costs O(P + S + R log R) time in the
-// usual case, O(P log P + S + R log R) at worst; memory is 8 P bytes, plus 80 bytes per
-// entry of the largest generation (scratch), plus 40 bytes per pending group and ~60
-// per (band, root). How, for the k entries of one generation (seal):
+// Cost: a frame of P appended entries in S supersteps with R distinct (band, root)s
+// costs O(P + S + H log R) expected time (hash look-ups), H <= P being the number of
+// times a chain goes on the heap (once per (band, root) when each superstep continues
+// its own chain, the common case). Memory is 8 P bytes (the pool), plus 12 bytes per
+// entry of the largest generation outside its first group (side buffer), 20 per group
+// of the largest generation, 40 per pending group and ~80 per (band, root). How, for the
+// k entries of one generation in G groups:
 //
-// 1. They wait in a scratch buffer reused between generations and frames (its size is
-//    the largest generation, not P).
-// 2. k <= 16 (most FIFO Priority supersteps move 1-3 vertices): insertion sort on the
-//    full key below. Otherwise a cheap order of the 64-bit word
-//      (order - min order) << b | (c id - min c id),   b = bit width of the c id range,
-//    `order` being any integer non-decreasing in band (the deformer passes the rank of
-//    the malleability among the piece's distinct values): insertion sort while it has
-//    made at most 4 k moves (a generation comes nearly sorted, the neighbours of
-//    vertices taken in id order), past that a stable LSD radix sort (passes of at most
-//    11 bits); then each run of one word (one candidate) by sponsor id, by insertion (a
-//    run is at most c's degree long). O(k) for ids spanning less than
-//    2^(64 - order bits) (two passes below 2^22); when the word does not fit in 64
-//    bits, a comparison sort on the full key, O(k log k).
-// 3. Check: adjacent entries in full-key order (band, root, c id, s id, then vertex and
-//    sponsor for duplicated ids). It holds when, within a band, the roots are all one
-//    root or all the candidates' own (generation, c id), which is every generation the
-//    deformer seals: one superstep's moved vertices share a band and a root, so an
-//    entry's root follows from its band alone (same band: theirs; lower: its own;
-//    higher: the base). Otherwise (a caller mixing sponsors of different bands or roots
-//    in one generation, or a wrong `order`) a comparison sort on the full key,
-//    O(k log k): the order is the full key's whatever the path.
-// 4. The sorted (vertex, sponsor) pairs, 8 bytes each, are appended to the pool, one
-//    group per (band, root). Groups are chained per (band, root) in filing order, which
-//    is their key order since generations only grow; a binary heap holds the chains,
-//    whose order is their (band, root) and never changes. A superstep continuing its
-//    own chain (the common case) pops and files without heap work; a new (band, root)
-//    costs a hash-map insert and O(log C) for C chains with pending groups.
+// 1. open() finds the generation's group of a (band, root): the first group opened with
+//    one comparison, the others by a linear scan up to 8 groups, past that by a hash
+//    map. append() writes the first group's (vertex, sponsor) pairs, 8 bytes each,
+//    straight into the pool and the others' into a side buffer.
+// 2. seal_in_push_order() files the first group in place and moves the others after it
+//    by a stable counting sort of the side buffer on the group, O(k + G).
+// 3. Groups are chained per (band, root) in filing order, which is their key order
+//    since generations only grow; a binary heap holds the chains, whose order is their
+//    (band, root) and never changes. A superstep continuing its own chain (the common
+//    case) pops and files without heap work; a new (band, root) costs a hash-map insert
+//    and O(log C) for C chains with pending groups.
 //
 // The pool holds the whole frame's entries (groups pop in key order, not in filing
-// order); pool, scratch and heap keep their capacity between frames.
+// order); pool, side buffer and heap keep their capacity between frames.
 struct SuperstepRoot
 {
   std::uint32_t generation = 0; // 0: the base root
@@ -143,17 +131,6 @@ struct SuperstepRoot
   {
     return generation == o.generation && gid == o.gid;
   }
-};
-
-struct SuperstepEntry
-{
-  std::int64_t candidate_gid;
-  std::int64_t sponsor_gid;
-  SuperstepRoot root;
-  std::uint32_t band;
-  std::uint32_t order; // non-decreasing in band (a hint for the cheap sort; 0 if unknown)
-  index_t vertex;      // the candidate (the deformer's internal id)
-  index_t sponsor;     // the sponsor's slot
 };
 
 // (band, root, generation) as three words compared in lexicographic order, so pieces
@@ -173,31 +150,13 @@ public:
   {
     return { std::uint32_t(k[0]), std::int64_t(k[1] ^ (std::uint64_t(1) << 63)) };
   }
-  void push(const SuperstepEntry& e) { pending_.push_back(e); }
-  // The same, written in place (no entry copied through the stack).
-  void push(std::int64_t candidate_gid, std::int64_t sponsor_gid, const SuperstepRoot& root,
-    std::uint32_t band, std::uint32_t order, index_t vertex, index_t sponsor)
-  {
-    SuperstepEntry& e = pending_.emplace_back();
-    e.candidate_gid = candidate_gid;
-    e.sponsor_gid = sponsor_gid;
-    e.root = root;
-    e.band = band;
-    e.order = order;
-    e.vertex = vertex;
-    e.sponsor = sponsor;
-  }
-  // Files the entries pushed since the last seal as `generation`, which must exceed the
-  // previous seal's since clear() (std::invalid_argument otherwise).
-  void seal(std::uint32_t generation);
-  // The deformer's path: (vertex, sponsor) pairs appended to the group of their
-  // (band, root) and filed by seal_in_push_order() into one group per (band, root), each
-  // in push order (no sort, 8 bytes per entry). A caller that pushes each candidate's
-  // entries in sponsor id order and examines a group's candidates independently of one
-  // another (ChainMailDeformer: it orders a superstep's moves by id afterwards) gets the
-  // result of the sorted order above. open() gives the generation's group of a
-  // (band, root): the first opened (most often the only one) is written in place, the
-  // others go through a side buffer. Not mixed with push() in one generation.
+  // (vertex, sponsor) pairs appended to the group of their (band, root) and filed by
+  // seal_in_push_order() into one group per (band, root), each in push order. A caller
+  // that pushes each candidate's entries in sponsor id order and examines a group's
+  // candidates independently of one another (ChainMailDeformer: it orders a superstep's
+  // moves by id afterwards) gets the result of the (candidate id, sponsor id) order.
+  // open() gives the generation's group of a (band, root): the first opened (most often
+  // the only one) is written in place, the others go through a side buffer.
   std::uint32_t open(std::uint32_t band, const SuperstepRoot& root)
   {
     const ChainKey k{ std::uint64_t(band) << 32 | root.generation,
@@ -217,6 +176,9 @@ public:
     else
       side_.push_back({ { vertex, sponsor }, group });
   }
+  // Files the entries appended since the last call as `generation`, which must exceed
+  // the previous one's since clear() (std::invalid_argument otherwise; nothing is
+  // checked or filed when nothing was appended).
   void seal_in_push_order(std::uint32_t generation);
   // The lowest pending key, `none` when nothing is pending (drops finished chains: not
   // safe to call from two threads at once).
@@ -226,21 +188,20 @@ public:
     return heap_.empty() ? none : groups_[chains_[heap_.front()].head].key;
   }
   // Removes the group `key` if it is the lowest: its entries are entries()[begin, end),
-  // sorted by (candidate id, sponsor id), valid until the next seal.
+  // in push order, valid until the next append().
   bool pop(const SuperstepKey& key, std::size_t& begin, std::size_t& end);
   const Candidate* entries() const { return pool_.data(); }
   // Empties the queue, keeping the buffers.
   void clear();
   std::size_t memory_bytes() const
   {
-    return pool_.capacity() * sizeof(Candidate) + pending_.capacity() * sizeof(SuperstepEntry) +
-           (words_.capacity() + scratch_.capacity()) * sizeof(Word) +
-           count_.capacity() * sizeof(std::uint32_t) + groups_.capacity() * sizeof(Group) +
+    return pool_.capacity() * sizeof(Candidate) + groups_.capacity() * sizeof(Group) +
            free_.capacity() * sizeof(std::uint32_t) + chains_.capacity() * sizeof(Chain) +
            heap_.capacity() * sizeof(std::uint32_t) + offsets_.capacity() * sizeof(std::uint32_t) +
            side_.capacity() * sizeof(SideEntry) + open_.capacity() * sizeof(ChainKey) +
-           chain_of_.size() * (sizeof(ChainKey) + 2 * sizeof(void*) + sizeof(std::uint32_t)) +
-           chain_of_.bucket_count() * sizeof(void*);
+           (chain_of_.size() + open_of_.size()) *
+             (sizeof(ChainKey) + 2 * sizeof(void*) + sizeof(std::uint32_t)) +
+           (chain_of_.bucket_count() + open_of_.bucket_count()) * sizeof(void*);
   }
 
 private:
@@ -251,8 +212,8 @@ private:
     std::uint32_t begin, end; // in pool_, which holds fewer than 2^32 entries (checked)
     std::uint32_t next;       // the chain's next group, nil at its tail
   };
-  // The groups of one (band, root) in filing order, which is their key order: a seal's
-  // generation exceeds every earlier one. Chains differ in (band, root), so their order
+  // The groups of one (band, root) in filing order, which is their key order: a generation
+  // filed exceeds every earlier one. Chains differ in (band, root), so their order
   // does not change as they pop: a binary heap of chains on (band, root).
   struct ChainKey
   {
@@ -286,22 +247,11 @@ private:
                                                     : x.gid > y.gid;
     }
   };
-  struct Word // the cheap sort key of pending_[index]
-  {
-    std::uint64_t key;
-    std::uint32_t index;
-  };
-  static constexpr std::size_t small = 16; // generations sorted on the full key by insertion
-  bool sort_cheaply();
-  void sort_fully();
   void file(const Group& g);
   // A chain whose last group popped stays on the heap until it is found on top with
   // none filed meanwhile: the next superstep most often refills it (same band and root).
   void drop_done_chains() const;
   std::vector<Candidate> pool_;
-  std::vector<SuperstepEntry> pending_;     // the generation being pushed
-  std::vector<Word> words_, scratch_;       // its sort order
-  std::vector<std::uint32_t> count_;        // radix counters
   std::vector<Group> groups_;               // pending groups and free slots
   std::vector<std::uint32_t> free_;         // free slots of groups_
   mutable std::vector<Chain> chains_;       // by chain id, the frame's (band, root)s
