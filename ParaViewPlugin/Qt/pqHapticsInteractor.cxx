@@ -3,7 +3,6 @@
 #include "pqHapticsMouse.h"
 
 #include "geoshaping/haptics/contact_patch.h"
-#include "geoshaping/haptics/replay_device.h"
 #include "geoshaping/haptics/servo_loop.h"
 #include "geoshaping/haptics/trace.h"
 #include "geoshaping/paint/brush.h"
@@ -196,24 +195,6 @@ void pqHapticsInteractor::setTool(int hand, interactor::Tool tool)
     this->Hands[hand]->tool = tool;
     this->apply(*this->Hands[hand], this->Hands[hand]->controller.set_tool(tool));
   }
-}
-
-bool pqHapticsInteractor::replaysFinished() const
-{
-  bool any = false;
-  for (const auto& hand : this->Hands)
-  {
-    if (hand && hand->device)
-    {
-      auto* replay = dynamic_cast<const haptics::ReplayDevice*>(hand->device.get());
-      if (!replay || !replay->finished())
-      {
-        return false;
-      }
-      any = true;
-    }
-  }
-  return any;
 }
 
 bool pqHapticsInteractor::stylusOf(

@@ -90,8 +90,6 @@ public:
   // What the last stroke did: its dabs, and why some were not stored (BrushControl.h).
   const QString& brushNote() const { return this->BrushNote; }
   const Figures& figures() const { return this->Stats; }
-  // True when every device hand replays a trace and all of them are over.
-  bool replaysFinished() const;
 
   // Commit / undo / redo / reset on the target ChainMailDeformation, keeping its
   // EditHistory in step (docs/editing.md), then render. Works running or not. A Deform

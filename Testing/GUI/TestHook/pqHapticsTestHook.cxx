@@ -7,6 +7,7 @@
 #include "pqPullTestDriver.h"
 
 #include "geoshaping/edit/edit_history.h"
+#include "geoshaping/haptics/trace.h"
 
 #include <pqActiveObjects.h>
 #include <pqCoreUtilities.h>
@@ -125,6 +126,20 @@ void pqHapticsTestHook::poll()
       this->Dock->setRecordPath(this->Output + ".recorded.trace");
     }
     this->Started = this->Dock->start();
+    double duration = 0.0; // of the longest replayed trace (ReplayDevice::duration)
+    for (const QString& path : { this->Trace, this->Trace2 })
+    {
+      const auto trace = path.isEmpty() || mouse || openHaptics
+                           ? geoshaping::haptics::TraceParseResult()
+                           : geoshaping::haptics::read_trace_file(path.toStdString());
+      if (!trace.samples.empty())
+      {
+        duration = std::max(duration, trace.samples.back().t);
+      }
+    }
+    this->ReplaysEnd = std::chrono::steady_clock::now() +
+                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                         std::chrono::duration<double>(duration));
     if (!this->Started && !this->Output.isEmpty())
     {
       this->writeResults();
@@ -168,7 +183,7 @@ void pqHapticsTestHook::poll()
     return;
   }
   // A few frames after the trace is over, so the last sample has been rendered.
-  if (this->Dock->interactor()->replaysFinished() && ++this->FinishedPolls >= 5)
+  if (std::chrono::steady_clock::now() > this->ReplaysEnd && ++this->FinishedPolls >= 5)
   {
     if (!this->Output.isEmpty())
     {

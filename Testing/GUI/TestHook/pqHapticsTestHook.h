@@ -23,6 +23,7 @@
 //                                           figures and the deformed output), then quit.
 #include <QObject>
 
+#include <chrono>
 #include <memory>
 
 class pqHapticsDockPanel;
@@ -60,6 +61,9 @@ private:
   bool TimedOut = false;
   bool StateLoaded = false;
   int FinishedPolls = 0;
+  // When the replayed traces are over: start() plus the longest trace's duration (the
+  // replay devices' clocks start inside start(), so they are past their last sample then).
+  std::chrono::steady_clock::time_point ReplaysEnd;
   int Polls = 0;
   int ReadyPolls = 0;
   int MouseSteps = 0;
