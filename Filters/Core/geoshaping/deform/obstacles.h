@@ -78,7 +78,6 @@ public:
     std::size_t num_triangles, const Eigen::Vector3d& origin);
   bool empty() const { return tri_.empty(); }
   std::size_t size() const { return tri_.size(); }
-  double stand_off() const { return gap_; }
 
   // The rule above, for a vertex at rest at p (local) displaced by w, with the clearance
   // c >= 0 (scene units).
