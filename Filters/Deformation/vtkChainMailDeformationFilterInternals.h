@@ -288,6 +288,12 @@ inline geoshaping::TransferFunction Transfer(vtkChainMailDeformationFilter* self
 // `obstacle` is not a vtkDataSet (vtkChainMailDeformationFilterObstacles.cxx).
 vtkIdType AppendObstacle(
   vtkDataObject* obstacle, std::vector<double>& xyz, std::vector<std::int64_t>& triangles);
+// The start of an obstacle update with connections on port 1, on one process or several:
+// the clearance given to the deformer (false, with the error, when it is not a finite
+// distance >= 0) and each connection's data with its MTime in `sources`
+// (vtkChainMailDeformationFilterObstacles.cxx).
+bool ObstacleSources(vtkChainMailDeformationFilter* self, geoshaping::ChainMailDeformer& deformer,
+  std::vector<std::pair<vtkDataObject*, vtkMTimeType>>& sources);
 } // namespace vtkChainMailDeformationFilterDetail
 
 inline void vtkChainMailDeformationFilter::vtkInternals::Invalidate(Stale level)

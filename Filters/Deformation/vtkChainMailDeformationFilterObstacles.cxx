@@ -68,6 +68,27 @@ vtkIdType vtkChainMailDeformationFilterDetail::AppendObstacle(
   return 0;
 }
 
+bool vtkChainMailDeformationFilterDetail::ObstacleSources(vtkChainMailDeformationFilter* self,
+  geoshaping::ChainMailDeformer& deformer,
+  std::vector<std::pair<vtkDataObject*, vtkMTimeType>>& sources)
+{
+  if (!deformer.set_obstacle_clearance(self->GetObstacleClearance()))
+  {
+    vtkErrorWithObjectMacro(self, "ObstacleClearance "
+                                    << self->GetObstacleClearance()
+                                    << " is not a finite distance >= 0; output is the "
+                                       "undeformed input.");
+    return false;
+  }
+  sources.clear();
+  for (int i = 0; i < self->GetNumberOfInputConnections(1); ++i)
+  {
+    vtkDataObject* data = self->GetInputDataObject(1, i);
+    sources.emplace_back(data, data ? data->GetMTime() : 0);
+  }
+  return true;
+}
+
 bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** inputVector)
 {
   vtkInternals& state = *this->Internals;
@@ -78,19 +99,9 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
     state.ObstacleSources.clear();
     return true;
   }
-  if (!state.Deformer.set_obstacle_clearance(this->ObstacleClearance))
-  {
-    vtkErrorMacro("ObstacleClearance " << this->ObstacleClearance
-                                       << " is not a finite distance >= 0; output is the "
-                                          "undeformed input.");
-    return false;
-  }
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> sources;
-  for (int i = 0; i < count; ++i)
-  {
-    vtkDataObject* data = vtkDataObject::GetData(inputVector[1], i);
-    sources.emplace_back(data, data ? data->GetMTime() : 0);
-  }
+  if (!vtkChainMailDeformationFilterDetail::ObstacleSources(this, state.Deformer, sources))
+    return false;
   if (sources == state.ObstacleSources && state.Deformer.obstacles())
     return true;
   state.ObstacleSources.clear();

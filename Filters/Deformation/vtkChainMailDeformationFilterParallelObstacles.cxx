@@ -33,19 +33,9 @@ bool vtkChainMailDeformationFilter::UpdateObstaclesParallel(
     state.ObstacleSources.clear();
     return Everywhere(ex, this->UpdateSliding(input));
   }
-  if (!state.Deformer.set_obstacle_clearance(this->ObstacleClearance))
-  {
-    vtkErrorMacro("ObstacleClearance " << this->ObstacleClearance
-                                       << " is not a finite distance >= 0; output is the "
-                                          "undeformed input.");
-    return false;
-  }
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> sources;
-  for (int i = 0; i < count; ++i)
-  {
-    vtkDataObject* data = this->GetInputDataObject(1, i);
-    sources.emplace_back(data, data ? data->GetMTime() : 0);
-  }
+  if (!vtkChainMailDeformationFilterDetail::ObstacleSources(this, state.Deformer, sources))
+    return false;
   if (!Everywhere(ex, sources == state.ObstacleSources && state.Deformer.obstacles()))
   {
     state.ObstacleSources.clear();
