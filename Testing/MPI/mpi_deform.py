@@ -22,7 +22,7 @@ controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pipeline import POINT_INDEX_IDS  # noqa: E402
+from mpi_pipeline import POINT_INDEX_IDS, owned_rows  # noqa: E402
 
 if scene == "surface":
     source = FaultStepHorizon()  # noqa: F405 (painted: a rigid fault block in soft beds)
@@ -98,16 +98,8 @@ if scene not in ("slab",):
     # polydata again, as a user must before saving a TSurf.
     SaveData(os.path.join(out, "deformed.ts"), proxy=ExtractSurface(Input=chain))  # noqa: F405
 
-data = chain.GetClientSideObject().GetOutputDataObject(0)
-n = data.GetNumberOfPoints()
-rows = np.zeros((0, 7))
-if n:
-    ghost = vtk_to_numpy(data.GetPointData().GetArray("vtkGhostType")) if nranks > 1 else np.zeros(n)
-    owned = (ghost.astype(int) & 1) == 0  # vtkDataSetAttributes::DUPLICATEPOINT
-    ids_here = vtk_to_numpy(data.GetPointData().GetGlobalIds())[owned]
-    pts = vtk_to_numpy(data.GetPoints().GetData()).astype(float)[owned]
-    rest = ghosts.GetClientSideObject().GetOutputDataObject(0).GetPoints().GetData()
-    rows = np.column_stack([ids_here.astype(float), pts, vtk_to_numpy(rest).astype(float)[owned]])
+rows = owned_rows(chain.GetClientSideObject().GetOutputDataObject(0),
+                  ghosts.GetClientSideObject().GetOutputDataObject(0), nranks)
 np.save(os.path.join(out, "rank%d.npy" % rank), rows)
 controller.Barrier()
 if rank == 0:

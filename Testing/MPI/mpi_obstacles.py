@@ -21,7 +21,7 @@ controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pipeline import distributed  # noqa: E402
+from mpi_pipeline import distributed, owned_rows  # noqa: E402
 
 source = Triangulate(Input=Plane(XResolution=30, YResolution=30, Origin=[0, 0, 0],  # noqa: F405
                                  Point1=[30.0, 0, 0], Point2=[0, 30.0, 0]))  # noqa: F405
@@ -40,17 +40,8 @@ chain.GraspPointId = 15 * 31 + 15  # the centre (15, 15)
 chain.Displacement = [1.0, 0.0, 10.0]
 chain.UpdatePipeline()
 
-data = chain.GetClientSideObject().GetOutputDataObject(0)
-n = data.GetNumberOfPoints()
-rows = np.zeros((0, 7))
-if n:
-    ghost = vtk_to_numpy(data.GetPointData().GetArray("vtkGhostType")) if nranks > 1 else np.zeros(n)
-    owned = (ghost.astype(int) & 1) == 0  # vtkDataSetAttributes::DUPLICATEPOINT
-    gid = vtk_to_numpy(data.GetPointData().GetGlobalIds())[owned]
-    pts = vtk_to_numpy(data.GetPoints().GetData()).astype(float)[owned]
-    inp = ghosts.GetClientSideObject().GetOutputDataObject(0)
-    rest = vtk_to_numpy(inp.GetPoints().GetData()).astype(float)[owned]
-    rows = np.column_stack([gid.astype(float), pts, rest])
+rows = owned_rows(chain.GetClientSideObject().GetOutputDataObject(0),
+                  ghosts.GetClientSideObject().GetOutputDataObject(0), nranks)
 os.makedirs(out, exist_ok=True)
 np.save(os.path.join(out, "rank%d.npy" % rank), rows)
 chain.UpdatePropertyInformation()

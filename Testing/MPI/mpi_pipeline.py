@@ -23,3 +23,23 @@ def distributed(source):
     ids = ProgrammableFilter(Input=source)
     ids.Script = POINT_INDEX_IDS
     return ids, GhostCellsGenerator(Input=RedistributeDataSet(Input=ids))
+
+
+def owned_rows(output, rest, nranks, extra=()):
+    """Rows (global id, x, y, z, rest x, y, z, then the point arrays of `rest` named in
+    `extra`) of the points of `output` this rank owns (not flagged DUPLICATEPOINT in
+    vtkGhostType; all of them on one rank); `rest` is the filter's input, same points."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    n = output.GetNumberOfPoints()
+    if not n:
+        return np.zeros((0, 7 + len(extra)))
+    ghost = vtk_to_numpy(output.GetPointData().GetArray("vtkGhostType")) if nranks > 1 else np.zeros(n)
+    owned = (ghost.astype(int) & 1) == 0  # vtkDataSetAttributes::DUPLICATEPOINT
+    columns = [vtk_to_numpy(output.GetPointData().GetGlobalIds())[owned].astype(float),
+               vtk_to_numpy(output.GetPoints().GetData()).astype(float)[owned],
+               vtk_to_numpy(rest.GetPoints().GetData()).astype(float)[owned]]
+    columns += [vtk_to_numpy(rest.GetPointData().GetArray(name)).astype(float)[owned]
+                for name in extra]
+    return np.column_stack(columns)

@@ -28,7 +28,7 @@ controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pipeline import distributed  # noqa: E402
+from mpi_pipeline import distributed, owned_rows  # noqa: E402
 
 if scene == "surface":
     # Painted (Figure 5C): a rigid fault step in soft beds.
@@ -88,18 +88,8 @@ if nearest:
 chain.Displacement = pull
 chain.UpdatePipeline()
 
-data = chain.GetClientSideObject().GetOutputDataObject(0)
-n = data.GetNumberOfPoints()
-rows = np.zeros((0, 8))
-if n:
-    ghost = vtk_to_numpy(data.GetPointData().GetArray("vtkGhostType")) if nranks > 1 else np.zeros(n)
-    owned = (ghost.astype(int) & 1) == 0  # vtkDataSetAttributes::DUPLICATEPOINT
-    ids_here = vtk_to_numpy(data.GetPointData().GetGlobalIds())[owned]
-    pts = vtk_to_numpy(data.GetPoints().GetData()).astype(float)[owned]
-    inp = ghosts.GetClientSideObject().GetOutputDataObject(0)
-    rest = vtk_to_numpy(inp.GetPoints().GetData()).astype(float)[owned]
-    m = vtk_to_numpy(inp.GetPointData().GetArray("Malleability")).astype(float)[owned]
-    rows = np.column_stack([ids_here.astype(float), pts, rest, m])
+rows = owned_rows(chain.GetClientSideObject().GetOutputDataObject(0),
+                  ghosts.GetClientSideObject().GetOutputDataObject(0), nranks, ["Malleability"])
 np.save(os.path.join(out, "rank%d.npy" % rank), rows)
 chain.UpdatePropertyInformation()
 stats = {key: chain.GetProperty(name).GetData() for key, name in (
