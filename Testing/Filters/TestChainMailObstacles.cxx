@@ -49,6 +49,27 @@ vtkPointSet* Update(vtkChainMailDeformationFilter* f)
   f->Update();
   return vtkPointSet::SafeDownCast(f->GetOutputDataObject(0));
 }
+// Horizon x in [0, 10], y in [0, 20] (spacing 1), its last column x = 10 flagged in the
+// point array "OnFault"; and the fault x = 10 - 0.5 z under it (a 9 x 9 sheet).
+vtkSmartPointer<vtkPolyData> CutOffHorizon()
+{
+  auto horizon = TriangleGridPolyData(11, 21, 1.0, {});
+  vtkNew<vtkUnsignedCharArray> onFault;
+  onFault->SetName("OnFault");
+  onFault->SetNumberOfTuples(horizon->GetNumberOfPoints());
+  onFault->Fill(0);
+  for (int j = 0; j < 21; ++j)
+    onFault->SetValue(j * 11 + 10, 1);
+  horizon->GetPointData()->AddArray(onFault);
+  return horizon;
+}
+
+vtkSmartPointer<vtkPolyData> DippingFault()
+{
+  const double o[3] = { 15, -5, -10 }, du[3] = { 0, 30.0 / 8, 0 },
+               dv[3] = { -10.0 / 8, 0, 20.0 / 8 };
+  return Sheet(9, o, du, dv);
+}
 } // namespace
 
 TEST(ChainMailObstacles, HorizonPulledDownStopsAboveTheLowerHorizon)
@@ -305,17 +326,9 @@ TEST(ChainMailObstacles, SlidingArrayKeepsTheCutOffLineOnTheFault)
   // leaning away below it; the last column ("OnFault") lies on the fault. Pulled down,
   // that column slides down the fault, at distance 0 from it (computed here from the
   // plane) within 1e-9 of the mean edge length (>= 1, the grid's spacing).
-  auto horizon = TriangleGridPolyData(11, 21, 1.0, {});
-  vtkNew<vtkUnsignedCharArray> onFault;
-  onFault->SetName("OnFault");
-  onFault->SetNumberOfTuples(horizon->GetNumberOfPoints());
-  onFault->Fill(0);
-  for (int j = 0; j < 21; ++j)
-    onFault->SetValue(j * 11 + 10, 1);
-  horizon->GetPointData()->AddArray(onFault);
-  const double o[3] = { 15, -5, -10 }, du[3] = { 0, 30.0 / 8, 0 },
-               dv[3] = { -10.0 / 8, 0, 20.0 / 8 };
-  auto fault = Sheet(9, o, du, dv);
+  auto horizon = CutOffHorizon();
+  auto fault = DippingFault();
+  auto* onFault = vtkUnsignedCharArray::SafeDownCast(horizon->GetPointData()->GetArray("OnFault"));
   auto fromFault = [](const double x[3]) { return (x[0] + 0.5 * x[2] - 10.0) / std::sqrt(1.25); };
 
   vtkNew<vtkChainMailDeformationFilter> f;
@@ -374,17 +387,8 @@ TEST(ChainMailObstacles, LastGraspDisplacementSaysWhereTheGraspLanded)
   // The horizon of SlidingArrayKeepsTheCutOffLineOnTheFault, grasped on its cut-off line
   // (sliding) and pulled straight down: the grasp slides down the fault x = 10 - 0.5 z,
   // fraction 1, but lands off rest + Displacement, on the fault's plane (computed here).
-  auto horizon = TriangleGridPolyData(11, 21, 1.0, {});
-  vtkNew<vtkUnsignedCharArray> onFault;
-  onFault->SetName("OnFault");
-  onFault->SetNumberOfTuples(horizon->GetNumberOfPoints());
-  onFault->Fill(0);
-  for (int j = 0; j < 21; ++j)
-    onFault->SetValue(j * 11 + 10, 1);
-  horizon->GetPointData()->AddArray(onFault);
-  const double o[3] = { 15, -5, -10 }, du[3] = { 0, 30.0 / 8, 0 },
-               dv[3] = { -10.0 / 8, 0, 20.0 / 8 };
-  auto fault = Sheet(9, o, du, dv);
+  auto horizon = CutOffHorizon();
+  auto fault = DippingFault();
   vtkNew<vtkChainMailDeformationFilter> f;
   f->SetInputData(horizon);
   f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
