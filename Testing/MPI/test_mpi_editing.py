@@ -14,39 +14,24 @@ GhostCellsGenerator. Checked:
 Usage: test_mpi_editing.py SCENE (surface or plane)."""
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+from mpi_driver import fail, one_row_per_point, run_ranks, show
 
 scene = sys.argv[1]
-here = os.path.dirname(os.path.abspath(__file__))
-env = dict(os.environ)
-env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")  # 3 ranks on 2 cores
-
-
-def fail(message):
-    print("FAILED: " + message)
-    sys.exit(1)
 
 
 def run(n, out, *args):
-    cmd = [env.get("MPIEXEC", "mpiexec"), "--allow-run-as-root", "--oversubscribe", "-n", str(n),
-           env.get("PVBATCH", "pvbatch"), "--sym", os.path.join(here, "mpi_edit.py"), scene, out] + list(args)
-    done = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=240)
-    if done.returncode != 0:
-        print(" ".join(cmd)); print(done.stdout[-3000:], done.stderr[-3000:])
+    cmd, done, _ = run_ranks(n, "mpi_edit.py", [scene, out] + list(args))
+    if done.returncode != 0:  # error lines are expected here: the logs list them
+        show(cmd, done)
         fail("%d ranks: exit %d" % (n, done.returncode))
     logs = [json.load(open(os.path.join(out, "rank%d.json" % r))) for r in range(n)]
     steps = len(logs[0]["last"])
-    shapes = [np.load(os.path.join(out, "step%d.npy" % s)) for s in range(steps)]
-    for s, rows in enumerate(shapes):
-        ids, first = np.unique(rows[:, 0], return_index=True)
-        for i in range(len(rows)):
-            if not np.array_equal(rows[i], rows[first[np.searchsorted(ids, rows[i, 0])]]):
-                fail("%d ranks, step %d: copies of point %d differ" % (n, s, rows[i, 0]))
-        shapes[s] = rows[first]
+    shapes = [one_row_per_point(np.load(os.path.join(out, "step%d.npy" % s)), n, ", step %d" % s)
+              for s in range(steps)]
     for key in ("last", "history", "errors", "grasp"):
         for r in range(1, n):
             if logs[r][key] != logs[0][key]:

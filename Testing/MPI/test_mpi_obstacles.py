@@ -8,21 +8,13 @@ a clearance, end closer than it to the ceiling's plane.
 Usage: test_mpi_obstacles.py [CLEARANCE]."""
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+from mpi_driver import expect_same, fail, run_clean
 
 clearance = sys.argv[1] if len(sys.argv) > 1 else "0"
-here = os.path.dirname(os.path.abspath(__file__))
-env = dict(os.environ)
-env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")  # 3 ranks on 2 cores
-
-
-def fail(message):
-    print("FAILED: " + message)
-    sys.exit(1)
 
 
 def crossings(rest, moved, tris):
@@ -51,14 +43,7 @@ results, stats = {}, {}
 with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as tmp:
     for n in (1, 2, 3):
         out = os.path.join(tmp, "n%d" % n)
-        cmd = [env.get("MPIEXEC", "mpiexec"), "--allow-run-as-root", "--oversubscribe", "-n", str(n),
-               env.get("PVBATCH", "pvbatch"), "--sym", os.path.join(here, "mpi_obstacles.py"), out,
-               clearance]
-        result = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=240)
-        errors = [line for line in (result.stdout + result.stderr).splitlines() if "ERR|" in line]
-        if result.returncode != 0 or errors:
-            print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
-            fail("%d ranks: exit %d, %d error lines" % (n, result.returncode, len(errors)))
+        run_clean(n, "mpi_obstacles.py", [out, clearance])
         rows = np.load(os.path.join(out, "result.npy"))
         ids, first = np.unique(rows[:, 0], return_index=True)
         results[n] = rows[first]
@@ -92,9 +77,7 @@ if crossed or below.min() < float(clearance):
 print("ok: %d displaced, %d held back, grasp at %.4f of its pull, 0 crossings, %.4g below"
       % (displaced, stats[1]["blocked"], stats[1]["fraction"], below.min()))
 for n in (2, 3):
-    if results[n].shape != one.shape or not np.array_equal(results[n], one):
-        diff = np.abs(results[n] - one).max() if results[n].shape == one.shape else "shape"
-        fail("%d ranks differ from 1 rank (max difference %s)" % (n, diff))
+    expect_same(results[n], one, n)
     for key in ("displaced", "blocked", "fraction", "landed"):
         if stats[n][key] != stats[1][key]:
             fail("%d ranks report %s %s, 1 rank %s" % (n, key, stats[n][key], stats[1][key]))

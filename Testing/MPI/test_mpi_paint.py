@@ -5,15 +5,12 @@ and 3 ranks must equal the 1-rank array bit for bit, with the same figures (dabs
 and rejected, values painted)."""
 import json
 import os
-import subprocess
-import sys
 import tempfile
 
 import numpy as np
+from mpi_driver import expect_same, fail, run_clean
 
-here = os.path.dirname(os.path.abspath(__file__))
-env = dict(os.environ)
-env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+
 def run(mode):
     """{ranks: rows}, {ranks: figures} of mpi_paint.py on 1, 2 and 3 ranks."""
     results, stats = {}, {}
@@ -21,17 +18,9 @@ def run(mode):
         for n in (1, 2, 3):
             out = os.path.join(tmp, "n%d" % n)
             os.makedirs(out)
-            cmd = [env.get("MPIEXEC", "mpiexec"), "--allow-run-as-root", "--oversubscribe", "-n",
-                   str(n), env.get("PVBATCH", "pvbatch"), "--sym", os.path.join(here, "mpi_paint.py"),
-                   out] + ([mode] if mode else [])
-            run = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=240)
-            lines = (run.stdout + run.stderr).splitlines()
             # The invalid dab is reported on every rank; nothing else may be.
-            errors = [line for line in lines if "ERR|" in line and "dabs were skipped" not in line]
-            if run.returncode != 0 or errors:
-                print(" ".join(cmd)); print(run.stdout[-3000:], run.stderr[-3000:])
-                print("FAILED: %d ranks: exit %d, %d error lines" % (n, run.returncode, len(errors)))
-                sys.exit(1)
+            run_clean(n, "mpi_paint.py", [out] + ([mode] if mode else []),
+                      expected=("dabs were skipped",))
             rows = np.load(os.path.join(out, "result.npy"))
             if mode == "noids":
                 # A seam point is in both pieces and owned by both by vtkGhostType (the
@@ -39,8 +28,7 @@ def run(mode):
                 rows = np.unique(rows, axis=0)
             keys = np.unique(rows[:, :-1], axis=0)
             if len(keys) != len(rows):
-                print("FAILED: %d ranks: a point owned twice" % n)
-                sys.exit(1)
+                fail("%d ranks: a point owned twice" % n)
             results[n] = rows
             with open(os.path.join(out, "stats.json")) as text:
                 stats[n] = json.load(text)
@@ -53,16 +41,11 @@ for mode in ("", "noids"):
     one = results[1]
     changed = int(np.count_nonzero(one[:, -1] != np.float32(0.4)))
     if changed < 100 or stats[1]["applied"] != 12 or stats[1]["rejected"] != 1:
-        print("FAILED: 1 rank painted %d points, %s" % (changed, stats[1]))
-        sys.exit(1)
+        fail("1 rank painted %d points, %s" % (changed, stats[1]))
     print("ok: 1 rank painted %d of %d points" % (changed, len(one)))
     for n in (2, 3):
-        if results[n].shape != one.shape or not np.array_equal(results[n], one):
-            diff = np.abs(results[n] - one).max() if results[n].shape == one.shape else "shape"
-            print("FAILED: %d ranks differ from 1 rank (max difference %s)" % (n, diff))
-            sys.exit(1)
+        expect_same(results[n], one, n)
         for key in ("applied", "rejected", "painted"):
             if stats[n][key] != stats[1][key]:
-                print("FAILED: %d ranks: %s %s, 1 rank %s" % (n, key, stats[n][key], stats[1][key]))
-                sys.exit(1)
+                fail("%d ranks: %s %s, 1 rank %s" % (n, key, stats[n][key], stats[1][key]))
         print("ok: %d ranks equal 1 rank bit for bit (%d values painted)" % (n, stats[n]["painted"]))

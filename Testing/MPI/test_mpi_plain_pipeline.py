@@ -13,17 +13,14 @@ Usage: test_mpi_plain_pipeline.py CASE, CASE one of
   cascadia-redistribute (the CRESCENT Cascadia interface, a TSurf file, pulled 80 km;
   skipped when ../shared/data/crescent-cfm is absent)."""
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+from mpi_driver import ENV, HERE, expect_same, fail, run_ranks, show
 from paraview.simple import *  # noqa: F401,F403
 
 case = sys.argv[1]
-here = os.path.dirname(os.path.abspath(__file__))
-env = dict(os.environ)
-env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")  # 3 ranks on 2 cores
 scene, _, pipeline = case.partition("-")
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())  # noqa: F405
 
@@ -42,15 +39,10 @@ def write_scene(path):
 
 
 def run(n, path, out):
-    cmd = [env.get("MPIEXEC", "mpiexec"), "--allow-run-as-root", "--oversubscribe", "-n", str(n),
-           env.get("PVBATCH", "pvbatch"), "--sym", os.path.join(here, "mpi_plain.py"),
-           pipeline or "redistribute", path, out]
-    done = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=280)
-    errors = [line for line in (done.stdout + done.stderr).splitlines() if "ERR|" in line]
-    return cmd, done, errors
+    return run_ranks(n, "mpi_plain.py", [pipeline or "redistribute", path, out], timeout=280)
 
 
-cascadia = os.path.join(here, "..", "..", "..", "shared", "data", "crescent-cfm",
+cascadia = os.path.join(HERE, "..", "..", "..", "shared", "data", "crescent-cfm",
                         "mccrory_2012_cascadia_interface.ts")
 if scene == "cascadia" and not os.path.exists(cascadia):
     print("skipped: %s is absent" % cascadia)
@@ -61,17 +53,17 @@ with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as t
     else:
         path = os.path.join(tmp, scene + (".vtu" if scene == "volume" else ".vtp"))
         write_scene(path)
-    # Parameters from the scene's bounds: grasp at the top middle, pull up by 8 % of the size.
+    # Parameters from the scene (to the ranks through the environment)'s bounds: grasp at the top middle, pull up by 8 % of the size.
     scene_file = OpenDataFile(path)  # noqa: F405
     scene_file.UpdatePipeline()
     lo_hi = scene_file.GetDataInformation().GetBounds()
     lo, hi = np.array(lo_hi[0::2]), np.array(lo_hi[1::2])
-    env["PLAIN_GRASP"] = " ".join(repr(x) for x in lo + np.array([0.5, 0.5, 1.0]) * (hi - lo))
+    ENV["PLAIN_GRASP"] = " ".join(repr(x) for x in lo + np.array([0.5, 0.5, 1.0]) * (hi - lo))
     pull = 80000.0 if scene == "cascadia" else 0.08 * float((hi - lo).max())  # UTM metres
-    env["PLAIN_PULL"] = " ".join(repr(x) for x in [0.0, 0.0, pull])
+    ENV["PLAIN_PULL"] = " ".join(repr(x) for x in [0.0, 0.0, pull])
     # Geodesic dabs: one across the middle (rank borders), one rigid spot off it.
     c, r = lo + 0.5 * (hi - lo), float((hi - lo).max())
-    env["PLAIN_DABS"] = " ".join(repr(float(x)) for x in
+    ENV["PLAIN_DABS"] = " ".join(repr(float(x)) for x in
                                  list(c) + [0.3 * r, 1.0, 0.7] + list(lo + 0.3 * (hi - lo)) + [0.15 * r, 0.0, 1.0])
     results, grasped = {}, {}
     for n in (1, 2, 3):
@@ -80,41 +72,31 @@ with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as t
         if scene == "split" and n > 1:
             named = [e for e in errors if "GlobalIds" in e and "split nodes" in e]
             if done.returncode != 0 or len(named) < n:
-                print(" ".join(cmd)); print(done.stdout[-3000:], done.stderr[-3000:])
-                print("FAILED: %d ranks: expected the split-node error on every rank, got %d" % (n, len(named)))
-                sys.exit(1)
+                show(cmd, done)
+                fail("%d ranks: expected the split-node error on every rank, got %d" % (n, len(named)))
             rows = np.load(os.path.join(out, "result.npy"))
             if np.any(rows[:, 0:3] != rows[:, 3:6]):
-                print("FAILED: %d ranks: refused, but points moved" % n)
-                sys.exit(1)
+                fail("%d ranks: refused, but points moved" % n)
             print("ok: %d ranks refuse the split nodes on every rank: %s" % (n, named[0][-160:]))
             continue
         if done.returncode != 0 or errors:
-            print(" ".join(cmd)); print(done.stdout[-3000:], done.stderr[-3000:])
-            print("FAILED: %d ranks: exit %d, %d error lines" % (n, done.returncode, len(errors)))
-            sys.exit(1)
+            show(cmd, done)
+            fail("%d ranks: exit %d, %d error lines" % (n, done.returncode, len(errors)))
         results[n] = np.load(os.path.join(out, "result.npy"))
         print([line for line in done.stdout.splitlines() if line.startswith("rank0")][0])
         grasped[n] = [line for line in done.stdout.splitlines() if line.startswith("grasp")][0]
     one = results[1]
     moved = int(np.count_nonzero(np.any(one[:, 0:3] != one[:, 3:6], axis=1)))
     if moved < 50:
-        print("FAILED: only %d points moved on 1 rank" % moved)
-        sys.exit(1)
+        fail("only %d points moved on 1 rank" % moved)
     print("ok: %d of %d points moved on 1 rank" % (moved, len(one)))
     if scene != "split" and len(np.unique(one[:, 0:3], axis=0)) != len(one):
-        print("FAILED: the scene has coincident points")
-        sys.exit(1)
+        fail("the scene has coincident points")
     for n in results:
         if n == 1:
             continue
-        if results[n].shape != one.shape or not np.array_equal(results[n], one):
-            diff = np.abs(results[n] - one).max() if results[n].shape == one.shape else (
-                "shape %s vs %s" % (results[n].shape, one.shape))
-            print("FAILED: %d ranks differ from 1 rank (max difference %s)" % (n, diff))
-            sys.exit(1)
+        expect_same(results[n], one, n)
         print("ok: %d ranks equal 1 rank bit for bit" % n)
         if grasped[n] != grasped[1] or "nan" in grasped[1]:
-            print("FAILED: LastGraspMalleability: %s on %d ranks, %s on 1" % (grasped[n], n, grasped[1]))
-            sys.exit(1)
+            fail("LastGraspMalleability: %s on %d ranks, %s on 1" % (grasped[n], n, grasped[1]))
         print("ok: %d ranks report the 1-rank %s" % (n, grasped[1]))

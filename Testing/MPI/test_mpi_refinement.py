@@ -10,25 +10,13 @@ by position (GraspMode Nearest To Position) must equal the 1-rank result.
 Usage: test_mpi_refinement.py SCENE (surface or slab)."""
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+from mpi_driver import expect_same, fail, one_row_per_point, run_clean, run_ranks, show
 
 scene = sys.argv[1]
-here = os.path.dirname(os.path.abspath(__file__))
-env = dict(os.environ)
-env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")  # 3 ranks on 2 cores
-
-
-def run(n, out, *extra):
-    cmd = [env.get("MPIEXEC", "mpiexec"), "--allow-run-as-root", "--oversubscribe", "-n", str(n),
-           env.get("PVBATCH", "pvbatch"), "--sym", os.path.join(here, "mpi_refine.py"), scene, out]
-    cmd += list(extra)
-    result = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=240)
-    errors = [line for line in (result.stdout + result.stderr).splitlines() if "ERR|" in line]
-    return cmd, result, errors
 
 
 def link_error(rows, edges):
@@ -58,19 +46,8 @@ results, stats = {}, {}
 with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as tmp:
     for n in (1, 2, 3):
         out = os.path.join(tmp, "n%d" % n)
-        cmd, result, errors = run(n, out)
-        if result.returncode != 0 or errors:
-            print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
-            print("FAILED: %d ranks: exit %d, %d error lines" % (n, result.returncode, len(errors)))
-            sys.exit(1)
-        rows = np.load(os.path.join(out, "result.npy"))
-        ids, first = np.unique(rows[:, 0], return_index=True)
-        for i in range(len(rows)):
-            j = first[np.searchsorted(ids, rows[i, 0])]
-            if not np.array_equal(rows[i, 1:], rows[j, 1:]):
-                print("FAILED: %d ranks: copies of point %d differ" % (n, rows[i, 0]))
-                sys.exit(1)
-        results[n] = rows[first]
+        run_clean(n, "mpi_refine.py", [scene, out])
+        results[n] = one_row_per_point(np.load(os.path.join(out, "result.npy")), n)
         with open(os.path.join(out, "stats.json")) as text:
             stats[n] = json.load(text)
         if n == 1:
@@ -81,51 +58,37 @@ with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as t
     # what works (or what is missing), the input undeformed.
     for option, wanted in (("Dykstra", "use RefinementSolver Envelope with ValidRegionFrame Axes"),
                            ("Obstacles", "refinement with Obstacles")):
-        cmd, result, errors = run(2, os.path.join(tmp, option), option)
+        cmd, result, errors = run_ranks(2, "mpi_refine.py", [scene, os.path.join(tmp, option), option])
         if result.returncode != 0 or len(errors) < 2 or not all(wanted in e for e in errors):
-            print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
-            print("FAILED: %s on 2 ranks: expected an error naming '%s' on each rank" % (option, wanted))
-            sys.exit(1)
+            show(cmd, result)
+            fail("%s on 2 ranks: expected an error naming '%s' on each rank" % (option, wanted))
         refused = np.load(os.path.join(tmp, option, "result.npy"))
         if not np.array_equal(refused[:, 1:4], refused[:, 4:7]):
-            print("FAILED: the refused update (%s) deformed its input" % option)
-            sys.exit(1)
+            fail("the refused update (%s) deformed its input" % option)
         print("ok: %s on 2 ranks refused on every rank (%s), input unchanged"
               % (option, errors[0].strip()[:120]))
 
     # The same point grasped by position on 2 ranks: the refinement fixes the grasp the
     # frame resolved (it fixed GraspPointId, -1 here, before the stages were shared).
-    cmd, result, errors = run(2, os.path.join(tmp, "nearest"), "Nearest")
-    if result.returncode != 0 or errors:
-        print(" ".join(cmd)); print(result.stdout[-3000:], result.stderr[-3000:])
-        print("FAILED: grasp by position on 2 ranks: exit %d, %d error lines"
-              % (result.returncode, len(errors)))
-        sys.exit(1)
+    run_clean(2, "mpi_refine.py", [scene, os.path.join(tmp, "nearest"), "Nearest"])
     rows = np.load(os.path.join(tmp, "nearest", "result.npy"))
     results["nearest"] = rows[np.unique(rows[:, 0], return_index=True)[1]]
 
 one = results[1]
 moved = int(np.count_nonzero(np.any(one[:, 1:4] != one[:, 4:7], axis=1)))
 if moved < 50 or stats[1]["refined"] < 1:
-    print("FAILED: %d points moved, %d refined on 1 rank" % (moved, stats[1]["refined"]))
-    sys.exit(1)
+    fail("%d points moved, %d refined on 1 rank" % (moved, stats[1]["refined"]))
 error = link_error(one, edges)
 print("ok: %d of %d points moved, %d refined; E_link %.3g L" % (moved, len(one), stats[1]["refined"], error))
 if not error <= 1e-9:
-    print("FAILED: E_link %.3g L > 1e-9 L after the envelope" % error)
-    sys.exit(1)
+    fail("E_link %.3g L > 1e-9 L after the envelope" % error)
 for n in (2, 3):
-    if results[n].shape != one.shape or not np.array_equal(results[n], one):
-        diff = np.abs(results[n] - one).max() if results[n].shape == one.shape else "shape"
-        print("FAILED: %d ranks differ from 1 rank (max difference %s)" % (n, diff))
-        sys.exit(1)
+    expect_same(results[n], one, n)
     if stats[n]["refined"] != stats[1]["refined"] or stats[n]["displaced"] != stats[1]["displaced"]:
-        print("FAILED: %d ranks report %s, 1 rank %s" % (n, stats[n], stats[1]))
-        sys.exit(1)
+        fail("%d ranks report %s, 1 rank %s" % (n, stats[n], stats[1]))
     print("ok: %d ranks equal 1 rank bit for bit (%d supersteps, %d bytes exchanged)"
           % (n, stats[n]["supersteps"], stats[n]["bytes"]))
 if not np.array_equal(results["nearest"], one):
-    print("FAILED: 2 ranks grasping by position differ from 1 rank grasping by id "
-          "(%d points differ)" % np.count_nonzero(np.any(results["nearest"] != one, axis=1)))
-    sys.exit(1)
+    fail("2 ranks grasping by position differ from 1 rank grasping by id "
+         "(%d points differ)" % np.count_nonzero(np.any(results["nearest"] != one, axis=1)))
 print("ok: 2 ranks grasping the point by position equal 1 rank grasping it by id")
