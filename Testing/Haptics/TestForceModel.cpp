@@ -236,6 +236,48 @@ TEST(ForceModel, AFaultResetsTheProxy)
   EXPECT_FALSE(proxy.placed());
 }
 
+TEST(ForceModel, AStaleSceneKeepsTheProxyAndItsContactWithTheLastPatch)
+{
+  // A stylus resting 2 mm under the floor; the graphics side stalls. The proxy is not
+  // forgotten: the last patch holds it, with its force, while the scene is stale (up to
+  // stale_contact_max), and the side it is on survives a longer stall too.
+  const DeviceLimits limits;
+  const ForceParams params;
+  SceneSnapshot scene = floor_scene();
+  ContactProxy proxy;
+  geoshaping::haptics::compute_force(at({ 0, 0, 0.01 }), scene, params, limits, proxy);
+  const ForceResult fresh =
+    geoshaping::haptics::compute_force(at({ 0, 0, -0.002 }), scene, params, limits, proxy);
+  ASSERT_TRUE(fresh.in_contact);
+  const double held = params.contact_stiffness * (0.002 + params.proxy_clearance);
+  for (const auto age : { std::chrono::milliseconds(150), std::chrono::milliseconds(1999) })
+  {
+    scene.stamp = now - age;
+    const ForceResult r =
+      geoshaping::haptics::compute_force(at({ 0, 0, -0.002 }), scene, params, limits, proxy);
+    EXPECT_EQ(r.status, ForceStatus::stale_scene);
+    EXPECT_TRUE(r.in_contact);
+    EXPECT_NEAR(r.force.z(), held, 1e-9);
+    EXPECT_LT((r.proxy - fresh.proxy).norm(), 1e-15);
+  }
+  // Stale beyond the hold: no force, the proxy still on top.
+  scene.stamp = now - std::chrono::seconds(3);
+  ForceResult r =
+    geoshaping::haptics::compute_force(at({ 0, 0, -0.004 }), scene, params, limits, proxy);
+  EXPECT_EQ(r.status, ForceStatus::stale_scene);
+  EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
+  EXPECT_TRUE(proxy.placed());
+  EXPECT_GT(proxy.position().z(), 0.0);
+  // A fresh scene again (another frame of the same floor): pushed back up from the side
+  // the stylus came from.
+  scene.stamp = now - std::chrono::milliseconds(10);
+  ++scene.sequence;
+  r = geoshaping::haptics::compute_force(at({ 0, 0, -0.002 }), scene, params, limits, proxy);
+  EXPECT_EQ(r.status, ForceStatus::ok);
+  EXPECT_TRUE(r.in_contact);
+  EXPECT_NEAR(r.force.z(), held, 1e-9);
+}
+
 TEST(ForceModel, ForceIsZeroWhenTheDeviceReportsAnError)
 {
   ForceInput in = at({ 0.05, 0, 0 });
@@ -353,7 +395,8 @@ TEST(ForceModel, ForceNeverExceedsTheMaximumAndIsNeverNaNOverRandomInputs)
     const ForceResult r = compute_force(in, scene, ForceParams(), limits);
     ASSERT_TRUE(r.force.allFinite()) << "sample " << i;
     ASSERT_LE(r.force.norm(), limits.max_force * (1 + 1e-12)) << "sample " << i;
-    if (r.status != ForceStatus::ok)
+    // Faults render zero; a stale scene may still hold contact (its coupling is off).
+    if (r.status == ForceStatus::device_error || r.status == ForceStatus::non_finite)
     {
       ASSERT_EQ(r.force, Eigen::Vector3d::Zero()) << "sample " << i;
     }

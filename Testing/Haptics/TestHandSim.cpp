@@ -335,3 +335,121 @@ TEST(HandSim, AGraspHeldTappedAndReleasedInjectsNoEnergy)
   EXPECT_LE(r.energy, 0.0);
   EXPECT_LT(r.rows.back().x.norm(), 2 * DeviceModel().resolution);
 }
+
+namespace
+{
+// A hand pressing 1.5 N on the fault step's upper plateau (z = 0 at y = -2 cm) while the
+// graphics side stalls for `frames` frame periods from 0.6 s; `scene` may move it meanwhile.
+struct Stall
+{
+  SimRun run;
+  HandSimOptions options;
+  std::size_t resume = 0; // the row of the first tick with a patch after the stall
+};
+Stall press_through_a_stall(double frame, int frames, const SceneAt& scene, double extra = 0.5)
+{
+  Stall s;
+  s.options.patch_period = frame;
+  s.options.stall_from = 0.6;
+  s.options.stall_until = 0.6 + frames * frame;
+  const double end = s.options.stall_until + extra;
+  s.run = run(scene, push({ 0, 0, -1.5 }, end), { 0.001, -0.02, 0.002 }, s.options);
+  s.resume = std::size_t(std::ceil(s.options.stall_until / DeviceModel().period - 1e-9));
+  return s;
+}
+
+// How deep under the plateau a hand the device can hold keeps the stylus: the contact
+// spring at max force, F_max / k_c (4.1 mm; docs/haptics.md, "A stale scene").
+double shell()
+{
+  return DeviceLimits().max_force / ForceParams().contact_stiffness;
+}
+} // namespace
+
+TEST(HandSim, AHandPressingOnThePlateauThroughAGuiStallKeepsContactAndNeverFallsThrough)
+{
+  // 60 frames/s stalled for 5 and 50 frames (80 ms, under the 100 ms timeout; 0.8 s), and
+  // a slow renderer at 10 frames/s (each snapshot valid for 3 frames) stalled for 5 (0.5 s).
+  const SceneAt plateau = still(grid(10, 8, fault_step));
+  for (const auto& [frame, frames] : { std::pair{ 0.016, 5 }, { 0.016, 50 }, { 0.1, 5 } })
+  {
+    const Stall s = press_through_a_stall(frame, frames, plateau);
+    const auto& rows = s.run.rows;
+    double deepest = 0.0, resume_step = 0.0;
+    for (std::size_t i = 400; i < rows.size(); ++i) // resting in contact from 0.4 s on
+    {
+      ASSERT_TRUE(rows[i].contact) << frame << " x " << frames << " at " << rows[i].t;
+      ASSERT_GT(rows[i].proxy.z(), 0.0) << rows[i].t;
+      deepest = std::max(deepest, -rows[i].x.z());
+      if (i >= s.resume && i < s.resume + 5)
+        resume_step = std::max(resume_step, (rows[i].force - rows[i - 1].force).norm());
+    }
+    std::cout << frames << " frames of " << frame * 1000 << " ms: deepest " << deepest * 1000
+              << " mm, step on resume " << resume_step << " N, largest beyond k |dx| "
+              << s.run.figures.max_step_excess << " N, injected " << s.run.energy << " J\n";
+    EXPECT_LE(deepest, shell());
+    EXPECT_NEAR(rows.back().x.z(), -1.5 / ForceParams().contact_stiffness, 0.0002);
+    EXPECT_NEAR(rows.back().force.z(), 1.5, 0.1);
+    EXPECT_LT(s.run.figures.max_step_excess, 1e-9);
+    EXPECT_LE(s.run.energy, 0.0);
+  }
+}
+
+TEST(HandSim, APlateauThatMovedDuringAStallCarriesTheProxyOntoItsNewPlace)
+{
+  // The plateau is 1 mm lower, or higher, when the 0.8 s stall ends: the first patch after
+  // carries the proxy by s = 1 mm (carry_over), a step of at most k_c (|dx| + s); the
+  // stylus stays on top of the surface where it is, within the shell.
+  const double k = ForceParams().contact_stiffness;
+  for (const double moved : { -0.001, 0.001 })
+  {
+    const SceneAt scene = [moved](double t, Soup& out)
+    {
+      out =
+        grid(10, 8, [&](double x, double y) { return fault_step(x, y) + (t > 1.0 ? moved : 0.0); });
+    };
+    const Stall s = press_through_a_stall(0.016, 50, scene);
+    const auto& rows = s.run.rows;
+    double worst = 0.0;
+    for (std::size_t i = 400; i < rows.size(); ++i)
+    {
+      const double surface = rows[i].t >= s.options.stall_until ? moved : 0.0;
+      ASSERT_TRUE(rows[i].contact) << moved << " at " << rows[i].t;
+      ASSERT_GT(rows[i].proxy.z(), surface) << rows[i].t;
+      ASSERT_LE(surface - rows[i].x.z(), shell()) << rows[i].t;
+      const double step = (rows[i].force - rows[i - 1].force).norm();
+      const double motion = (rows[i].x - rows[i - 1].x).norm() + 2 * DeviceModel().resolution;
+      worst = std::max(worst, step - k * motion);
+    }
+    std::cout << "plateau moved " << moved * 1000 << " mm: step beyond k |dx| " << worst
+              << " N (k s = " << k * std::abs(moved) << "), injected " << s.run.energy << " J\n";
+    EXPECT_LE(worst, k * std::abs(moved) + 1e-9);
+    EXPECT_NEAR(rows.back().x.z(), moved - 1.5 / k, 0.0002);
+    if (moved < 0.0)
+      EXPECT_LE(s.run.energy, 0.0); // a surface moving up does work on the hand; down, not
+  }
+}
+
+TEST(HandSim, AFreezeLongerThanTheContactHoldFadesOutAndBackInKeepingTheSide)
+{
+  // 10 frames/s frozen for 5 s: the contact is held 2 s (ForceParams::stale_contact_max),
+  // then fades out and the hand pushes the stylus down; the proxy stays on the plateau,
+  // and when the scene comes back the force fades in (at most F_max T / fade_time a tick
+  // beyond k_c |dx|) and lifts the stylus back onto the plateau.
+  const Stall s = press_through_a_stall(0.1, 50, still(grid(10, 8, fault_step)), 1.5);
+  const auto& rows = s.run.rows;
+  const ForceParams params;
+  const double fade_step = DeviceLimits().max_force * params.servo_period / params.fade_time;
+  double deepest = 0.0;
+  for (std::size_t i = 400; i < rows.size(); ++i)
+  {
+    ASSERT_GT(rows[i].proxy.z(), 0.0) << rows[i].t;
+    deepest = std::max(deepest, -rows[i].x.z());
+  }
+  std::cout << "5 s freeze: deepest " << deepest * 1000 << " mm, largest step beyond k |dx| "
+            << s.run.figures.max_step_excess << " N, injected " << s.run.energy << " J\n";
+  EXPECT_GT(deepest, shell());      // the hand got through while the force was off ...
+  EXPECT_TRUE(rows.back().contact); // ... and the side was kept: back on top
+  EXPECT_NEAR(rows.back().x.z(), -1.5 / params.contact_stiffness, 0.0002);
+  EXPECT_LE(s.run.figures.max_step_excess, fade_step + 1e-9);
+}

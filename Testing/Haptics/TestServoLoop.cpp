@@ -161,12 +161,112 @@ TEST(ServoLoop, StaleSceneFallsToZeroForce)
   scene.grasp_stiffness = 200.0;
   loop.publish_scene(scene); // published once, then the "pipeline" freezes
   ASSERT_TRUE(loop.start());
-  const DeviceSnapshot snap =
-    poll_until(loop, [](const DeviceSnapshot& s) { return s.status == ForceStatus::stale_scene; });
+  // The coupling fades out after the timeout (fade_time), to exactly zero.
+  const DeviceSnapshot snap = poll_until(loop, [](const DeviceSnapshot& s)
+    { return s.status == ForceStatus::stale_scene && s.force == Eigen::Vector3d::Zero(); });
   loop.stop();
   EXPECT_EQ(snap.status, ForceStatus::stale_scene);
   EXPECT_EQ(snap.force, Eigen::Vector3d::Zero());
   EXPECT_LE(device.max_force_sent(), 2.0 + 1e-9);
+}
+
+namespace
+{
+// ServoTick on a simulated clock: tick k at k ms, the stylus resting at `x`; `scene_at(k)`
+// says which scene the graphics side has published by then. Returns the forces.
+template<class SceneAt>
+std::vector<ForceResult> tick_resting(
+  const Eigen::Vector3d& x, int ticks, SceneAt scene_at, int first = 0, ServoTick* keep = nullptr)
+{
+  ServoTick own;
+  ServoTick& servo = keep ? *keep : own;
+  const Clock::time_point epoch = Clock::time_point(std::chrono::hours(1));
+  std::vector<ForceResult> forces;
+  for (int k = first; k < first + ticks; ++k)
+  {
+    DeviceSample sample;
+    sample.t = 1e-3 * k;
+    sample.position = x;
+    forces.push_back(
+      servo.tick(sample, true, epoch + std::chrono::milliseconds(k), scene_at(k), DeviceLimits()));
+  }
+  return forces;
+}
+
+// A 20 cm square at height z, published at tick `k` (its stamp), frame `sequence`.
+SceneSnapshot floor_at(double z, int k, std::uint64_t sequence)
+{
+  SceneSnapshot s;
+  s.stamp = Clock::time_point(std::chrono::hours(1)) + std::chrono::milliseconds(k);
+  s.sequence = sequence;
+  const Eigen::Vector3d a(-0.1, -0.1, z), b(0.1, -0.1, z), c(0.1, 0.1, z), d(-0.1, 0.1, z);
+  s.contact_triangles = { a, b, c, a, c, d };
+  return s;
+}
+
+double largest_step(const std::vector<ForceResult>& f, std::size_t from, std::size_t to)
+{
+  double step = 0.0;
+  for (std::size_t i = std::max<std::size_t>(from, 1); i < std::min(to, f.size()); ++i)
+    step = std::max(step, (f[i].force - f[i - 1].force).norm());
+  return step;
+}
+} // namespace
+
+TEST(ServoTick, AStylusUnderThePlateauKeepsContactThroughAStallOf5Or50Frames)
+{
+  // The stylus comes down to rest 2 mm under a floor re-sent every 16 ms; then the
+  // graphics side stalls for 5 or 50 frames (80 ms, 0.8 s) and resumes, the floor in
+  // place, 1 mm lower or 1 mm higher. Contact on every tick, the force held through the
+  // stall, and on resume a step of k_c times the floor's motion at most (carry_over).
+  const ForceParams params;
+  const double k = params.contact_stiffness;
+  for (const int frames : { 5, 50 })
+    for (const double moved : { 0.0, -0.001, 0.001 })
+    {
+      const int stall = 200, resume = stall + 16 * frames;
+      auto scene_at = [&](int t)
+      {
+        const int frame = t < stall ? t / 16 : t < resume ? (stall - 1) / 16 : t / 16;
+        return floor_at(t < resume ? 0.0 : moved, 16 * frame, std::uint64_t(frame + 1));
+      };
+      ServoTick servo;
+      tick_resting({ 0, 0, 0.01 }, 1, scene_at, 0, &servo); // from above
+      const auto f = tick_resting({ 0, 0, -0.002 }, resume + 200, scene_at, 1, &servo);
+      for (std::size_t i = 0; i < f.size(); ++i)
+        ASSERT_TRUE(f[i].in_contact) << frames << " frames, moved " << moved << ", tick " << i;
+      const double before = f[stall - 2].force.z();
+      EXPECT_NEAR(before, k * (0.002 + params.proxy_clearance), 1e-9);
+      EXPECT_LT(largest_step(f, 1, resume - 1), 1e-12) << frames; // rounding
+      EXPECT_LE(largest_step(f, resume - 1, f.size()), k * std::abs(moved) + 1e-9) << frames;
+      EXPECT_NEAR(f.back().force.z(), k * (0.002 + moved + params.proxy_clearance), 1e-9);
+      EXPECT_GT(f.back().proxy.z(), moved);
+    }
+}
+
+TEST(ServoTick, AStalledGraspFadesOutAndBackInWithoutAStep)
+{
+  // A grasp 1 cm from its anchor at 200 N/m (2 N); the scene stops for 0.5 s, then comes
+  // back. The coupling fades out after the timeout and back in, by at most
+  // F_max T / fade_time a tick: never the 2 N step of cutting it.
+  const ForceParams params;
+  auto scene_at = [](int t)
+  {
+    const int frame = t < 100 || t >= 600 ? t / 16 : 99 / 16;
+    SceneSnapshot s;
+    s.stamp = Clock::time_point(std::chrono::hours(1)) + std::chrono::milliseconds(16 * frame);
+    s.sequence = std::uint64_t(frame + 1);
+    s.grasping = true;
+    s.grasp_stiffness = 200.0;
+    return s;
+  };
+  const auto f = tick_resting({ 0.01, 0, 0 }, 1000, scene_at);
+  const double fade_step = DeviceLimits().max_force * params.servo_period / params.fade_time;
+  EXPECT_NEAR(f[50].force.x(), -2.0, 1e-9);
+  EXPECT_EQ(f[450].status, ForceStatus::stale_scene);
+  EXPECT_EQ(f[450].force, Eigen::Vector3d::Zero());
+  EXPECT_NEAR(f.back().force.x(), -2.0, 1e-9);
+  EXPECT_LE(largest_step(f, 1, f.size()), fade_step + 1e-12);
 }
 
 TEST(ServoLoop, RefusesToStartWhenTheDeviceDoesNotOpen)

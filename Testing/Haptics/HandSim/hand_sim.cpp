@@ -153,13 +153,15 @@ std::vector<TrajectoryRow> simulate_hand(const SceneAt& scene, const std::vector
   for (std::size_t k = 0; k < ticks; ++k)
   {
     const double t = double(k) * T;
-    if (t + 1e-12 >= next_patch)
+    const bool stalled = t >= options.stall_from && t < options.stall_until;
+    if (!stalled && t + 1e-12 >= next_patch)
     {
       scene(t, snapshot.contact_triangles);
       keep_nearest(snapshot.contact_triangles, x, options.max_triangles);
       snapshot.stamp = at(t);
       ++snapshot.sequence;
-      next_patch += options.patch_period;
+      while (next_patch <= t + 1e-12)
+        next_patch += options.patch_period;
     }
     DeviceSample sample;
     sample.t = t;

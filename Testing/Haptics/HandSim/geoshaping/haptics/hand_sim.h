@@ -66,6 +66,10 @@ struct HandSimOptions
   // interactor does each frame.
   double patch_period = 0.016;
   std::size_t max_triangles = 256;
+  // The graphics side stalls: no patch is published in [stall_from, stall_until) s (the
+  // servo keeps the last one, which goes stale); the first patch after is the scene then.
+  double stall_from = -1.0;
+  double stall_until = -1.0;
   int substeps = 10; // integration steps of the device per servo period
   // A grasp held for the whole run: the coupling spring toward `grasp_anchor`.
   bool grasping = false;
