@@ -52,37 +52,68 @@ ForceResult zero(ForceStatus why)
   return r;
 }
 
+// A spring's force f at fade g < 1: g times f clamped to max force, so a fade changes the
+// force by at most f_max a tick times the fade's step, and scales the spring's stiffness
+// and damping together (never above the passivity budget). g = 1: f as it is.
+Eigen::Vector3d faded(const Eigen::Vector3d& f, double g, double f_max)
+{
+  if (g >= 1.0)
+    return f;
+  const double n = f.allFinite() ? f.stableNorm() : HUGE_VAL;
+  return n > f_max ? Eigen::Vector3d(f * (g * f_max / n)) : Eigen::Vector3d(g * f);
+}
+
 } // namespace
 
 ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
-  const ForceParams& params, const DeviceLimits& limits, ContactProxy& proxy)
+  const ForceParams& params, const DeviceLimits& limits, ContactProxy& proxy, ForceFade* fade)
 {
-  if (!in.device_ok)
+  // A fault renders zero at once and forgets the proxy; the force then fades back in.
+  auto fault = [&](ForceStatus why)
   {
     proxy.reset();
-    return zero(ForceStatus::device_error);
-  }
-  const auto stale_after =
-    std::max(params.stale_after, std::min(scene.valid_for, params.stale_after_max));
-  if (scene.stamp == Clock::time_point() || in.now - scene.stamp > stale_after)
+    if (fade)
+      *fade = ForceFade{ 0.0, 0.0 };
+    return zero(why);
+  };
+  if (!in.device_ok)
+    return fault(ForceStatus::device_error);
+  if (scene.stamp == Clock::time_point())
   {
+    // Never published (a loop just started): nothing to render, nothing to fade from.
     proxy.reset();
     return zero(ForceStatus::stale_scene);
   }
   if (!in.position.allFinite() || !in.velocity.allFinite() ||
       (scene.grasping &&
         (!scene.grasp_anchor.allFinite() || !std::isfinite(scene.grasp_stiffness))))
+    return fault(ForceStatus::non_finite);
+
+  // A stale scene stops the coupling (the graphics side no longer follows the drag) but
+  // keeps the proxy and its contact with the last patch, the surface the frozen view
+  // still shows, up to stale_contact_max; each fades out, and back in on resume.
+  const auto stale_after =
+    std::max(params.stale_after, std::min(scene.valid_for, params.stale_after_max));
+  const auto age = in.now - scene.stamp;
+  const bool stale = age > stale_after;
+  const bool hold_contact = !stale || age <= params.stale_contact_max;
+  ForceFade gain{ stale ? 0.0 : 1.0, hold_contact ? 1.0 : 0.0 };
+  if (fade)
   {
-    proxy.reset();
-    return zero(ForceStatus::non_finite);
+    const double step = params.fade_time > 0.0 ? params.servo_period / params.fade_time : 1.0;
+    auto toward = [step](double g, double target)
+    { return std::clamp(target, g - step, g + step); };
+    fade->coupling = gain.coupling = toward(std::clamp(fade->coupling, 0.0, 1.0), gain.coupling);
+    fade->contact = gain.contact = toward(std::clamp(fade->contact, 0.0, 1.0), gain.contact);
   }
 
   proxy.carry_over(
     scene.sequence, scene.contact_triangles, params.proxy_reach, params.proxy_clearance);
   proxy.update(in.position, scene.contact_triangles, params.proxy_clearance, params.proxy_reach);
   const bool contact = proxy.in_contact();
+  const bool coupled = scene.grasping && gain.coupling > 0.0;
   const double b_max = std::max(0.0, limits.max_damping);
-  const double b_g = scene.grasping ? std::clamp(params.coupling_damping, 0.0, b_max) : 0.0;
+  const double b_g = coupled ? std::clamp(params.coupling_damping, 0.0, b_max) : 0.0;
   const double b_c = contact ? std::clamp(params.contact_damping, 0.0, b_max) : 0.0;
   // The stiffness the passivity rule leaves beside the damping; springs acting together
   // add up, so their sum is kept within it.
@@ -90,7 +121,7 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
     params.servo_period > 0.0
       ? std::max(0.0, limits.max_stiffness - 2.0 * (b_g + b_c) / params.servo_period)
       : 0.0;
-  double k_g = scene.grasping ? std::clamp(scene.grasp_stiffness, 0.0, budget) : 0.0;
+  double k_g = coupled ? std::clamp(scene.grasp_stiffness, 0.0, budget) : 0.0;
   double k_c = contact ? std::clamp(params.contact_stiffness, 0.0, budget) : 0.0;
   if (k_g + k_c > budget)
   {
@@ -100,23 +131,23 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   }
 
   ForceResult r;
+  r.status = stale ? ForceStatus::stale_scene : ForceStatus::ok;
   r.in_contact = contact;
   r.proxy = proxy.position();
-  if (scene.grasping)
-    r.force += k_g * (scene.grasp_anchor - in.position) - b_g * in.velocity;
+  const double f_max = std::max(0.0, limits.max_force);
+  if (coupled)
+    r.force +=
+      faded(k_g * (scene.grasp_anchor - in.position) - b_g * in.velocity, gain.coupling, f_max);
   if (contact)
   {
     const Eigen::Vector3d n = proxy.normal();
-    r.force += k_c * (proxy.position() - in.position) - b_c * in.velocity.dot(n) * n;
+    r.force += faded(
+      k_c * (proxy.position() - in.position) - b_c * in.velocity.dot(n) * n, gain.contact, f_max);
   }
 
-  const double f_max = std::max(0.0, limits.max_force);
   const double n = r.force.allFinite() ? r.force.stableNorm() : HUGE_VAL;
   if (!std::isfinite(n) || !proxy.position().allFinite())
-  {
-    proxy.reset();
-    return zero(ForceStatus::non_finite);
-  }
+    return fault(ForceStatus::non_finite);
   if (n > f_max)
     r.force *= f_max / n;
   return r;

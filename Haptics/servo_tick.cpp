@@ -12,6 +12,7 @@ ServoTick::ServoTick(const ForceParams& params, double velocity_filter_s)
 void ServoTick::reset()
 {
   this->proxy_.reset();
+  this->fade_ = ForceFade();
   this->velocity_.setZero();
   this->have_last_ = false;
 }
@@ -45,7 +46,7 @@ ForceResult ServoTick::tick(const DeviceSample& sample, bool device_ok, Clock::t
   in.velocity = this->velocity_;
   in.device_ok = device_ok;
   in.now = now;
-  return compute_force(in, scene, this->params_, limits, this->proxy_);
+  return compute_force(in, scene, this->params_, limits, this->proxy_, &this->fade_);
 }
 
 } // namespace geoshaping::haptics

@@ -32,11 +32,28 @@ struct ForceParams
   double proxy_reach = 0.005;    // m: how far a new patch's surface may have moved and
                                  // still carry the proxy with it (ContactProxy::carry_over)
 
-  // A scene snapshot older than this renders zero force, unless the snapshot says it
+  // A scene snapshot older than this is stale (compute_force), unless the snapshot says it
   // stays valid longer (SceneSnapshot::valid_for, a slow renderer), up to
-  // stale_after_max: a frozen graphics thread still zeroes the force within that.
+  // stale_after_max: a frozen graphics thread still stops the coupling within that.
   std::chrono::nanoseconds stale_after = std::chrono::milliseconds(100);
   std::chrono::nanoseconds stale_after_max = std::chrono::milliseconds(500);
+  // A stale scene's coupling fades out, but its contact patch (the surface the frozen view
+  // still shows) keeps holding the proxy, with its force, until the scene is this old;
+  // then that fades out too. The proxy is kept all along.
+  std::chrono::nanoseconds stale_contact_max = std::chrono::seconds(2);
+  // s for a force to fade from full to zero or back (ForceFade): 1 / 100 of it a tick at
+  // 1 kHz, at most 0.033 N a tick at 3.3 N max force.
+  double fade_time = 0.1;
+};
+
+// What compute_force keeps from tick to tick beside the proxy: the fraction (0 to 1) of
+// the coupling and of the contact force it renders. Each moves toward 1 while its force
+// may be rendered and toward 0 when not, by servo_period / fade_time a tick, so that a
+// stale scene or its return never cuts a force in or out in one tick.
+struct ForceFade
+{
+  double coupling = 1.0;
+  double contact = 1.0;
 };
 
 // Coupling stiffness for the malleability m in [0, 1] of the grasped region:
@@ -100,12 +117,22 @@ struct ForceResult
 // max force (direction kept, norm computed without overflow): a projection onto a ball,
 // so saturation never makes a step larger than the unsaturated force's.
 //
-// Faults give exactly zero (never NaN), with the reason in `status`, and reset the proxy
-// (nothing is known of the side the stylus is on when rendering resumes): device error,
-// a scene older than max(stale_after, min(scene.valid_for, stale_after_max)) (or never
-// published), any non-finite input, or a non-finite result (e.g. overflow from an absurd
-// position).
+// Faults give exactly zero (never NaN), with the reason in `status`, reset the proxy
+// (nothing is known of the side the stylus is on when rendering resumes) and the fades
+// (the force fades back in): device error, any non-finite input, or a non-finite result
+// (e.g. overflow from an absurd position). A scene never published gives zero and resets
+// the proxy.
+//
+// A stale scene (older than max(stale_after, min(scene.valid_for, stale_after_max))) is
+// not a fault for contact: status stale_scene, the coupling fades out, and the proxy is
+// kept and goes on against the scene's last patch, its force held until the scene is
+// stale_contact_max old, then faded out. When a fresh scene comes back the forces fade
+// back in, and carry_over() takes the proxy onto the new patch (a surface that moved
+// during the stall). A fading spring renders g times its force clamped to max force
+// (g the fade), so a fade adds at most max_force servo_period / fade_time to a tick's
+// force step. Without `fade` (a one-off evaluation) the fades are 1 or 0 at once.
 ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
-  const ForceParams& params, const DeviceLimits& limits, ContactProxy& proxy);
+  const ForceParams& params, const DeviceLimits& limits, ContactProxy& proxy,
+  ForceFade* fade = nullptr);
 
 } // namespace geoshaping::haptics

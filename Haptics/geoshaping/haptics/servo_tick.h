@@ -17,22 +17,24 @@ public:
   //   v <- v + dt / (dt + tau) ((x - x_last) / dt - v).
   explicit ServoTick(const ForceParams& params = {}, double velocity_filter_s = 0.005);
 
-  // Forgets the velocity and the proxy (a restarted loop).
+  // Forgets the velocity, the proxy and the fades (a restarted loop).
   void reset();
 
   // One tick: updates the velocity from `sample` (a failed read or a non-finite position
-  // zeroes it), then compute_force with the proxy kept here.
+  // zeroes it), then compute_force with the proxy and the fades kept here.
   ForceResult tick(const DeviceSample& sample, bool device_ok, Clock::time_point now,
     const SceneSnapshot& scene, const DeviceLimits& limits);
 
   const Eigen::Vector3d& velocity() const { return this->velocity_; }
   const ContactProxy& proxy() const { return this->proxy_; }
+  const ForceFade& fade() const { return this->fade_; }
   const ForceParams& params() const { return this->params_; }
 
 private:
   ForceParams params_;
   double velocity_filter_s_;
   ContactProxy proxy_;
+  ForceFade fade_;
   Eigen::Vector3d last_position_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
   double last_t_ = 0.0;
