@@ -18,7 +18,8 @@ using Clock = std::chrono::steady_clock;
 struct SceneSnapshot
 {
   Clock::time_point stamp{}; // when the graphics thread made it; older than the
-                             // staleness timeout => the servo renders zero force
+                             // staleness timeout => stale (compute_force): the coupling
+                             // fades out, contact with this patch is held a while
   std::uint64_t sequence = 0;
   // How long the graphics side expects this snapshot to stay current (about its frame
   // period, with margin); the force model honours it up to ForceParams::stale_after_max.
@@ -44,7 +45,8 @@ enum class ForceStatus : std::uint8_t
 {
   ok,           // force rendered from a fresh scene
   device_error, // the device reported an error: zero force
-  stale_scene,  // no scene, or older than the timeout: zero force
+  stale_scene,  // no scene (zero force), or older than the timeout: the coupling fades
+                // out, contact with the last patch held up to stale_contact_max
   non_finite    // an input (or the result) was NaN or infinite: zero force
 };
 
@@ -61,8 +63,9 @@ struct DeviceSnapshot
   bool in_contact = false;
   Eigen::Vector3d proxy = Eigen::Vector3d::Zero(); // the contact proxy, device coordinates
   std::uint64_t ticks = 0;                         // servo ticks so far
-  std::uint64_t zero_ticks = 0;                    // ticks that rendered zero because of a fault
-  std::uint64_t scene_sequence = 0;                // sequence of the scene snapshot used
+  std::uint64_t zero_ticks = 0;     // ticks not rendered from a fresh scene (status not ok): a
+                                    // fault's zero, or a stale scene's held contact and fades
+  std::uint64_t scene_sequence = 0; // sequence of the scene snapshot used
 };
 
 } // namespace geoshaping::haptics
