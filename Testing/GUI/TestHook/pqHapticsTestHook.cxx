@@ -33,12 +33,14 @@
 #include <QLabel>
 #include <QPixmap>
 #include <QPushButton>
+#include <QStringList>
 #include <QTextStream>
 #include <QTimer>
 
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <thread>
 #include <vector>
 
 void pqHapticsTestHook::installIfRequested(pqHapticsDockPanel* dock)
@@ -67,6 +69,12 @@ pqHapticsTestHook::pqHapticsTestHook(
   // such edit is a release's commit.
   QObject::connect(dock->interactor(), &pqHapticsInteractor::editsChanged, this,
     [this]() { this->Commits += this->Dock->interactor()->lastEditResult().changed ? 1 : 0; });
+  const QStringList stall = qEnvironmentVariable("GEOSHAPING_HAPTICS_STALL").split(',');
+  if (stall.size() == 2)
+  {
+    this->StallAt = stall[0].toDouble();
+    this->StallFor = stall[1].toDouble();
+  }
   auto* timer = new QTimer(this);
   QObject::connect(timer, &QTimer::timeout, this, &pqHapticsTestHook::poll);
   timer->start(100);
@@ -137,9 +145,10 @@ void pqHapticsTestHook::poll()
         duration = std::max(duration, trace.samples.back().t);
       }
     }
-    this->ReplaysEnd = std::chrono::steady_clock::now() +
-                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                         std::chrono::duration<double>(duration));
+    this->ReplaysStart = std::chrono::steady_clock::now();
+    this->ReplaysEnd =
+      this->ReplaysStart + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(duration));
     if (!this->Started && !this->Output.isEmpty())
     {
       this->writeResults();
@@ -181,6 +190,16 @@ void pqHapticsTestHook::poll()
       this->writeResults(); // a second after Start, nothing dragged
     }
     return;
+  }
+  if (this->StallAt >= 0.0 && std::chrono::steady_clock::now() - this->ReplaysStart >
+                                std::chrono::duration<double>(this->StallAt))
+  {
+    // A GUI stall: this thread renders nothing and publishes no scene meanwhile.
+    const auto before = std::chrono::steady_clock::now();
+    std::this_thread::sleep_for(std::chrono::duration<double>(this->StallFor));
+    this->Stalled =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count();
+    this->StallAt = -1.0;
   }
   // A few frames after the trace is over, so the last sample has been rendered.
   if (std::chrono::steady_clock::now() > this->ReplaysEnd && ++this->FinishedPolls >= 5)
@@ -388,6 +407,7 @@ void pqHapticsTestHook::writeResults()
   out << "displaced_at_release = " << f.displacedAtRelease << "\n";
   out << "max_contact_triangles = " << f.maxContactTriangles << "\n";
   out << "contact_ticks = " << f.contactTicks << "\n";
+  out << "gui_stall_seconds = " << this->Stalled << "\n";
   out << "recorded_samples = " << f.recordedSamples[0] << "\n";
   if (!this->FakeForce.isEmpty())
   {

@@ -17,6 +17,9 @@
 //   GEOSHAPING_HAPTICS_TOOL1=hold_and_turn  hand 1 holds and turns the object instead;
 //   GEOSHAPING_HAPTICS_REPLAY2=<trace>      hand 2 replays this trace with the Paint tool
 //                                           (two hands at once);
+//   GEOSHAPING_HAPTICS_STALL=<at>,<for>     the GUI stalls: <at> s into the replay the
+//                                           hook blocks the GUI thread for <for> s (no
+//                                           frame, no scene published; the servo runs on);
 //   GEOSHAPING_HAPTICS_TEST_OUTPUT=<prefix> when the replay is over, write <prefix>.png
 //                                           (the main window), <prefix>-view.png (the
 //                                           render view) and <prefix>.txt (key = value
@@ -64,6 +67,11 @@ private:
   // When the replayed traces are over: start() plus the longest trace's duration (the
   // replay devices' clocks start inside start(), so they are past their last sample then).
   std::chrono::steady_clock::time_point ReplaysEnd;
+  // GEOSHAPING_HAPTICS_STALL: when (since start()) and how long, in s; done once.
+  double StallAt = -1.0;
+  double StallFor = 0.0;
+  double Stalled = 0.0; // s the GUI thread was blocked, measured
+  std::chrono::steady_clock::time_point ReplaysStart;
   int Polls = 0;
   int ReadyPolls = 0;
   int MouseSteps = 0;
