@@ -58,10 +58,10 @@ def expected_drag(trace_path):
 # z = throw = 20 for x < 47) and its normal, the scene's +z.
 PLATEAU_POINT = [20.0, 30.0, 20.0]
 DEPTH = 0.002  # m, how far the stylus ends below the surface (device coordinates)
-# The GUI stalls (the hook blocks its thread) 4.6 s into the trace for 1 s, the stylus
-# resting below the plateau: longer than a scene stays valid (at most 0.5 s), shorter
-# than the servo holds contact against the last patch (2 s, docs/haptics.md).
-TOUCH_STALL = (4.6, 1.0)
+# The GUI stalls (the hook blocks its thread) 7.1 s into the trace for 1 s, the stylus
+# resting below the plateau since 6.5 s: longer than a scene stays valid (at most 0.5 s),
+# shorter than the servo holds contact against the last patch (2 s, docs/haptics.md).
+TOUCH_STALL = (7.1, 1.0)
 
 
 def write_trace(path, title, seconds, sample):
@@ -95,21 +95,22 @@ def write_touch_trace(path):
     def lerp(a, b, f):
         return [u + (v - u) * min(1.0, max(0.0, f)) for u, v in zip(a, b)]
 
-    # The button is held 0.5 s before the stylus moves, so the first frame that sees it
-    # lays the row out from `above`; then 1 s on the swatch: frames see both even at 2
-    # frames per second.
+    # The button is held 2 s before the stylus moves, so the first frame that sees it lays
+    # the row out from `above`; then 2 s on the swatch: frames see both even when a loaded
+    # machine leaves 1.5 s between two frames (0.5 s was missed at 4.8 frames/s under two
+    # busy loops: no frame came between 0.42 and 1.30 s).
     def sample(t):
         if t < 0.5:
             return above, 0
-        if t < 1.0:
-            return above, 2
         if t < 2.5:
-            return lerp(above, swatch, (t - 1.0) / 0.5), 2
-        if t < 3.0:
-            return lerp(swatch, above, (t - 2.5) / 0.5), 0
-        return lerp(above, below, t - 3.0), (2 if t >= 4.0 else 0)
+            return above, 2
+        if t < 5.0:
+            return lerp(above, swatch, (t - 2.5) / 0.5), 2
+        if t < 5.5:
+            return lerp(swatch, above, (t - 5.0) / 0.5), 0
+        return lerp(above, below, t - 5.5), (2 if t >= 6.5 else 0)
 
-    write_trace(path, "palette pick, then touch the plateau", 6.0, sample)
+    write_trace(path, "palette pick, then touch the plateau", 8.5, sample)
     return normal
 
 
