@@ -65,15 +65,14 @@ np.savez(%r + '-' + name + '-rank%%d.npz' %% rank,
 """ % os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_pvserver")
 
 
-
 def write_state(path):
     """The scene of the first session as a state file (written here, in pvpython): the
     pipeline a user builds (docs/mpi.md), the painted fault-step horizon through
     RedistributeDataSet into ChainMailDeformation, and after it the ProgrammableFilter
     that the test hook's "dump NAME" runs again: each server rank writes its piece of
     the deformation's output (points, global ids, ghost flags) to
-    GEOSHAPING_TEST_TMP/gui_pvserver-NAME-rank<r>.npz. (paraview --script with --url ran
-    the script before the connection: the pipeline did not reach the server.)"""
+    GEOSHAPING_TEST_TMP/gui_pvserver-NAME-rank<r>.npz. A state, so that File > Load
+    State on the server is what sets the scene up (--script works there too)."""
     from paraview import simple
     import geoshaping_presets
     from gui_setup_camera import CAMERA
@@ -285,7 +284,8 @@ def run(out, read_results):
         assert same(shapes[name], expected), "%s: the ranks' points differ from one process" % name
         if name == "drag":
             assert moved > 50 and int(figures["last_grasp_point_id"]) >= 0, figures
-            assert float(figures["last_grasp_malleability"]) == malleability, (figures, malleability)
+            grasped = float(figures["last_grasp_malleability"])
+            assert grasped == malleability, (figures, malleability)
         if name in ("undo", "loaded_undo"):
             assert moved == 0 and figures["edit_history"] == "0", name + " left a shape"
         if name in ("commit", "redo", "loaded"):
