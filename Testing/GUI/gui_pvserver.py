@@ -11,13 +11,15 @@ the drag moved points, the commit kept them, undo gave the rest points exactly, 
 loaded state shows the committed shape."""
 import os
 import shutil
-import socket
-import signal
 import subprocess
 import sys
-import time
 
 import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [os.path.join(HERE, "..", "Python"), os.path.join(HERE, "..", "MPI")]
+import pvserver_process  # noqa: E402
+from mpi_pipeline import COORDINATE_RANKS  # noqa: E402
 
 RANKS = 2
 # Generous limits, never waited out when all goes well: each step waits for a marker.
@@ -30,24 +32,6 @@ SESSION1 = ("press 0.3 0.5; move 0.3 0.52; move 0.3 0.54; move 0.3 0.56; move 0.
             "move 0.3 0.6; wait; dump drag; release; wait; dump commit; undo; wait; dump undo; "
             "redo; wait; dump redo; savestate")
 SESSION2 = "wait; dump loaded; undo; wait; dump loaded_undo"
-COORDINATE_RANKS = """
-import numpy as np
-from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray, vtk_to_numpy
-out = self.GetOutput()
-out.ShallowCopy(self.GetInput())
-xyz = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
-order = np.lexsort((xyz[:, 2], xyz[:, 1], xyz[:, 0]))
-s = xyz[order]
-new = np.ones(len(s), dtype=bool)
-new[1:] = np.any(s[1:] != s[:-1], axis=1)
-rank = np.empty(len(s), dtype=np.int64)
-rank[order] = np.cumsum(new) - 1
-gids = numpy_to_vtkIdTypeArray(rank, deep=1)
-gids.SetName("GlobalIds")
-out.GetPointData().SetGlobalIds(gids)
-"""
-
-
 DUMP = """name = 'start'
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -93,68 +77,17 @@ def write_state(path):
     simple.SaveState(path)
 
 
-def free_port():
-    s = socket.socket()
-    s.bind(("127.0.0.1", 0))
-    port = s.getsockname()[1]
-    s.close()
-    return port
-
-
-def stop(proc, seconds):
-    """Waits `seconds` for `proc` (started in its own session) to end, then kills its
-    process group: xvfb-run, Xvfb, mpiexec and the pvserver ranks, nothing else."""
-    try:
-        proc.wait(timeout=seconds)
-    except subprocess.TimeoutExpired:
-        pass
-    try:
-        os.killpg(proc.pid, signal.SIGKILL)
-    except ProcessLookupError:
-        pass
-    proc.wait()
-
-
-def start_server(tmp, tag):
-    """`mpiexec -n 2 pvserver` with the GeoShaping plugin (PV_PLUGIN_PATH) on a free
-    loopback port, in a clean Open MPI environment (as Python.pvserver_loopback starts
-    it), under its own xvfb-run: a pvserver without a display makes paraview show
-    "Server DISPLAY not accessible" in a modal box at the connection, which waits for a
-    click (ParaView 5.11's pqDefaultViewBehavior). Returns (process, port, log) once
-    the server accepts connections."""
-    env = {k: v for k, v in os.environ.items()
-           if not (k.startswith("OMPI_") or k.startswith("PMIX_") or k.startswith("OPAL_"))}
-    env["OMPI_MCA_orte_tmpdir_base"] = tmp
-    env["PV_PLUGIN_PATH"] = os.environ["PV_PLUGIN_PATH"].split(":")[0]  # not the GUI hook
-    for attempt in range(3):  # the port may be taken between free_port() and the bind
-        port = free_port()
-        cmd = ["xvfb-run", "-a", "-s", "-screen 0 640x480x24 -noreset",
-               os.environ.get("MPIEXEC") or "mpiexec", "--allow-run-as-root", "--oversubscribe",
-               "-n", str(RANKS), os.environ.get("PVSERVER", "pvserver"),
-               "--server-port=%d" % port, "--force-offscreen-rendering"]
-        log = open(os.path.join(tmp, "gui_pvserver-%s.server.log" % tag), "w+")
-        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, env=env,
-                                start_new_session=True)
-        deadline = time.time() + SERVER_START_SECONDS
-        while time.time() < deadline and proc.poll() is None:
-            log.seek(0)
-            if "Accepting connection" in log.read():
-                return proc, port, log
-            time.sleep(0.2)
-        stop(proc, 0)
-        log.seek(0)
-        text = log.read()
-        if "Address already in use" not in text:
-            break
-    raise RuntimeError("pvserver did not start: " + text)
-
-
 def session(out, tag, steps, state):
     """One paraview client on a new 2-rank server: it connects (--url), the test hook
     loads `state` once connected to both ranks, starts the dock with the mouse hand and
     plays `steps`. Returns the output prefix. The server is stopped whatever happens."""
     tmp = os.environ["GEOSHAPING_TEST_TMP"]
-    server, port, log = start_server(tmp, tag)
+    # Under xvfb-run: a pvserver without a display makes paraview 5.11 show "Server
+    # DISPLAY not accessible" in a modal box at the connection, which waits for a click.
+    server, port, log = pvserver_process.start(
+        RANKS, os.path.join(tmp, "gui_pvserver-%s.server.log" % tag),
+        plugin_path=os.environ["PV_PLUGIN_PATH"].split(":")[0],  # GeoShaping, not the hook
+        display=True, seconds=SERVER_START_SECONDS)
     try:
         env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out + "-" + tag,
                    GEOSHAPING_HAPTICS_REPLAY="mouse", GEOSHAPING_HAPTICS_MOUSE_SCRIPT=steps,
@@ -167,13 +100,13 @@ def session(out, tag, steps, state):
         try:
             text = client.communicate(timeout=CLIENT_SECONDS)[0]
         except subprocess.TimeoutExpired:
-            stop(client, 0)
+            pvserver_process.stop(client, 0)
             text = client.communicate()[0]
             print(text[-3000:])
             raise AssertionError("paraview (%s) did not end in %d s" % (tag, CLIENT_SECONDS))
         print(text[-3000:])
     finally:
-        stop(server, 30)  # pvserver ends when its client disconnects
+        pvserver_process.stop(server, 30)  # pvserver ends when its client disconnects
         log.seek(0)
         print("server (%s):" % tag, log.read()[-2000:])
     return out + "-" + tag
