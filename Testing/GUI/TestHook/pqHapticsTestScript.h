@@ -9,9 +9,10 @@
 //   radius R           types R into the dock's brush radius
 //   undo | redo        clicks the dock's Undo / Redo
 //   editundo | editredo  Edit > Undo / Redo (ParaView's undo stack, Ctrl+Z / Ctrl+Y)
-//   dump NAME          the server's ranks write their points (the --script's
-//                      ProgrammableFilter runs with `name = 'NAME'`), and <out>-NAME.txt
-//                      holds the deformation proxy's grasp and EditHistory
+//   dump NAME          the server's ranks write their points (the scene's
+//                      ProgrammableFilter, gui_pvserver.py, runs with `name = 'NAME'`),
+//                      and <out>-NAME.txt holds the deformation proxy's grasp,
+//                      Displacement and EditHistory
 //   savestate          File > Save State to <out>.pvsm
 //   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
