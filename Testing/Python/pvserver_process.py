@@ -45,7 +45,9 @@ def start(ranks, log_path, plugin_path=None, display=False, seconds=120):
     if plugin_path is not None:
         env["PV_PLUGIN_PATH"] = plugin_path
     text = ""
-    for _ in range(3):  # the port may be taken between free_port() and pvserver's bind
+    # Tried again when it ends before accepting: the port taken between free_port() and
+    # pvserver's bind, or xvfb-run -a of another test taking the same display.
+    for _ in range(3):
         port = free_port()
         cmd = [os.environ.get("PVSERVER") or "pvserver", "--server-port=%d" % port,
                "--force-offscreen-rendering"]
@@ -63,9 +65,10 @@ def start(ranks, log_path, plugin_path=None, display=False, seconds=120):
             if "Accepting connection" in log.read():
                 return proc, port, log
             time.sleep(0.2)
+        ended = proc.poll() is not None
         stop(proc, 0)
         log.seek(0)
         text = log.read()
-        if "Address already in use" not in text:
-            break
+        if not ended:
+            break  # no answer in `seconds`: not tried again
     raise RuntimeError("pvserver did not start: " + text)
