@@ -1,9 +1,9 @@
 """GUI test against `mpiexec -n 2 pvserver` on the loopback (docs/mpi.md, "The GUI client
-on a distributed server"): paraview connects (forward connection, --url), loads the
-pipeline a user builds (write_state) and the Haptics dock's mouse hand drags,
+on a distributed server"): paraview connects (forward connection, --url=cs://), loads
+the pipeline a user builds (write_state) and the Haptics dock's mouse hand drags,
 commits (the release), undoes and redoes through the test hook's mouse script, then saves
-the state; a second paraview, on a new 2-rank server, loads that state and undoes through
-the dock. After each step every server rank writes its piece ("dump"). Checked here:
+the state; a second paraview, to which a new 2-rank server connects (reverse connection,
+--url=csrc://), loads that state and undoes through the dock. After each step every server rank writes its piece ("dump"). Checked here:
 both ranks hold owned points, every copy of a point (owned or ghost, on either rank)
 equals its owner's bit for bit, and the gathered points equal what one process computes
 (this pvpython, builtin) from the same grasp, displacement and EditHistory, bit for bit;
@@ -77,39 +77,56 @@ def write_state(path):
     simple.SaveState(path)
 
 
-def session(out, tag, steps, state):
-    """One paraview client on a new 2-rank server: it connects (--url), the test hook
-    loads `state` once connected to both ranks, starts the dock with the mouse hand and
-    plays `steps`. Returns the output prefix. The server is stopped whatever happens."""
-    tmp = os.environ["GEOSHAPING_TEST_TMP"]
+def session(out, tag, steps, state, reverse):
+    """One paraview client on a new 2-rank server: it connects (--url=cs://), or with
+    `reverse` listens and the server connects to it (--url=csrc://, pvserver
+    --reverse-connection); the test hook loads `state` once connected to both ranks,
+    starts the dock with the mouse hand and plays `steps`. Returns the output prefix.
+    The client and the server are stopped whatever happens."""
+    prefix = out + "-" + tag
+    env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=prefix,
+               GEOSHAPING_HAPTICS_REPLAY="mouse", GEOSHAPING_HAPTICS_MOUSE_SCRIPT=steps,
+               GEOSHAPING_GUI_STATE=state, GEOSHAPING_GUI_SERVER_PROCESSES=str(RANKS),
+               GEOSHAPING_HAPTICS_TEST_TIMEOUT=str(HOOK_SECONDS))
+    client_log = open(prefix + ".client.log", "w+")
+    server_log = prefix + ".server.log"
     # Under xvfb-run: a pvserver without a display makes paraview 5.11 show "Server
     # DISPLAY not accessible" in a modal box at the connection, which waits for a click.
-    server, port, log = pvserver_process.start(
-        RANKS, os.path.join(tmp, "gui_pvserver-%s.server.log" % tag),
-        plugin_path=os.environ["PV_PLUGIN_PATH"].split(":")[0],  # GeoShaping, not the hook
-        display=True, seconds=SERVER_START_SECONDS)
+    server_options = dict(plugin_path=os.environ["PV_PLUGIN_PATH"].split(":")[0],  # no hook
+                          display=True, seconds=SERVER_START_SECONDS)
+
+    def start_client(url):
+        return subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 1024x768x24 -noreset",
+                                 os.environ["PARAVIEW"], "--dr", "--url=" + url], env=env,
+                                stdout=client_log, stderr=subprocess.STDOUT,
+                                start_new_session=True)
+
+    server = client = log = None
     try:
-        env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out + "-" + tag,
-                   GEOSHAPING_HAPTICS_REPLAY="mouse", GEOSHAPING_HAPTICS_MOUSE_SCRIPT=steps,
-                   GEOSHAPING_GUI_STATE=state, GEOSHAPING_GUI_SERVER_PROCESSES=str(RANKS),
-                   GEOSHAPING_HAPTICS_TEST_TIMEOUT=str(HOOK_SECONDS))
-        command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24 -noreset",
-                   os.environ["PARAVIEW"], "--dr", "--url=cs://127.0.0.1:%d" % port]
-        client = subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
-                                  stderr=subprocess.STDOUT, text=True, start_new_session=True)
+        if reverse:
+            port = pvserver_process.free_port()
+            client = start_client("csrc://localhost:%d" % port)
+            assert pvserver_process.wait_for(client_log, "Accepting connection", client,
+                                             SERVER_START_SECONDS), "paraview does not listen"
+            server, _, log = pvserver_process.start(RANKS, server_log, reverse_port=port,
+                                                    **server_options)
+        else:
+            server, port, log = pvserver_process.start(RANKS, server_log, **server_options)
+            client = start_client("cs://127.0.0.1:%d" % port)
         try:
-            text = client.communicate(timeout=CLIENT_SECONDS)[0]
+            client.wait(timeout=CLIENT_SECONDS)
         except subprocess.TimeoutExpired:
-            pvserver_process.stop(client, 0)
-            text = client.communicate()[0]
-            print(text[-3000:])
             raise AssertionError("paraview (%s) did not end in %d s" % (tag, CLIENT_SECONDS))
-        print(text[-3000:])
     finally:
-        pvserver_process.stop(server, 30)  # pvserver ends when its client disconnects
-        log.seek(0)
-        print("server (%s):" % tag, log.read()[-2000:])
-    return out + "-" + tag
+        for proc, seconds in ((client, 0), (server, 30)):  # pvserver ends with its client
+            if proc:
+                pvserver_process.stop(proc, seconds)
+        client_log.seek(0)
+        print("paraview (%s):" % tag, client_log.read()[-3000:])
+        if log:
+            log.seek(0)
+            print("server (%s):" % tag, log.read()[-2000:])
+    return prefix
 
 
 def read_figures(path):
@@ -185,9 +202,9 @@ def run(out, read_results):
     simple.LoadPlugin(os.path.join(os.environ["PV_PLUGIN_PATH"].split(":")[0], "GeoShaping.so"),
                       remote=False)
     write_state(out + "-scene.pvsm")
-    first = session(out, "edit", SESSION1, out + "-scene.pvsm")
+    first = session(out, "edit", SESSION1, out + "-scene.pvsm", reverse=False)
     assert os.path.exists(first + ".pvsm"), "the first session saved no state"
-    second = session(out, "loaded", SESSION2, first + ".pvsm")
+    second = session(out, "loaded", SESSION2, first + ".pvsm", reverse=True)
     # The dock's own count after each session: the drag committed, undone, redone; the
     # loaded edit undone.
     for prefix, edits in ((first, "Edits: 1, redoable 0"), (second, "Edits: 0, redoable 1")):
