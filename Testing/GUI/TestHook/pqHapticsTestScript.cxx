@@ -234,7 +234,7 @@ void pqHapticsTestScript::snapshot(const QString& name)
 void pqHapticsTestScript::dump(const QString& name)
 {
   // The server writes every rank's points: the ProgrammableFilter after the deformation
-  // (set up by the test's --script) runs again with `name` on its first line. The
+  // (in the test's scene, gui_pvserver.py) runs again with `name` on its first line. The
   // client writes what its proxy says (the edits, the grasp) beside them.
   pqPipelineSource* dumper = pqHapticsFindSource("ProgrammableFilter");
   pqPipelineSource* deformation = pqHapticsFindSource("ChainMailDeformation");
