@@ -310,6 +310,10 @@ def main():
     for suffix in (".txt", ".png", "-view.png", ".recorded.trace", ".pvsm"):
         if os.path.exists(out + suffix):
             os.remove(out + suffix)
+    if mode == "pvserver":
+        import gui_pvserver
+        gui_pvserver.run(out, read_results)
+        return
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
     if mode.startswith("brush_"):
         import brush_checks

@@ -22,7 +22,7 @@ controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pipeline import POINT_INDEX_IDS, owned_rows  # noqa: E402
+from mpi_pipeline import COORDINATE_RANKS, POINT_INDEX_IDS, owned_rows  # noqa: E402
 
 if scene == "surface":
     source = FaultStepHorizon()  # noqa: F405 (painted: a rigid fault block in soft beds)
@@ -43,23 +43,6 @@ else:
 # Global ids = the point ids of the undistributed data (all on rank 0). Not
 # GenerateGlobalIds: it merges coincident points, and a fault's two sides must stay apart.
 ids = ProgrammableFilter(Input=source)  # noqa: F405
-COORDINATE_RANKS = """
-import numpy as np
-from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray, vtk_to_numpy
-out = self.GetOutput()
-out.ShallowCopy(self.GetInput())
-if out.GetNumberOfPoints():
-    xyz = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
-    order = np.lexsort((xyz[:, 2], xyz[:, 1], xyz[:, 0]))
-    s = xyz[order]
-    new = np.ones(len(s), dtype=bool)
-    new[1:] = np.any(s[1:] != s[:-1], axis=1)
-    rank = np.empty(len(s), dtype=np.int64)
-    rank[order] = np.cumsum(new) - 1
-    gids = numpy_to_vtkIdTypeArray(rank, deep=1)
-    gids.SetName("GlobalIds")
-    out.GetPointData().SetGlobalIds(gids)
-"""
 ids.Script = COORDINATE_RANKS if noids else POINT_INDEX_IDS
 spread = RedistributeDataSet(Input=source if noids and nranks > 1 else ids)  # noqa: F405
 ghosts = GhostCellsGenerator(Input=spread)  # noqa: F405

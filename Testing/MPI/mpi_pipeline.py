@@ -16,6 +16,28 @@ for i in range(out.GetNumberOfPoints()):
 out.GetPointData().SetGlobalIds(gids)
 """
 
+# A ProgrammableFilter script: point GlobalIds = the rank of each point's coordinates (x,
+# then y, then z) among the distinct coordinates, computed by numpy: independently of
+# the filters' own numbering of points without GlobalIds (coordinate_ids.h), which it
+# must equal.
+COORDINATE_RANKS = """
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray, vtk_to_numpy
+out = self.GetOutput()
+out.ShallowCopy(self.GetInput())
+if out.GetNumberOfPoints():
+    xyz = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
+    order = np.lexsort((xyz[:, 2], xyz[:, 1], xyz[:, 0]))
+    s = xyz[order]
+    new = np.ones(len(s), dtype=bool)
+    new[1:] = np.any(s[1:] != s[:-1], axis=1)
+    rank = np.empty(len(s), dtype=np.int64)
+    rank[order] = np.cumsum(new) - 1
+    gids = numpy_to_vtkIdTypeArray(rank, deep=1)
+    gids.SetName("GlobalIds")
+    out.GetPointData().SetGlobalIds(gids)
+"""
+
 
 def distributed(source):
     """(ids, ghosts): `source` with GlobalIds = its point ids (on rank 0, the whole data),

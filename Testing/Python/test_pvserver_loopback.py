@@ -4,51 +4,16 @@ GlobalIds = the builtin point ids), bit for bit (docs/mpi.md): every rank's poin
 gathered on rank 0 and fetched, each copy of a point (owned or ghost, on either rank)
 equal to the builtin one."""
 import os
-import socket
-import subprocess
-import time
 
 import numpy as np
 
+import pvserver_process
 from geoshaping_testing import check, load, points, triangulated_plane
 from paraview import servermanager as sm
 from paraview.simple import *  # noqa: F401,F403
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 TMP = os.environ["GEOSHAPING_TEST_TMP"]
-
-
-def free_port():
-    s = socket.socket()
-    s.bind(("127.0.0.1", 0))
-    port = s.getsockname()[1]
-    s.close()
-    return port
-
-
-def start_server(ranks):
-    port = free_port()
-    cmd = [os.environ["PVSERVER"], "--server-port=%d" % port, "--force-offscreen-rendering"]
-    if ranks > 1:
-        cmd = [os.environ["MPIEXEC"], "--allow-run-as-root", "--oversubscribe", "-n", str(ranks)] + cmd
-    log = open(os.path.join(TMP, "pvserver-%d.log" % ranks), "w+")
-    # pvpython is itself an MPI singleton: its Open MPI/PMIx variables would make the
-    # child mpiexec believe it runs inside a job, so start it with a clean environment.
-    env = {k: v for k, v in os.environ.items()
-           if not (k.startswith("OMPI_") or k.startswith("PMIX_") or k.startswith("OPAL_"))}
-    env["OMPI_MCA_orte_tmpdir_base"] = TMP
-    proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, env=env)
-    deadline = time.time() + 60
-    while time.time() < deadline:
-        log.seek(0)
-        if "Accepting connection" in log.read():
-            return proc, port, log
-        if proc.poll() is not None:
-            break
-        time.sleep(0.2)
-    proc.kill()
-    log.seek(0)
-    raise RuntimeError("pvserver did not start: " + log.read())
 
 
 # Every rank's points and global ids sent to rank 0, which outputs them as one point
@@ -142,17 +107,13 @@ check(np.abs(builtin - rest).max() > 1.0, "builtin session deforms")
 
 for ranks in (1, 2):
     ranks_now[0] = ranks
-    proc, port, log = start_server(ranks)
+    proc, port, log = pvserver_process.start(ranks, os.path.join(TMP, "pvserver-%d.log" % ranks))
     try:
         Connect("127.0.0.1", port)
         remote, remote_rest = deformed(remote=True, distribute=ranks > 1)
         Disconnect()
     finally:
-        proc.terminate()
-        try:
-            proc.wait(timeout=20)
-        except subprocess.TimeoutExpired:
-            proc.kill()
+        pvserver_process.stop(proc, 20)  # pvserver ends when its client disconnects
     log.seek(0)
     server_log = log.read()
     if ranks == 1:

@@ -10,10 +10,13 @@
 #include "geoshaping/haptics/trace.h"
 
 #include <pqActiveObjects.h>
+#include <pqApplicationCore.h>
 #include <pqCoreUtilities.h>
 #include <pqDataRepresentation.h>
+#include <pqObjectBuilder.h>
 #include <pqPipelineSource.h>
 #include <pqRenderView.h>
+#include <pqServer.h>
 #include <pqView.h>
 
 #include <vtkAlgorithm.h>
@@ -82,8 +85,12 @@ pqHapticsTestHook::pqHapticsTestHook(
 
 void pqHapticsTestHook::poll()
 {
-  // A test must end: after 45 s write what there is (started/timed_out tell) and quit.
-  if (++this->Polls > 450 && !this->Output.isEmpty())
+  // A test must end: after 45 s (GEOSHAPING_HAPTICS_TEST_TIMEOUT seconds) write what
+  // there is (started/timed_out tell) and quit.
+  const int timeout = qEnvironmentVariableIsSet("GEOSHAPING_HAPTICS_TEST_TIMEOUT")
+                        ? qEnvironmentVariableIntValue("GEOSHAPING_HAPTICS_TEST_TIMEOUT")
+                        : 45;
+  if (++this->Polls > 10 * timeout && !this->Output.isEmpty())
   {
     this->TimedOut = true;
     this->writeResults();
@@ -91,9 +98,25 @@ void pqHapticsTestHook::poll()
   }
   if (!this->Started)
   {
-    if (!this->StateLoaded && pqHapticsUndoChecks::loadStateIfRequested())
+    if (!this->serverReady())
     {
-      this->StateLoaded = true;
+      return;
+    }
+    if (this->StateLoad == LoadStage::NotAsked && qEnvironmentVariableIsSet("GEOSHAPING_GUI_STATE"))
+    {
+      // Not inside this slot: Qt does not fire a timer again while its slot runs, and
+      // a load processes events, so the time-out above must stay alive meanwhile.
+      this->StateLoad = LoadStage::Loading;
+      QTimer::singleShot(0, this,
+        [this]()
+        {
+          pqHapticsUndoChecks::loadStateIfRequested();
+          this->StateLoad = LoadStage::Loaded;
+        });
+      return;
+    }
+    if (this->StateLoad == LoadStage::Loading)
+    {
       return;
     }
     // Wait for the pipeline (the --script that builds it runs after the plugin loads).
@@ -105,7 +128,8 @@ void pqHapticsTestHook::poll()
       this->ReadyPolls = 0;
       return;
     }
-    const bool ready = this->StateLoaded || qEnvironmentVariableIsSet("GEOSHAPING_GUI_SCENE_READY");
+    const bool ready = this->StateLoad == LoadStage::Loaded ||
+                       qEnvironmentVariableIsSet("GEOSHAPING_GUI_SCENE_READY");
     if (!ready && (!this->Output.isEmpty() || ++this->ReadyPolls < 10))
     {
       return;
@@ -209,6 +233,21 @@ void pqHapticsTestHook::poll()
       this->writeResults();
     }
   }
+}
+
+bool pqHapticsTestHook::serverReady() const
+{
+  // GEOSHAPING_GUI_SERVER_PROCESSES=N: paraview connects to an N-process pvserver
+  // (--url). The connection processes events, so this timer fires during it: nothing
+  // is done before the client is connected to all N processes.
+  const int processes = qEnvironmentVariableIntValue("GEOSHAPING_GUI_SERVER_PROCESSES");
+  if (processes <= 0)
+  {
+    return true;
+  }
+  pqServer* server = pqActiveObjects::instance().activeServer();
+  return server && server->isRemote() && server->getNumberOfPartitions() == processes &&
+         !pqApplicationCore::instance()->getObjectBuilder()->waitingForConnection();
 }
 
 void pqHapticsTestHook::dragMouse()
@@ -388,6 +427,11 @@ void pqHapticsTestHook::writeResults()
   const pqHapticsInteractor::Figures& f = interactor->figures();
   out << "started = " << int(this->Started) << "\n";
   out << "timed_out = " << int(this->TimedOut) << "\n";
+  if (pqServer* server = pqActiveObjects::instance().activeServer())
+  {
+    out << "server_remote = " << int(server->isRemote()) << "\n";
+    out << "server_processes = " << server->getNumberOfPartitions() << "\n";
+  }
   out << "dock_visible = " << int(this->Dock->isVisible()) << "\n";
   out << "dock_title = " << this->Dock->windowTitle() << "\n";
   out << "frames = " << f.frames << "\n";

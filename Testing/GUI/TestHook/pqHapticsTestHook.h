@@ -11,7 +11,13 @@
 //                                           the hook faults after 1 s (fakehd_inject_fault);
 //                                           "state": hand 1 is the mouse, not dragged,
 //                                           after GEOSHAPING_GUI_STATE=<file.pvsm> is
-//                                           loaded as File > Load State does;
+//                                           loaded as File > Load State does (also
+//                                           with "mouse": the scene, loaded before
+//                                           the dock starts);
+//   GEOSHAPING_GUI_SERVER_PROCESSES=N        paraview connects to an N-process pvserver
+//                                           (--url): the hook waits for that
+//                                           connection before loading or starting;
+//   GEOSHAPING_HAPTICS_TEST_TIMEOUT=<s>      the hook gives up after s seconds (45);
 //   GEOSHAPING_HAPTICS_MOUSE_SCRIPT=<steps>  with "mouse": the hook plays these steps
 //                                           instead of its drag (pqHapticsTestScript.h);
 //   GEOSHAPING_HAPTICS_TOOL1=hold_and_turn  hand 1 holds and turns the object instead;
@@ -47,6 +53,7 @@ private Q_SLOTS:
 
 private:
   pqHapticsTestHook(pqHapticsDockPanel* dock, const QString& trace, const QString& output);
+  bool serverReady() const;
   void dragMouse();
   void faultOpenHaptics();
   void writeResults();
@@ -62,7 +69,13 @@ private:
   QString FakeForce; // the fake device's last force after the fault, "x y z" N
   bool Started = false;
   bool TimedOut = false;
-  bool StateLoaded = false;
+  enum class LoadStage
+  {
+    NotAsked,
+    Loading,
+    Loaded
+  };
+  LoadStage StateLoad = LoadStage::NotAsked; // of GEOSHAPING_GUI_STATE
   int FinishedPolls = 0;
   // When the replayed traces are over: start() plus the longest trace's duration (the
   // replay devices' clocks start inside start(), so they are past their last sample then).

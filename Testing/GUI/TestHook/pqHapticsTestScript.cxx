@@ -7,6 +7,7 @@
 #include <pqApplicationCore.h>
 #include <pqPipelineSource.h>
 #include <pqRenderView.h>
+#include <pqSaveStateReaction.h>
 #include <pqUndoStack.h>
 #include <pqView.h>
 
@@ -19,6 +20,7 @@
 #include <vtkSMPropertyHelper.h>
 #include <vtkSMProxy.h>
 #include <vtkSMRenderViewProxy.h>
+#include <vtkSMSourceProxy.h>
 
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -96,6 +98,14 @@ bool pqHapticsTestScript::step()
   else if (verb == "snapshot" && words.size() > 1)
   {
     this->snapshot(words[1]);
+  }
+  else if (verb == "dump" && words.size() > 1)
+  {
+    this->dump(words[1]);
+  }
+  else if (verb == "savestate")
+  {
+    pqSaveStateReaction::saveState(this->Output + ".pvsm");
   }
   return false;
 }
@@ -218,5 +228,55 @@ void pqHapticsTestScript::snapshot(const QString& name)
   if (pqView* view = pqActiveObjects::instance().activeView())
   {
     view->widget()->grab().save(prefix + ".png");
+  }
+}
+
+void pqHapticsTestScript::dump(const QString& name)
+{
+  // The server writes every rank's points: the ProgrammableFilter after the deformation
+  // (in the test's scene, gui_pvserver.py) runs again with `name` on its first line. The
+  // client writes what its proxy says (the edits, the grasp) beside them.
+  pqPipelineSource* dumper = pqHapticsFindSource("ProgrammableFilter");
+  pqPipelineSource* deformation = pqHapticsFindSource("ChainMailDeformation");
+  if (!dumper || !deformation)
+  {
+    return;
+  }
+  const pqScopedUndoExclude dumping; // the test's dump is no step of the undo stack
+  vtkSMProxy* proxy = dumper->getProxy();
+  QStringList script = QString(vtkSMPropertyHelper(proxy, "Script").GetAsString()).split('\n');
+  script[0] = "name = '" + name + "'";
+  vtkSMPropertyHelper(proxy, "Script").Set(script.join('\n').toUtf8().constData());
+  proxy->UpdateVTKObjects();
+  vtkSMSourceProxy::SafeDownCast(proxy)->UpdatePipeline();
+  QFile file(this->Output + "-" + name + ".txt");
+  if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+  {
+    return;
+  }
+  QTextStream out(&file);
+  vtkSMProxy* chain = deformation->getProxy();
+  chain->UpdatePropertyInformation();
+  out << "grasp_mode = " << vtkSMPropertyHelper(chain, "GraspMode").GetAsInt() << "\n";
+  out << "grasp_point_id = " << vtkSMPropertyHelper(chain, "GraspPointId").GetAsIdType() << "\n";
+  out << "last_grasp_point_id = " << vtkSMPropertyHelper(chain, "LastGraspPointId").GetAsIdType()
+      << "\n";
+  out << "last_grasp_malleability = "
+      << QString::number(vtkSMPropertyHelper(chain, "LastGraspMalleability").GetAsDouble(), 'g', 17)
+      << "\n";
+  for (const char* vector : { "GraspPosition", "Displacement" })
+  {
+    out << vector << " =";
+    for (int k = 0; k < 3; ++k)
+    {
+      out << " " << QString::number(vtkSMPropertyHelper(chain, vector).GetAsDouble(k), 'g', 17);
+    }
+    out << "\n";
+  }
+  vtkSMPropertyHelper edits(chain, "EditHistory");
+  out << "edit_history = " << edits.GetNumberOfElements() << "\n";
+  for (unsigned int i = 0; i < edits.GetNumberOfElements(); ++i)
+  {
+    out << "edit_" << i << " = " << edits.GetAsString(i) << "\n";
   }
 }

@@ -9,6 +9,11 @@
 //   radius R           types R into the dock's brush radius
 //   undo | redo        clicks the dock's Undo / Redo
 //   editundo | editredo  Edit > Undo / Redo (ParaView's undo stack, Ctrl+Z / Ctrl+Y)
+//   dump NAME          the server's ranks write their points (the scene's
+//                      ProgrammableFilter, gui_pvserver.py, runs with `name = 'NAME'`),
+//                      and <out>-NAME.txt holds the deformation proxy's grasp,
+//                      Displacement and EditHistory
+//   savestate          File > Save State to <out>.pvsm
 //   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
 //                      brush, the paint lists' sizes, the dock's texts) and <out>-NAME.png
@@ -30,6 +35,7 @@ public:
 
 private:
   void snapshot(const QString& name);
+  void dump(const QString& name);
   void mouse(const QStringList& words);
 
   pqHapticsDockPanel* Dock;
