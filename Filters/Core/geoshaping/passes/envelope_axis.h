@@ -101,8 +101,10 @@ double EnvelopeAxis::run(Net& net, int axis)
   };
   for (index_t v : down_list_)
     combine(v);
+  // A vertex both runs labelled was combined above: a second combine would change nothing.
   for (index_t v : net.touched())
-    combine(v);
+    if (std::isnan(down_[std::size_t(v)]))
+      combine(v);
   for (index_t v : down_list_)
     down_[std::size_t(v)] = std::numeric_limits<double>::quiet_NaN();
   return check(net, axis);
