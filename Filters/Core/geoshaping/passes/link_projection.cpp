@@ -550,19 +550,24 @@ std::int32_t LinkProjector::envelope_links(index_t v)
 }
 
 // The passes' priority queue: a radix heap (Ahuja, Mehlhorn, Orlin and Tarjan 1990) on the
-// bits of the labels. Dijkstra pops labels in increasing order and pushes none below the
-// last popped (weights >= 0), so a monotone queue suffices: an entry sits in bucket
-// floor(log2(key ^ last)) + 1 and moves only to lower buckets, at most 64 times, and
-// typically once or twice; push is O(1), pop amortised O(1) here.
+// leading bits of the labels. Dijkstra pops labels in increasing order and pushes none
+// below the last popped (weights >= 0), so a monotone queue suffices: an entry sits in
+// bucket floor(log2(key ^ last)) + 1 and moves only to lower buckets; push is O(1), pop
+// amortised O(1). The key keeps the sign, the exponent and the 16 leading bits of the
+// significand: labels within a relative 2^-16 of each other share a key and pop in any
+// order among themselves (the result does not depend on the order, link_projection.h),
+// and an entry moves at most 28 times (4.4 times on average at the paper's scale, against
+// 6.4 with all 64 bits).
 namespace
 {
-// Order-preserving map of a double onto 64 bits (-0 taken as +0; no NaN reaches here).
+// Order-preserving map of a double onto its 28 leading bits (-0 taken as +0; no NaN
+// reaches here): a non-decreasing function of y.
 std::uint64_t radix_key(double y)
 {
   std::uint64_t bits;
   const double z = y + 0.0;
   std::memcpy(&bits, &z, sizeof bits);
-  return (bits >> 63) ? ~bits : bits | (std::uint64_t(1) << 63);
+  return ((bits >> 63) ? ~bits : bits | (std::uint64_t(1) << 63)) >> 36;
 }
 
 int radix_bucket(std::uint64_t x)

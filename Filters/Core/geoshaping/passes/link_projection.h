@@ -99,8 +99,8 @@ const char* solver_name(ProjectionSolver solver);
 // value bit for bit. Both are label-correcting Dijkstra runs seeded only by the vertices
 // with a violated link (or by the fixed vertices for the cones): a vertex's value
 // changes only when a neighbour forces it, so the cost is O(r) for the r vertices that
-// change and their neighbours (a radix heap on the labels' bits: Dijkstra pops labels in
-// increasing order, so each entry only moves down its 65 buckets), never O(mesh).
+// change and their neighbours (a radix heap on the labels' 28 leading bits: Dijkstra pops
+// labels in increasing order, so each entry only moves down its buckets), never O(mesh).
 // The order of the relaxations does not change the result, bit for bit: a pass ends at
 // the greatest y <= its start with y_a <= fl(y_b + ub(a, b)) for every link out of a seed
 // or a lowered vertex b (by induction over the assignments, any order's labels stay
@@ -295,7 +295,7 @@ private:
   std::int32_t envelope_links(index_t v);
   struct RadixEntry
   {
-    std::uint64_t key; // the label's bits, order-preserving
+    std::uint64_t key; // radix_key(value): the label's leading bits, order-preserving
     double value;
     index_t vertex;
   };
