@@ -8,7 +8,7 @@
 #include "geoshaping/parallel/partitioned_chainmail.h"
 #include "geoshaping/parallel/partitioned_envelope.h"
 #include "geoshaping/parallel/partitioned_geodesic.h"
-#include "in_process_exchange.h"
+#include "geoshaping/parallel/in_process_exchange.h"
 #include "test_meshes.h"
 #include "test_pieces.h"
 
