@@ -418,12 +418,14 @@ void ChainMailDeformer::push_neighbours()
   // The sponsors in id order, so that each candidate's entries come in sponsor id order
   // (SuperstepQueue::open): the superstep's own moves are in id order (sort_moves()),
   // ghosts and aliases received after them may not be.
-  const std::size_t first = superstep_begin_, count = moved_rec_.size() - first;
+  // The own moves [first, sorted_end_) are known to be in order: only what came after
+  // them is checked and sorted, then merged in.
+  const std::size_t first = superstep_begin_, end = moved_rec_.size(), count = end - first;
   const std::uint32_t* order = nullptr;
-  const bool known = sorted_begin_ == first && sorted_end_ == moved_rec_.size();
-  if (!known && !ids_sorted(first, moved_rec_.size()))
+  const std::size_t sorted = sorted_begin_ == first && sorted_end_ <= end ? sorted_end_ : first;
+  if (!ids_sorted(sorted > first ? sorted - 1 : first, end))
   {
-    sort_by_id(first, moved_rec_.size());
+    sort_by_id(first, end, sorted);
     order = by_id_.data();
   }
   const std::uint8_t* const pins = pinned_inner_.empty() ? nullptr : pinned_inner_.data();
@@ -469,13 +471,15 @@ bool ChainMailDeformer::ids_sorted(std::size_t begin, std::size_t end) const
   return true;
 }
 
-void ChainMailDeformer::sort_by_id(std::size_t begin, std::size_t end)
+void ChainMailDeformer::sort_by_id(std::size_t begin, std::size_t end, std::size_t sorted)
 {
   by_id_key_.resize(end - begin);
   for (std::size_t slot = begin; slot < end; ++slot)
     by_id_key_[slot - begin] = { global_id_inner(moved_rec_[slot].vertex),
       std::uint32_t(slot - begin) };
-  std::sort(by_id_key_.begin(), by_id_key_.end());
+  const auto middle = by_id_key_.begin() + std::ptrdiff_t(std::max(sorted, begin) - begin);
+  std::sort(middle, by_id_key_.end());
+  std::inplace_merge(by_id_key_.begin(), middle, by_id_key_.end());
   by_id_.resize(end - begin);
   for (std::size_t k = 0; k < by_id_.size(); ++k)
     by_id_[k] = by_id_key_[k].second;
@@ -486,7 +490,7 @@ void ChainMailDeformer::sort_moves(std::size_t begin)
   const std::size_t end = moved_rec_.size();
   if (end - begin > 1 && !ids_sorted(begin, end))
   {
-    sort_by_id(begin, end);
+    sort_by_id(begin, end, begin);
     moved_scratch_.assign(moved_rec_.begin() + std::ptrdiff_t(begin), moved_rec_.end());
     for (std::size_t k = 0; k < by_id_.size(); ++k)
     {

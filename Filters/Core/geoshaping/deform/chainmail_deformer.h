@@ -291,6 +291,16 @@ public:
   {
     moved_rec_[slot].sponsor_slot = sponsor < 0 ? -1 : slot_[inner(sponsor)];
   }
+  // The same given the sponsor's slot (its index in moved()).
+  void adopt_sponsor_slot(std::size_t slot, index_t sponsor_slot)
+  {
+    moved_rec_[slot].sponsor_slot = sponsor_slot;
+  }
+  // The last frame's moves by slot (index into moved()): displacement, root, and the
+  // slot of the sponsor (-1: the grasp, or a vertex moved by move_vertex()).
+  const Eigen::Vector3d& moved_displacement(std::size_t slot) const { return moved_rec_[slot].disp; }
+  const SuperstepRoot& moved_root(std::size_t slot) const { return moved_root_[slot]; }
+  index_t moved_sponsor_slot(std::size_t slot) const { return moved_rec_[slot].sponsor_slot; }
 
   // Bytes held beyond the input mesh (rest copy, state, adjacency, queue pool).
   std::size_t memory_bytes() const;
@@ -348,7 +358,8 @@ private:
   // end_superstep()'s pushes (Banded: FIFO Priority's bands and roots).
   template<bool Banded>
   void push_neighbours();
-  void sort_by_id(std::size_t begin, std::size_t end);
+  // by_id_: the slots [begin, end) in global id order, [begin, sorted) already in it.
+  void sort_by_id(std::size_t begin, std::size_t end, std::size_t sorted);
   // Puts the moves a superstep made from `begin` on into global id order (slots,
   // moved()) and passes them through the obstacle gate in that order.
   void sort_moves(std::size_t begin);

@@ -21,12 +21,18 @@ void InProcessHub::barrier()
   if (waiting_.fetch_add(1, std::memory_order_acq_rel) + 1 == pieces_)
   {
     waiting_.store(0, std::memory_order_relaxed);
-    generation_.store(generation + 1, std::memory_order_release);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      generation_.store(generation + 1, std::memory_order_release);
+    }
+    cv_.notify_all();
     return;
   }
-  for (int spin = 0; generation_.load(std::memory_order_acquire) == generation; ++spin)
-    if (spin >= 256)
-      std::this_thread::yield();
+  for (int spin = 0; spin < 2000; ++spin)
+    if (generation_.load(std::memory_order_acquire) != generation)
+      return;
+  std::unique_lock<std::mutex> lock(mutex_);
+  cv_.wait(lock, [&] { return generation_.load(std::memory_order_acquire) != generation; });
 }
 
 // Each collective: write this piece's slot of the current set, meet, read every slot.

@@ -7,14 +7,17 @@
 // Cost: one barrier per collective. The slots a collective writes alternate between two
 // sets, so a piece may write the next collective's slot while another still reads this
 // one's (a piece reaches collective k + 2 only after every piece has left collective k).
-// The barrier spins briefly, then yields the core: a frame runs a few hundred to tens of
-// thousands of rounds (two collectives each), too many for a sleep and a wake-up each,
-// and a waiting thread must not starve the others when pieces outnumber the free cores.
+// The barrier spins briefly, then sleeps: a frame runs a few hundred to tens of thousands
+// of rounds (two collectives each), too many for a sleep and a wake-up each when the cores
+// are free, and a waiting thread must not take the core from the one it waits for when
+// they are not.
 #include "geoshaping/parallel/exchange.h"
 
 #include <atomic>
+#include <condition_variable>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <vector>
 
 namespace geoshaping
@@ -32,6 +35,8 @@ private:
   int pieces_;
   alignas(64) std::atomic<int> waiting_{ 0 };
   alignas(64) std::atomic<std::uint64_t> generation_{ 0 };
+  std::mutex mutex_;
+  std::condition_variable cv_;
   std::vector<std::vector<std::int64_t>> gathered_[2];             // [set][piece]
   std::vector<std::vector<std::vector<MovedVertex>>> mail_[2];     // [set][from][to]
 };

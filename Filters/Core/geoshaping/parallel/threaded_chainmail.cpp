@@ -4,11 +4,22 @@
 #include "geoshaping/parallel/in_process_exchange.h"
 
 #include <algorithm>
+#include <ctime>
 #include <limits>
 #include <thread>
 
 namespace geoshaping
 {
+
+namespace
+{
+double thread_cpu_seconds()
+{
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+} // namespace
 
 struct ThreadedChainMail::Piece
 {
@@ -21,6 +32,7 @@ struct ThreadedChainMail::Piece
   std::vector<std::int64_t> keys;
   std::vector<std::uint32_t> slots;
   std::vector<std::size_t> run_offsets;
+  std::vector<index_t> whole_slot; // by slot of deformer.moved(): the whole's, -1 a ghost
 };
 
 // Defaults measured on two cores (docs/benchmarks.md, "Threaded frame").
@@ -87,9 +99,11 @@ FrameResult ThreadedChainMail::deform(
     }
     const std::int64_t g = whole.global_id(grasp);
     const int count = int(pieces_.size());
+    thread_seconds_.assign(std::size_t(count), 0.0);
     run_in_pieces(count,
       [&](int p, Exchange& exchange)
       {
+        const double start = thread_cpu_seconds();
         Piece& piece = *pieces_[std::size_t(p)];
         piece.result = piece.partition.deform(g, displacement, exchange);
         if (!piece.result.ok) // the same on every piece
@@ -107,32 +121,30 @@ FrameResult ThreadedChainMail::deform(
           }
           piece.run_offsets.push_back(piece.keys.size());
         }
+        piece.whole_slot.assign(moved.size(), -1);
         exchange.all_gather({});
+        // The supersteps split into `count` ranges of about equal moves; each thread
+        // merges its range's runs and writes them into the whole deformer.
+        const Share share = share_of(p, count);
+        const std::size_t m = share.total, begin = share.begin, end = share.end;
         if (p == 0)
         {
-          merge();
-          whole.begin_adopted_frame(order_.size());
+          order_.resize(m);
+          whole.begin_adopted_frame(m);
         }
         exchange.all_gather({});
-        // Each thread writes its share of the whole deformer's slots, then (once every
-        // move is in) their sponsors.
-        const std::size_t m = order_.size();
-        const std::size_t begin = m * std::size_t(p) / std::size_t(count);
-        const std::size_t end = m * std::size_t(p + 1) / std::size_t(count);
-        for (std::size_t k = begin; k < end; ++k)
-        {
-          const Piece& from = *pieces_[order_[k].first];
-          const index_t v = from.deformer.moved()[order_[k].second];
-          whole.adopt_move(k, from.global[std::size_t(v)], from.deformer.displacement(v),
-            from.deformer.root(v));
-        }
+        merge(whole, share);
         exchange.all_gather({});
         for (std::size_t k = begin; k < end; ++k)
         {
           const Piece& from = *pieces_[order_[k].first];
-          const index_t s = from.deformer.sponsor(from.deformer.moved()[order_[k].second]);
-          whole.adopt_sponsor(k, s < 0 ? -1 : from.global[std::size_t(s)]);
+          const index_t s = from.deformer.moved_sponsor_slot(order_[k].second);
+          if (s < 0 || from.whole_slot[std::size_t(s)] >= 0)
+            whole.adopt_sponsor_slot(k, s < 0 ? -1 : from.whole_slot[std::size_t(s)]);
+          else
+            whole.adopt_sponsor(k, from.global[std::size_t(from.deformer.moved()[std::size_t(s)])]);
         }
+        thread_seconds_[std::size_t(p)] = thread_cpu_seconds() - start;
       });
     if (pieces_[0]->result.ok)
     {
@@ -155,22 +167,73 @@ FrameResult ThreadedChainMail::deform(
   return r;
 }
 
-void ThreadedChainMail::merge()
+ThreadedChainMail::Share ThreadedChainMail::share_of(int p, int count) const
+{
+  std::vector<std::pair<std::uint32_t, std::size_t>> steps; // (superstep, moves)
+  for (const auto& piece : pieces_)
+  {
+    const auto& runs = piece->partition.runs();
+    for (std::size_t r = 0; r < runs.size(); ++r)
+      steps.emplace_back(runs[r].superstep, piece->run_offsets[r + 1] - piece->run_offsets[r]);
+  }
+  std::sort(steps.begin(), steps.end());
+  Share share;
+  for (const auto& step : steps)
+    share.total += step.second;
+  share.begin = share.end = share.total;
+  if (share.total == 0)
+    return share;
+  // A superstep goes to the thread whose share of [0, total) holds its first move.
+  std::size_t seen = 0;
+  bool mine = false;
+  for (std::size_t k = 0; k < steps.size(); seen += steps[k++].second)
+  {
+    if (k > 0 && steps[k].first == steps[k - 1].first)
+      continue;
+    const std::size_t t = seen * std::size_t(count) / share.total;
+    if (t == std::size_t(p) && !mine)
+    {
+      mine = true;
+      share.from_step = steps[k].first;
+      share.begin = seen;
+    }
+    else if (t > std::size_t(p))
+    {
+      if (mine)
+      {
+        share.to_step = steps[k].first;
+        share.end = seen;
+      }
+      return share;
+    }
+  }
+  return share;
+}
+
+void ThreadedChainMail::merge(ChainMailDeformer& whole, const Share& share)
 {
   // By superstep; inside one, the pieces' runs (each in global id order) merged by id.
-  order_.clear();
   const std::size_t count = pieces_.size();
-  std::vector<std::size_t> run(count, 0), at(count), end(count);
+  std::vector<std::size_t> run(count), at(count), end(count);
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    const auto& runs = pieces_[p]->partition.runs();
+    run[p] = std::size_t(std::lower_bound(runs.begin(), runs.end(), share.from_step,
+                           [](const PartitionedChainMail::Run& r, std::uint32_t step)
+                           { return r.superstep < step; }) -
+                         runs.begin());
+  }
+  std::size_t k = share.begin;
   for (;;)
   {
-    std::uint32_t step = std::numeric_limits<std::uint32_t>::max();
+    std::uint32_t step = share.to_step;
     for (std::size_t p = 0; p < count; ++p)
     {
       const auto& runs = pieces_[p]->partition.runs();
       if (run[p] < runs.size())
         step = std::min(step, runs[run[p]].superstep);
     }
-    if (step == std::numeric_limits<std::uint32_t>::max())
+    if (step >= share.to_step)
       return;
     for (std::size_t p = 0; p < count; ++p)
     {
@@ -184,7 +247,7 @@ void ThreadedChainMail::merge()
         ++run[p];
       }
     }
-    for (;;)
+    for (;; ++k)
     {
       std::size_t best = count;
       for (std::size_t p = 0; p < count; ++p)
@@ -193,7 +256,12 @@ void ThreadedChainMail::merge()
           best = p;
       if (best == count)
         break;
-      order_.emplace_back(std::uint32_t(best), pieces_[best]->slots[at[best]++]);
+      Piece& from = *pieces_[best];
+      const std::uint32_t slot = from.slots[at[best]++];
+      order_[k] = { std::uint32_t(best), slot };
+      from.whole_slot[slot] = index_t(k);
+      whole.adopt_move(k, from.global[std::size_t(from.deformer.moved()[slot])],
+        from.deformer.moved_displacement(slot), from.deformer.moved_root(slot));
     }
   }
 }

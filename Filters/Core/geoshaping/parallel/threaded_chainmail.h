@@ -65,14 +65,27 @@ public:
   bool last_threaded() const { return last_threaded_; }
   std::size_t supersteps() const { return last_supersteps_; }
   std::size_t rounds() const { return last_rounds_; }
+  // The CPU seconds each thread spent on the last threaded frame (its piece's frame, its
+  // share of the write-back; not the time it slept at a barrier): the frame's length on
+  // cores of its own is about the largest, plus the barriers' latency.
+  const std::vector<double>& thread_seconds() const { return thread_seconds_; }
 
 private:
   struct Piece;
   bool predicts_threaded(const ChainMailDeformer& whole, index_t grasp,
     const Eigen::Vector3d& displacement) const;
   void build(const ChainMailDeformer& whole, int pieces);
-  // The pieces' owned moves in the whole deformer's order (piece, slot of its moved()).
-  void merge();
+  // A thread's share of the write-back: the supersteps [from_step, to_step), which are
+  // the whole deformer's slots [begin, end) of `total`.
+  struct Share
+  {
+    std::uint32_t from_step = ~0u, to_step = ~0u;
+    std::size_t begin = 0, end = 0, total = 0;
+  };
+  Share share_of(int thread, int threads) const;
+  // Writes the pieces' owned moves of a share into the whole deformer in its order (by
+  // superstep, inside one by global id), and order_ for them.
+  void merge(ChainMailDeformer& whole, const Share& share);
 
   int threads_ = 0;
   std::size_t threshold_;
@@ -87,6 +100,7 @@ private:
   std::size_t last_supersteps_ = 0;
   std::size_t last_rounds_ = 0;
   bool last_threaded_ = false;
+  std::vector<double> thread_seconds_;
 };
 
 } // namespace geoshaping
