@@ -82,7 +82,7 @@ std::size_t expect_threaded_equals_one_thread(const Scene& s, bool ids, QueueKin
   for (std::size_t f = 0; f < frames.size(); ++f)
   {
     const std::string what = std::string(queue_name(queue)) + " " + frame_name(frame) + ", " +
-                              std::to_string(threads) + " threads, frame " + std::to_string(f);
+                             std::to_string(threads) + " threads, frame " + std::to_string(f);
     const FrameResult rg = driver.deform(threaded, frames[f].grasp, frames[f].pull);
     const FrameResult rw = plain.deform(frames[f].grasp, frames[f].pull);
     ran_threaded += driver.last_threaded();
@@ -112,8 +112,8 @@ TEST(ThreadedChainMail, PaintedGridEqualsOneThreadOnOneToFourThreads)
   for (QueueKind q : { QueueKind::fifo, QueueKind::fifo_priority })
     for (int threads = 1; threads <= 4; ++threads)
     {
-      const std::size_t ran = expect_threaded_equals_one_thread(
-        s, true, q, ValidRegionFrame::axes, threads, frames, 37);
+      const std::size_t ran =
+        expect_threaded_equals_one_thread(s, true, q, ValidRegionFrame::axes, threads, frames, 37);
       // The first frame has no prediction; the rest go threaded when threads > 1.
       EXPECT_EQ(ran, threads > 1 ? frames.size() - 1 : 0u);
     }

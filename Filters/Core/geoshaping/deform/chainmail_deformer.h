@@ -298,7 +298,10 @@ public:
   }
   // The last frame's moves by slot (index into moved()): displacement, root, and the
   // slot of the sponsor (-1: the grasp, or a vertex moved by move_vertex()).
-  const Eigen::Vector3d& moved_displacement(std::size_t slot) const { return moved_rec_[slot].disp; }
+  const Eigen::Vector3d& moved_displacement(std::size_t slot) const
+  {
+    return moved_rec_[slot].disp;
+  }
   const SuperstepRoot& moved_root(std::size_t slot) const { return moved_root_[slot]; }
   index_t moved_sponsor_slot(std::size_t slot) const { return moved_rec_[slot].sponsor_slot; }
 
@@ -412,10 +415,10 @@ private:
   std::vector<std::uint8_t> sliding_;       // by internal id; empty when none
   double last_fraction_ = 1.0;              // of the last gated move
   std::size_t blocked_ = 0;
-  bool rigid_split_ = false;        // a component holds a ghost (build_rigid_components)
+  bool rigid_split_ = false; // a component holds a ghost (build_rigid_components)
   std::uint64_t revision_ = 0;
-  std::uint32_t superstep_ = 0;     // the current superstep of the frame
-  std::size_t superstep_begin_ = 0; // slot of its first move
+  std::uint32_t superstep_ = 0;                   // the current superstep of the frame
+  std::size_t superstep_begin_ = 0;               // slot of its first move
   std::size_t sorted_begin_ = 0, sorted_end_ = 0; // slots sort_moves() left in id order
 };
 

@@ -11,7 +11,8 @@ InProcessHub::InProcessHub(int pieces)
   for (unsigned s = 0; s < 2; ++s)
   {
     gathered_[s].resize(std::size_t(pieces));
-    mail_[s].assign(std::size_t(pieces), std::vector<std::vector<MovedVertex>>(std::size_t(pieces)));
+    mail_[s].assign(
+      std::size_t(pieces), std::vector<std::vector<MovedVertex>>(std::size_t(pieces)));
   }
 }
 

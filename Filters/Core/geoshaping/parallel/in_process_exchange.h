@@ -37,8 +37,8 @@ private:
   alignas(64) std::atomic<std::uint64_t> generation_{ 0 };
   std::mutex mutex_;
   std::condition_variable cv_;
-  std::vector<std::vector<std::int64_t>> gathered_[2];             // [set][piece]
-  std::vector<std::vector<std::vector<MovedVertex>>> mail_[2];     // [set][from][to]
+  std::vector<std::vector<std::int64_t>> gathered_[2];         // [set][piece]
+  std::vector<std::vector<std::vector<MovedVertex>>> mail_[2]; // [set][from][to]
 };
 
 class InProcessExchange : public Exchange

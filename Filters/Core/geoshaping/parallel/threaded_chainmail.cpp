@@ -72,8 +72,8 @@ bool ThreadedChainMail::predicts_threaded(
   return threads() > 1 && (q == QueueKind::fifo || q == QueueKind::fifo_priority) &&
          !whole.obstacles() && last_moved_ > 0 && last_moved_ >= threshold_ &&
          double(last_moved_) >= per_superstep_ * double(last_supersteps_) && grasp >= 0 &&
-         grasp < whole.size() && displacement.allFinite() &&
-         whole.rest_local(grasp).allFinite() && !whole.pinned(grasp);
+         grasp < whole.size() && displacement.allFinite() && whole.rest_local(grasp).allFinite() &&
+         !whole.pinned(grasp);
 }
 
 FrameResult ThreadedChainMail::deform(
@@ -85,8 +85,7 @@ FrameResult ThreadedChainMail::deform(
   if (predicts_threaded(whole, grasp, displacement))
   {
     const int pieces = threads();
-    if (built_for_ != &whole || built_revision_ != whole.revision() ||
-        built_pieces_ != pieces)
+    if (built_for_ != &whole || built_revision_ != whole.revision() || built_pieces_ != pieces)
       build(whole, pieces);
   }
   if (!pieces_.empty() && predicts_threaded(whole, grasp, displacement))
@@ -218,10 +217,10 @@ void ThreadedChainMail::merge(ChainMailDeformer& whole, const Share& share)
   for (std::size_t p = 0; p < count; ++p)
   {
     const auto& runs = pieces_[p]->partition.runs();
-    run[p] = std::size_t(std::lower_bound(runs.begin(), runs.end(), share.from_step,
-                           [](const PartitionedChainMail::Run& r, std::uint32_t step)
-                           { return r.superstep < step; }) -
-                         runs.begin());
+    run[p] = std::size_t(
+      std::lower_bound(runs.begin(), runs.end(), share.from_step,
+        [](const PartitionedChainMail::Run& r, std::uint32_t step) { return r.superstep < step; }) -
+      runs.begin());
   }
   std::size_t k = share.begin;
   for (;;)
@@ -352,8 +351,7 @@ void ThreadedChainMail::build(const ChainMailDeformer& whole, int pieces)
       // The rest positions exactly (x above, rounded, only places the piece's layout):
       // the same arithmetic as the whole mesh's.
       for (std::size_t l = 0; l < local; ++l)
-        piece.deformer.set_rest(
-          index_t(l), whole.rest_local(global[l]), Eigen::Vector3d::Zero());
+        piece.deformer.set_rest(index_t(l), whole.rest_local(global[l]), Eigen::Vector3d::Zero());
       piece.deformer.set_malleability(malleability.data());
       piece.deformer.set_pinned(pinned ? pins.data() : nullptr);
     });

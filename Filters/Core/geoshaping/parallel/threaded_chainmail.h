@@ -42,7 +42,7 @@ public:
   ThreadedChainMail();
   ~ThreadedChainMail();
 
-  // Threads a large frame runs on: 1 turns threading off; 0 (the default) is the
+  // Threads a large frame runs on: 1 (the default) turns threading off; 0 is the
   // hardware's concurrency.
   void set_threads(int threads);
   int threads() const;
@@ -72,8 +72,8 @@ public:
 
 private:
   struct Piece;
-  bool predicts_threaded(const ChainMailDeformer& whole, index_t grasp,
-    const Eigen::Vector3d& displacement) const;
+  bool predicts_threaded(
+    const ChainMailDeformer& whole, index_t grasp, const Eigen::Vector3d& displacement) const;
   void build(const ChainMailDeformer& whole, int pieces);
   // A thread's share of the write-back: the supersteps [from_step, to_step), which are
   // the whole deformer's slots [begin, end) of `total`.
@@ -87,7 +87,7 @@ private:
   // superstep, inside one by global id), and order_ for them.
   void merge(ChainMailDeformer& whole, const Share& share);
 
-  int threads_ = 0;
+  int threads_ = 1;
   std::size_t threshold_;
   double per_superstep_;
   index_t block_;
