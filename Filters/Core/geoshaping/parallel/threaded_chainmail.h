@@ -16,7 +16,8 @@
 // turn, so a grasp's region falls on every piece in about equal parts wherever it lies),
 // each piece with its one ring of ghosts. They are built (O(mesh log mesh), in parallel)
 // on the first threaded frame after the whole deformer's revision() or the thread count
-// changed; each frame copies the transfer function, queue and region shape.
+// changed (a commit or an edit changes it too); each frame copies the transfer function,
+// queue and region shape. They hold about the whole deformer's memory again.
 //
 // The switch: a frame runs threaded when the previous frame (one thread or several)
 // displaced at least threshold() vertices and at least per_superstep() per superstep
