@@ -118,6 +118,9 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DefaultMalleability: " << this->DefaultMalleability << "\n";
   os << indent << "CandidateQueue: "
      << geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "ThreadedFrameThreshold: " << this->ThreadedFrameThreshold << "\n";
+  os << indent << "ThreadedFrameWidth: " << this->ThreadedFrameWidth << "\n";
   os << indent << "ValidRegionFrame: "
      << geoshaping::frame_name(static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame))
      << "\n";

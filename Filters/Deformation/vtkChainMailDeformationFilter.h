@@ -170,6 +170,21 @@ public:
   ///@}
 
   ///@{
+  /// Threads a large frame runs on in one process (geoshaping/parallel/threaded_chainmail.h):
+  /// 1 (the default) one thread; 0 every core; n > 1 that many. A frame runs threaded when
+  /// the previous one displaced at least ThreadedFrameThreshold vertices and at least
+  /// ThreadedFrameWidth per superstep, with the FIFO or FIFO Priority queue and no
+  /// obstacles; the result is the same bit for bit either way. The default is off: on the two cores
+  /// measured the threaded frame is slower (docs/benchmarks.md, "Threaded frame").
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  vtkSetClampMacro(ThreadedFrameThreshold, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(ThreadedFrameThreshold, vtkIdType);
+  vtkSetClampMacro(ThreadedFrameWidth, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ThreadedFrameWidth, double);
+  ///@}
+
+  ///@{
   /// Shape of each vertex's valid region (geoshaping/deform/valid_region.h): AXES (default), the
   /// paper's box aligned with the coordinate axes; LINK, a cylinder aligned with the rest
   /// link (stretch and compression along it, shear across it), so rotating the mesh and
@@ -288,6 +303,8 @@ public:
   vtkIdType GetNumberOfExaminedCandidates() { return this->Statistics.NumberOfExaminedCandidates; }
   double GetLastDeformationMilliseconds() { return this->Statistics.LastDeformationMilliseconds; }
   vtkIdType GetLastGraspPointId() { return this->Statistics.LastGraspPointId; }
+  /// Threads the last frame ran on (1 unless it ran threaded, see NumberOfThreads).
+  int GetLastFrameThreads() { return this->Statistics.LastFrameThreads; }
   double GetLastGraspMalleability() { return this->Statistics.LastGraspMalleability; }
   ///@}
 
@@ -416,6 +433,9 @@ protected:
   double DefaultMalleability = 0.5;
   int CandidateQueue = FIFO_PRIORITY;
   int ValidRegionFrame = AXES;
+  int NumberOfThreads = 1;
+  vtkIdType ThreadedFrameThreshold = 100000;
+  double ThreadedFrameWidth = 256.0;
   double StretchRange[2] = { 1.0, 2.0 };
   double CompressionRange[2] = { 1.0, 0.5 };
   double ShearRange[2] = { 0.0, 0.5 };
@@ -437,6 +457,7 @@ protected:
     vtkIdType NumberOfDisplacedPoints = 0;
     vtkIdType NumberOfExaminedCandidates = 0;
     double LastDeformationMilliseconds = 0.0;
+    int LastFrameThreads = 1;
     vtkIdType LastGraspPointId = -1;
     double LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
     int NumberOfRefinementSweeps = 0;

@@ -460,7 +460,11 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       state.Deformer.reset();
       return;
     }
-    r = state.Deformer.deform(v, d);
+    state.Threads.set_threads(this->NumberOfThreads);
+    state.Threads.set_threshold(std::size_t(this->ThreadedFrameThreshold));
+    state.Threads.set_per_superstep(this->ThreadedFrameWidth);
+    r = state.Threads.deform(state.Deformer, v, d);
+    this->Statistics.LastFrameThreads = state.Threads.last_threaded() ? state.Threads.threads() : 1;
   }
   this->Statistics.LastDeformationMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

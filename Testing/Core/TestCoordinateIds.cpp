@@ -4,7 +4,7 @@
 // points, negative coordinates, -0 and an empty piece; and the owner of each point: the
 // lowest piece that claims a copy of it (none when no piece claims it).
 #include "geoshaping/parallel/coordinate_ids.h"
-#include "in_process_exchange.h"
+#include "geoshaping/parallel/in_process_exchange.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // geoshaping::EditSession: the EditHistory list and its commands (docs/editing.md).
 #include "geoshaping/edit/edit_session.h"
+#include "geoshaping/parallel/in_process_exchange.h"
 #include "geoshaping/parallel/partitioned_chainmail.h"
-#include "in_process_exchange.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

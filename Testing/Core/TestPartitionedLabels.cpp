@@ -5,10 +5,10 @@
 //   after a partitioned ChainMail frame and from random starts with pins, rigid vertices
 //   and a grasp;
 // - the geodesic brush reach (partitioned_geodesic.h) against GeodesicReach.
+#include "geoshaping/parallel/in_process_exchange.h"
 #include "geoshaping/parallel/partitioned_chainmail.h"
 #include "geoshaping/parallel/partitioned_envelope.h"
 #include "geoshaping/parallel/partitioned_geodesic.h"
-#include "in_process_exchange.h"
 #include "test_meshes.h"
 #include "test_pieces.h"
 

@@ -1,13 +1,10 @@
 #include "test_pieces.h"
 
-#include "in_process_exchange.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
 #include <set>
-#include <thread>
 
 namespace geoshaping::testing
 {
@@ -173,21 +170,6 @@ std::vector<PaintedPiece> split(const PaintedMesh& m, const std::vector<int>& ow
     out.push_back(std::move(painted));
   }
   return out;
-}
-
-void run_in_pieces(int pieces, const std::function<void(int, Exchange&)>& body)
-{
-  InProcessHub hub(pieces);
-  std::vector<std::thread> threads;
-  for (int p = 0; p < pieces; ++p)
-    threads.emplace_back(
-      [&, p]
-      {
-        InProcessExchange ex(hub, p);
-        body(p, ex);
-      });
-  for (auto& t : threads)
-    t.join();
 }
 
 } // namespace geoshaping::testing

@@ -4,6 +4,7 @@
 // ghosts, every vertex with its global id. Shared by the partitioned tests and the
 // report's distributed section; O(pieces x n log n), for tests only.
 #include "geoshaping/mesh/adjacency.h"
+#include "geoshaping/parallel/in_process_exchange.h"
 #include "geoshaping/parallel/partitioned_chainmail.h"
 #include "test_meshes.h"
 
@@ -85,8 +86,7 @@ std::vector<int> striped_owner(const std::vector<double>& xyz, int pieces);
 // Each vertex owned by a random one of `choices`.
 std::vector<int> random_owner(index_t n, const std::vector<int>& choices, unsigned seed);
 
-// Runs body(piece, exchange) for pieces 0 .. pieces - 1, each in its own thread, with an
-// InProcessExchange of one shared hub (the tests' stand-in for mpiexec -n pieces).
-void run_in_pieces(int pieces, const std::function<void(int piece, Exchange& exchange)>& body);
+// The tests' stand-in for mpiexec -n pieces (in_process_exchange.h).
+using geoshaping::run_in_pieces;
 
 } // namespace geoshaping::testing

@@ -1,8 +1,10 @@
 #include "geoshaping/deform/chainmail_deformer.h"
 
 #include "geoshaping/deform/valid_region.h"
+#include "geoshaping/mesh/morton.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -15,18 +17,6 @@ namespace geoshaping
 
 namespace
 {
-// Spreads the low 21 bits of x so that two zero bits separate each (Morton interleave).
-std::uint64_t spread3(std::uint64_t x)
-{
-  x &= 0x1fffff;
-  x = (x | x << 32) & 0x1f00000000ffffULL;
-  x = (x | x << 16) & 0x1f0000ff0000ffULL;
-  x = (x | x << 8) & 0x100f00f00f00f00fULL;
-  x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
-  x = (x | x << 2) & 0x1249249249249249ULL;
-  return x;
-}
-
 // A hint to start loading a cache line that is needed soon.
 inline void prefetch(const void* p)
 {
@@ -75,6 +65,7 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
 void ChainMailDeformer::set_mesh(
   const double* xyz, index_t n, Adjacency adjacency, const Eigen::Vector3d& origin)
 {
+  touch();
   const Adjacency adj = std::move(adjacency); // the internal copy replaces it below
   {
     std::lock_guard<std::mutex> lock(caller_adjacency_mutex());
@@ -92,18 +83,7 @@ void ChainMailDeformer::set_mesh(
   for (index_t v = 0; v < n; ++v)
   {
     const Eigen::Vector3d p(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
-    std::uint64_t code = ~std::uint64_t(0);
-    if (p.allFinite())
-    {
-      code = 0;
-      for (int i = 0; i < 3; ++i)
-      {
-        const double f = extent[i] > 0.0 ? (p[i] - lo[i]) / extent[i] : 0.0;
-        const auto q = std::uint64_t(std::clamp(f, 0.0, 1.0) * double(0x1fffff));
-        code |= spread3(q) << i;
-      }
-    }
-    order[std::size_t(v)] = { code, v };
+    order[std::size_t(v)] = { morton_code(p, lo, extent), v };
   }
   std::sort(order.begin(), order.end());
   inner_of_.resize(un);
@@ -163,6 +143,7 @@ void ChainMailDeformer::set_mesh(
 template<class T>
 std::size_t ChainMailDeformer::assign_malleability(const T* m)
 {
+  touch();
   std::size_t bad = 0;
   std::vector<float> values(nodes_.size());
   for (std::size_t v = 0; v < values.size(); ++v)
@@ -188,6 +169,7 @@ std::size_t ChainMailDeformer::set_malleability(const double* m)
 
 void ChainMailDeformer::set_uniform_malleability(double m)
 {
+  touch();
   distinct_.assign(nodes_.empty() ? 0 : 1, float(clean_malleability(m)));
   for (Node& node : nodes_)
     node.rank = 0;
@@ -242,6 +224,7 @@ void ChainMailDeformer::rebuild_rank_params()
 
 void ChainMailDeformer::set_pinned(const std::uint8_t* mask)
 {
+  touch();
   rigid_of_.clear(); // pins are left out of the rigid components
   if (!mask)
   {
@@ -255,6 +238,7 @@ void ChainMailDeformer::set_pinned(const std::uint8_t* mask)
 
 void ChainMailDeformer::set_global_ids(const std::int64_t* gid)
 {
+  touch();
   gid_.clear();
   if (gid)
     to_inner(gid_, gid, outer_of_, [](std::int64_t g) { return g; });
@@ -262,6 +246,7 @@ void ChainMailDeformer::set_global_ids(const std::int64_t* gid)
 
 void ChainMailDeformer::set_owned(const std::uint8_t* mask)
 {
+  touch();
   rigid_of_.clear(); // rigid_component_split() depends on the ghosts
   ghost_.clear();
   if (mask)
@@ -285,6 +270,7 @@ void ChainMailDeformer::reset()
 
 void ChainMailDeformer::commit()
 {
+  touch();
   if (committed_.empty() && !moved_.empty())
     committed_.assign(nodes_.size(), Eigen::Vector3d::Zero());
   for (std::size_t slot = 0; slot < moved_rec_.size(); ++slot)
@@ -299,6 +285,7 @@ void ChainMailDeformer::commit()
 void ChainMailDeformer::set_rest(
   index_t v, const Eigen::Vector3d& rest_local, const Eigen::Vector3d& offset)
 {
+  touch();
   if (committed_.empty())
     committed_.assign(nodes_.size(), Eigen::Vector3d::Zero());
   nodes_[inner(v)].rest = rest_local;
@@ -365,6 +352,20 @@ void ChainMailDeformer::begin_frame()
   last_fraction_ = 1.0;
 }
 
+void ChainMailDeformer::touch()
+{
+  static std::atomic<std::uint64_t> next{ 0 };
+  revision_ = ++next;
+}
+
+void ChainMailDeformer::begin_adopted_frame(std::size_t moves)
+{
+  begin_frame();
+  moved_.resize(moves);
+  moved_rec_.resize(moves);
+  moved_root_.resize(moves);
+}
+
 void ChainMailDeformer::move(
   index_t i, const Eigen::Vector3d& d, index_t sponsor_slot, const SuperstepRoot& root, bool gate)
 {
@@ -417,12 +418,14 @@ void ChainMailDeformer::push_neighbours()
   // The sponsors in id order, so that each candidate's entries come in sponsor id order
   // (SuperstepQueue::open): the superstep's own moves are in id order (sort_moves()),
   // ghosts and aliases received after them may not be.
-  const std::size_t first = superstep_begin_, count = moved_rec_.size() - first;
+  // The own moves [first, sorted_end_) are known to be in order: only what came after
+  // them is checked and sorted, then merged in.
+  const std::size_t first = superstep_begin_, end = moved_rec_.size(), count = end - first;
   const std::uint32_t* order = nullptr;
-  const bool known = sorted_begin_ == first && sorted_end_ == moved_rec_.size();
-  if (!known && !ids_sorted(first, moved_rec_.size()))
+  const std::size_t sorted = sorted_begin_ == first && sorted_end_ <= end ? sorted_end_ : first;
+  if (!ids_sorted(sorted > first ? sorted - 1 : first, end))
   {
-    sort_by_id(first, moved_rec_.size());
+    sort_by_id(first, end, sorted);
     order = by_id_.data();
   }
   const std::uint8_t* const pins = pinned_inner_.empty() ? nullptr : pinned_inner_.data();
@@ -468,13 +471,15 @@ bool ChainMailDeformer::ids_sorted(std::size_t begin, std::size_t end) const
   return true;
 }
 
-void ChainMailDeformer::sort_by_id(std::size_t begin, std::size_t end)
+void ChainMailDeformer::sort_by_id(std::size_t begin, std::size_t end, std::size_t sorted)
 {
   by_id_key_.resize(end - begin);
   for (std::size_t slot = begin; slot < end; ++slot)
     by_id_key_[slot - begin] = { global_id_inner(moved_rec_[slot].vertex),
       std::uint32_t(slot - begin) };
-  std::sort(by_id_key_.begin(), by_id_key_.end());
+  const auto middle = by_id_key_.begin() + std::ptrdiff_t(std::max(sorted, begin) - begin);
+  std::sort(middle, by_id_key_.end());
+  std::inplace_merge(by_id_key_.begin(), middle, by_id_key_.end());
   by_id_.resize(end - begin);
   for (std::size_t k = 0; k < by_id_.size(); ++k)
     by_id_[k] = by_id_key_[k].second;
@@ -485,7 +490,7 @@ void ChainMailDeformer::sort_moves(std::size_t begin)
   const std::size_t end = moved_rec_.size();
   if (end - begin > 1 && !ids_sorted(begin, end))
   {
-    sort_by_id(begin, end);
+    sort_by_id(begin, end, begin);
     moved_scratch_.assign(moved_rec_.begin() + std::ptrdiff_t(begin), moved_rec_.end());
     for (std::size_t k = 0; k < by_id_.size(); ++k)
     {
@@ -602,6 +607,7 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
 std::string ChainMailDeformer::set_obstacles(
   const double* xyz, std::size_t n, const std::int64_t* triangles, std::size_t num_triangles)
 {
+  touch();
   auto obstacles = std::make_shared<Obstacles>();
   std::string error = obstacles->set(xyz, n, triangles, num_triangles, origin_);
   obstacles_.reset();
@@ -612,6 +618,7 @@ std::string ChainMailDeformer::set_obstacles(
 
 void ChainMailDeformer::set_sliding(const std::uint8_t* mask)
 {
+  touch();
   rigid_of_.clear(); // sliding vertices are left out of the rigid components
   sliding_.clear();
   if (mask)

@@ -156,7 +156,11 @@ public:
   // there are none).
   std::string set_obstacles(
     const double* xyz, std::size_t n, const std::int64_t* triangles, std::size_t num_triangles);
-  void clear_obstacles() { obstacles_.reset(); }
+  void clear_obstacles()
+  {
+    obstacles_.reset();
+    touch();
+  }
   // Clearance (scene units, >= 0; false and unchanged otherwise); kept across
   // set_obstacles.
   bool set_obstacle_clearance(double c);
@@ -262,6 +266,45 @@ public:
   Eigen::Vector3d position(index_t v) const { return origin_ + rest_local(v) + displacement(v); }
   ChainMailParams params(index_t v) const { return transfer_(malleability(v)); }
 
+  // A number that changes whenever the state a frame starts from changes (mesh,
+  // malleability, pins, global ids, ownership, rest shape, obstacles, sliding mask), not
+  // when the transfer function, queue or region shape is set (every frame). Copies share
+  // it; two different states never do. A threaded driver rebuilds its pieces on a change.
+  std::uint64_t revision() const { return revision_; }
+
+  // A frame run elsewhere (threaded_chainmail.h), written in as if deform() had run it:
+  // begin_adopted_frame(n); adopt_move(slot, v, u, root) for each slot 0 .. n - 1 (the
+  // order deform() moves them in; distinct slots may be written from several threads at
+  // once); then, once every move is written, adopt_sponsor(slot, sponsor) for each
+  // (sponsor: the caller id of the vertex v's entry came from, -1 for the grasp).
+  void begin_adopted_frame(std::size_t moves);
+  void adopt_move(std::size_t slot, index_t v, const Eigen::Vector3d& u, const SuperstepRoot& root)
+  {
+    const std::size_t i = inner(v);
+    nodes_[i].stamp = frame_;
+    slot_[i] = index_t(slot);
+    moved_[slot] = v;
+    moved_rec_[slot] = { u, index_t(i), -1 };
+    moved_root_[slot] = root;
+  }
+  void adopt_sponsor(std::size_t slot, index_t sponsor)
+  {
+    moved_rec_[slot].sponsor_slot = sponsor < 0 ? -1 : slot_[inner(sponsor)];
+  }
+  // The same given the sponsor's slot (its index in moved()).
+  void adopt_sponsor_slot(std::size_t slot, index_t sponsor_slot)
+  {
+    moved_rec_[slot].sponsor_slot = sponsor_slot;
+  }
+  // The last frame's moves by slot (index into moved()): displacement, root, and the
+  // slot of the sponsor (-1: the grasp, or a vertex moved by move_vertex()).
+  const Eigen::Vector3d& moved_displacement(std::size_t slot) const
+  {
+    return moved_rec_[slot].disp;
+  }
+  const SuperstepRoot& moved_root(std::size_t slot) const { return moved_root_[slot]; }
+  index_t moved_sponsor_slot(std::size_t slot) const { return moved_rec_[slot].sponsor_slot; }
+
   // Bytes held beyond the input mesh (rest copy, state, adjacency, queue pool).
   std::size_t memory_bytes() const;
 
@@ -278,6 +321,7 @@ private:
   template<class T>
   std::size_t assign_malleability(const T* m);
   std::size_t inner(index_t v) const { return std::size_t(inner_of_[std::size_t(v)]); }
+  void touch(); // a new revision()
 
   // Internally vertices are renumbered once, in set_mesh, along a space-filling (Morton)
   // curve of their rest positions, so the vertices a frame touches lie close together
@@ -317,7 +361,8 @@ private:
   // end_superstep()'s pushes (Banded: FIFO Priority's bands and roots).
   template<bool Banded>
   void push_neighbours();
-  void sort_by_id(std::size_t begin, std::size_t end);
+  // by_id_: the slots [begin, end) in global id order, [begin, sorted) already in it.
+  void sort_by_id(std::size_t begin, std::size_t end, std::size_t sorted);
   // Puts the moves a superstep made from `begin` on into global id order (slots,
   // moved()) and passes them through the obstacle gate in that order.
   void sort_moves(std::size_t begin);
@@ -370,9 +415,10 @@ private:
   std::vector<std::uint8_t> sliding_;       // by internal id; empty when none
   double last_fraction_ = 1.0;              // of the last gated move
   std::size_t blocked_ = 0;
-  bool rigid_split_ = false;        // a component holds a ghost (build_rigid_components)
-  std::uint32_t superstep_ = 0;     // the current superstep of the frame
-  std::size_t superstep_begin_ = 0; // slot of its first move
+  bool rigid_split_ = false; // a component holds a ghost (build_rigid_components)
+  std::uint64_t revision_ = 0;
+  std::uint32_t superstep_ = 0;                   // the current superstep of the frame
+  std::size_t superstep_begin_ = 0;               // slot of its first move
   std::size_t sorted_begin_ = 0, sorted_end_ = 0; // slots sort_moves() left in id order
 };
 

@@ -2,7 +2,8 @@
 // The transport between the pieces of a partitioned mesh (one per MPI rank), as an
 // interface: the partitioned deformer, the global numbering, the labels, the envelope and
 // the edit history talk through it; vtkGeoShapingControllerExchange implements it over a
-// vtkMultiProcessController and InProcessExchange over threads of one process (tests).
+// vtkMultiProcessController and InProcessExchange over threads of one process
+// (in_process_exchange.h: the threaded frame and the tests).
 // The messages it carries are the moved frontier (MovedVertex) and the round states.
 #include "geoshaping/deform/candidate_queue.h"
 

@@ -168,19 +168,21 @@ bool PartitionedChainMail::fill_outbox()
     box.clear();
   bool any = false;
   const auto& moved = deformer_.moved();
+  if (moved.size() > deformer_.superstep_begin())
+    runs_.push_back({ deformer_.superstep_index(), std::uint32_t(deformer_.superstep_begin()),
+      std::uint32_t(moved.size()) });
   for (std::size_t k = deformer_.superstep_begin(); k < moved.size(); ++k)
   {
     const index_t v = moved[k];
-    if (!deformer_.owned(v))
+    const std::uint32_t first = subscriber_offsets_[std::size_t(v)];
+    const std::uint32_t last = subscriber_offsets_[std::size_t(v) + 1];
+    if (first == last || !deformer_.owned(v)) // most moves: held by no other piece
       continue;
     const Eigen::Vector3d& d = deformer_.displacement(v);
-    for (std::uint32_t i = subscriber_offsets_[std::size_t(v)];
-         i < subscriber_offsets_[std::size_t(v) + 1]; ++i)
-    {
+    for (std::uint32_t i = first; i < last; ++i)
       outbox_[subscribers_[i]].push_back(
         { deformer_.global_id(v), { d.x(), d.y(), d.z() }, deformer_.root(v) });
-      any = true;
-    }
+    any = true;
   }
   return any;
 }
@@ -227,6 +229,7 @@ FrameResult PartitionedChainMail::deform(
 {
   FrameResult result;
   supersteps_ = 0;
+  runs_.clear();
   deformer_.begin_frame();
   const QueueKind q = deformer_.queue();
   if (q != QueueKind::fifo && q != QueueKind::fifo_priority)
