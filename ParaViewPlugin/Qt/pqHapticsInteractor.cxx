@@ -144,6 +144,9 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
     }
     auto hand = std::make_unique<Hand>();
     hand->kind = setup.device;
+    hand->mouse.setConstraint(this->Pull);
+    hand->mouse.constraintKeyed = [this](interactor::PullConstraint c)
+    { this->setPullConstraint(c); };
     hand->tool = setup.tool;
     hand->controller.set_tool(setup.tool);
     if (setup.device != Mouse)
@@ -197,14 +200,31 @@ void pqHapticsInteractor::setTool(int hand, interactor::Tool tool)
   }
 }
 
+void pqHapticsInteractor::setPullConstraint(interactor::PullConstraint c)
+{
+  if (c == this->Pull)
+  {
+    return;
+  }
+  this->Pull = c;
+  for (auto& hand : this->Hands)
+  {
+    if (hand && hand->kind == Mouse)
+    {
+      hand->mouse.setConstraint(c);
+    }
+  }
+  Q_EMIT this->pullConstraintChanged(int(c));
+}
+
 bool pqHapticsInteractor::stylusOf(
   Hand& hand, const interactor::WorkspaceMapping& mapping, interactor::StylusState& world)
 {
   if (hand.kind == Mouse)
   {
     const Eigen::Matrix3d turn = this->Proxies.objectMatrix().topLeftCorner<3, 3>();
-    world = hand.mouse.stylus(
-      hand.controller.held(), this->Pull, (turn * Eigen::Vector3d::UnitZ()).normalized());
+    world =
+      hand.mouse.stylus(hand.controller.held(), (turn * Eigen::Vector3d::UnitZ()).normalized());
     return true;
   }
   hand.servo->poll_device(hand.latest);

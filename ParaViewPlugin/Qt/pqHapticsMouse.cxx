@@ -42,6 +42,12 @@ void pqHapticsMouse::attach(vtkSMRenderViewProxy* view)
     vtkCommand::MouseMoveEvent, this, &pqHapticsMouse::onEvent, priority);
   this->Observers[2] = this->Interactor->AddObserver(
     vtkCommand::LeftButtonReleaseEvent, this, &pqHapticsMouse::onEvent, priority);
+  // Qt's key press reaches the interactor as KeyPressEvent then CharEvent: both are kept
+  // from the style (ParaView's keys) while a key switches a pull.
+  this->Observers[3] = this->Interactor->AddObserver(
+    vtkCommand::KeyPressEvent, this, &pqHapticsMouse::onEvent, priority);
+  this->Observers[4] =
+    this->Interactor->AddObserver(vtkCommand::CharEvent, this, &pqHapticsMouse::onEvent, priority);
 }
 
 namespace
@@ -88,16 +94,30 @@ bool pqHapticsMouse::pointOnSurface(
   return world.allFinite();
 }
 
-geoshaping::interactor::StylusState pqHapticsMouse::stylus(bool pressSeen,
-  geoshaping::interactor::PullConstraint constraint, const Eigen::Vector3d& up) const
+geoshaping::interactor::StylusState pqHapticsMouse::stylus(
+  bool pressSeen, const Eigen::Vector3d& up)
 {
+  this->Up = up;
   geoshaping::interactor::StylusState s = this->State;
   vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
   if (s.button && !this->Paint && pressSeen && renderer)
   {
-    s.position += this->Pull.displacement(RendererProjection(renderer), constraint, up);
+    s.position += this->Pull.displacement(RendererProjection(renderer), up);
   }
   return s;
+}
+
+void pqHapticsMouse::setConstraint(geoshaping::interactor::PullConstraint constraint)
+{
+  vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
+  if (renderer && this->State.button && !this->Paint)
+  {
+    this->Pull.constrain(constraint, RendererProjection(renderer), this->Up);
+  }
+  else
+  {
+    this->Pull.set_constraint(constraint); // for the next press
+  }
 }
 
 bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
@@ -138,6 +158,21 @@ bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
   {
     this->State.button = false;
     consumed = true;
+  }
+  else if ((event == vtkCommand::KeyPressEvent || event == vtkCommand::CharEvent) &&
+           this->State.button && !this->Paint)
+  {
+    const auto constraint =
+      geoshaping::interactor::constraint_for_key(interactor->GetKeyCode(), this->Pull.constraint());
+    if (constraint && event == vtkCommand::KeyPressEvent)
+    {
+      this->setConstraint(*constraint);
+      if (this->constraintKeyed)
+      {
+        this->constraintKeyed(*constraint);
+      }
+    }
+    consumed = constraint.has_value();
   }
   // true aborts the event: the interactor style (the camera) does not see it.
   return consumed;

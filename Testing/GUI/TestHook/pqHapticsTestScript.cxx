@@ -22,11 +22,17 @@
 #include <vtkSMRenderViewProxy.h>
 #include <vtkSMSourceProxy.h>
 
+#include <QVTKOpenGLNativeWidget.h>
+#include <QVTKOpenGLStereoWidget.h>
+#include <QVTKOpenGLWindow.h>
+
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
 #include <QPixmap>
 #include <QPushButton>
+#include <QTest>
 #include <QTextStream>
 #include <QToolButton>
 #include <QWidget>
@@ -64,6 +70,10 @@ bool pqHapticsTestScript::step()
   if (verb == "press" || verb == "move" || verb == "release")
   {
     this->mouse(words);
+  }
+  else if (verb == "key" && words.size() > 1)
+  {
+    this->key(words[1]);
   }
   else if (verb == "swatch" && words.size() > 1)
   {
@@ -144,6 +154,30 @@ void pqHapticsTestScript::mouse(const QStringList& words)
   }
 }
 
+void pqHapticsTestScript::key(const QString& key)
+{
+  // To the widget (or window) that shows the view, where a user's key goes once the view
+  // is clicked, with Qt's shortcut override first: a ParaView shortcut on the key would
+  // take it, as it would from the user.
+  pqView* view = pqActiveObjects::instance().activeView();
+  QWidget* widget = view ? view->widget() : nullptr;
+  const QKeySequence sequence(key);
+  if (!widget || sequence.count() != 1)
+  {
+    return;
+  }
+  const auto code = Qt::Key(sequence[0] & ~Qt::KeyboardModifierMask);
+  const auto modifiers = Qt::KeyboardModifiers(sequence[0] & Qt::KeyboardModifierMask);
+  if (auto* native = widget->findChild<QVTKOpenGLNativeWidget*>())
+  {
+    QTest::keyClick(native, code, modifiers);
+  }
+  else if (auto* stereo = widget->findChild<QVTKOpenGLStereoWidget*>())
+  {
+    QTest::keyClick(stereo->embeddedOpenGLWindow(), code, modifiers);
+  }
+}
+
 namespace
 {
 vtkPointSet* output(pqPipelineSource* source, bool input)
@@ -219,6 +253,15 @@ void pqHapticsTestScript::snapshot(const QString& name)
     {
       out << "edit_history = " << vtkSMPropertyHelper(proxy, "EditHistory").GetNumberOfElements()
           << "\n";
+      double d[3];
+      vtkSMPropertyHelper(proxy, "Displacement").Get(d, 3);
+      out << "Displacement = " << QString::number(d[0], 'g', 17) << " "
+          << QString::number(d[1], 'g', 17) << " " << QString::number(d[2], 'g', 17) << "\n";
+      out << "GraspPointId = " << vtkSMPropertyHelper(proxy, "GraspPointId").GetAsIdType() << "\n";
+    }
+    if (auto* pull = this->Dock->findChild<QComboBox*>("PullConstraint"))
+    {
+      out << "pull_constraint = " << pull->currentData().toInt() << "\n";
     }
     for (const char* label : { "BrushRadius", "BrushRadiusAbout", "BrushNote", "Edits" })
     {
