@@ -481,14 +481,18 @@ void pqHapticsInteractor::onFrame()
     const Eigen::Vector3d color = painting ? geoshaping::malleability_color(this->Brush.value)
                                   : hand.controller.held() ? Eigen::Vector3d(0.2, 1.0, 0.3)
                                                            : Eigen::Vector3d(0.2, 0.6, 1.0);
-    hand.sphere->SetCenter(world.position.data());
+    // A mouse hand shows where it is while held and, about to paint (the Paint tool, or
+    // Ctrl held), where a dab would land while it hovers over the surface.
+    Eigen::Vector3d at = world.position;
+    const bool shown = hand.kind != Mouse || world.button || (painting && hand.mouse.hover(at));
+    hand.sphere->SetCenter(at.data());
     hand.sphere->SetRadius(
-      painting ? this->brushCursorRadius(world.position, camera) : 0.004 * mapping.scale());
+      painting ? this->brushCursorRadius(at, camera) : 0.004 * mapping.scale());
     hand.cursor->GetProperty()->SetColor(color.x(), color.y(), color.z());
     // A cage while painting: the paint under the brush shows through (a translucent
     // sphere would turn on depth peeling, slower than the frame).
     hand.cursor->GetProperty()->SetRepresentation(painting ? VTK_WIREFRAME : VTK_SURFACE);
-    hand.cursor->SetVisibility(hand.kind != Mouse || world.button);
+    hand.cursor->SetVisibility(shown);
     hand.setRenderer(viewProxy ? viewProxy->GetRenderer() : nullptr);
     if (hand.device)
     {

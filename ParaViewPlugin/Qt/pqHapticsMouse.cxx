@@ -2,6 +2,7 @@
 
 #include "undo_step.h"
 
+#include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -29,6 +30,8 @@ void pqHapticsMouse::attach(vtkSMRenderViewProxy* view)
   this->View = view;
   this->Interactor = view ? view->GetInteractor() : nullptr;
   this->State.button = false;
+  this->InView = false;
+  this->LastPick = Pick();
   if (!this->Interactor)
   {
     return;
@@ -48,6 +51,8 @@ void pqHapticsMouse::attach(vtkSMRenderViewProxy* view)
     vtkCommand::KeyPressEvent, this, &pqHapticsMouse::onEvent, priority);
   this->Observers[4] =
     this->Interactor->AddObserver(vtkCommand::CharEvent, this, &pqHapticsMouse::onEvent, priority);
+  this->Observers[5] =
+    this->Interactor->AddObserver(vtkCommand::LeaveEvent, this, &pqHapticsMouse::onEvent, priority);
 }
 
 namespace
@@ -107,6 +112,38 @@ geoshaping::interactor::StylusState pqHapticsMouse::stylus(
   return s;
 }
 
+bool pqHapticsMouse::paint() const
+{
+  if (this->State.button)
+  {
+    return this->Paint;
+  }
+  auto* interactor = vtkRenderWindowInteractor::SafeDownCast(this->Interactor);
+  return this->InView && interactor && interactor->GetControlKey() != 0;
+}
+
+bool pqHapticsMouse::hover(Eigen::Vector3d& world)
+{
+  vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
+  if (this->State.button || !this->InView || !renderer)
+  {
+    return false;
+  }
+  const vtkMTimeType camera = renderer->GetActiveCamera()->GetMTime();
+  Pick& last = this->LastPick;
+  if (last.pixel[0] != this->HoverPixel[0] || last.pixel[1] != this->HoverPixel[1] ||
+      last.camera != camera)
+  {
+    Eigen::Vector3d normal;
+    last.onSurface = this->pointOnSurface(this->HoverPixel, last.world, normal);
+    last.pixel[0] = this->HoverPixel[0];
+    last.pixel[1] = this->HoverPixel[1];
+    last.camera = camera;
+  }
+  world = last.world;
+  return last.onSurface;
+}
+
 void pqHapticsMouse::setConstraint(geoshaping::interactor::PullConstraint constraint)
 {
   vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
@@ -140,6 +177,17 @@ bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
       this->Pull.press(Eigen::Vector2d(display[0], display[1]), world, normal);
       consumed = true;
     }
+  }
+  else if (event == vtkCommand::MouseMoveEvent && !this->State.button)
+  {
+    // Hovering: the style still sees it (a drag of the camera).
+    this->InView = true;
+    this->HoverPixel[0] = display[0];
+    this->HoverPixel[1] = display[1];
+  }
+  else if (event == vtkCommand::LeaveEvent)
+  {
+    this->InView = false;
   }
   else if (event == vtkCommand::MouseMoveEvent && this->State.button)
   {

@@ -35,8 +35,13 @@ public:
   std::function<void(geoshaping::interactor::PullConstraint)> constraintKeyed;
   // The grasped vertex (world): the pull's plane and lines go through it.
   void setGrasp(const Eigen::Vector3d& world) { this->Pull.set_grasp(world); }
-  // `paint` is true for a drag that began with Ctrl held.
-  bool paint() const { return this->Paint; }
+  // True for a drag that began with Ctrl held; between drags, while Ctrl is held (the
+  // next press would paint).
+  bool paint() const;
+  // Between drags, the point of the surface under the hovering mouse (world): false when
+  // the mouse is off the surface or out of the view. A pick, made again only when the
+  // mouse or the camera has moved since the last one.
+  bool hover(Eigen::Vector3d& world);
 
 private:
   bool onEvent(vtkObject* caller, unsigned long event, void*);
@@ -44,9 +49,19 @@ private:
 
   vtkWeakPointer<vtkSMRenderViewProxy> View;
   vtkWeakPointer<vtkObject> Interactor;
-  unsigned long Observers[5] = { 0, 0, 0, 0, 0 };
+  unsigned long Observers[6] = { 0, 0, 0, 0, 0, 0 };
   geoshaping::interactor::StylusState State; // the pressed point, or the painting point
   geoshaping::interactor::PullControl Pull;
   bool Paint = false;
   Eigen::Vector3d Up = Eigen::Vector3d::UnitZ(); // the scene's vertical at the last frame
+  // Hovering: the mouse's pixel in the view (none: out of it), and the last pick there.
+  bool InView = false;
+  int HoverPixel[2] = { 0, 0 };
+  struct Pick
+  {
+    int pixel[2] = { -1, -1 };
+    vtkMTimeType camera = 0;
+    bool onSurface = false;
+    Eigen::Vector3d world = Eigen::Vector3d::Zero();
+  } LastPick;
 };

@@ -35,6 +35,11 @@ SCRIPTS = {
                   "snapshot stroke; undo; snapshot undo1; undo; snapshot undo2; redo; "
                   "snapshot redo1; redo; snapshot redo2; editundo; snapshot editundo; "
                   "editredo; snapshot editredo",
+    # Hovering with Ctrl held (the next press would paint): the brush cursor shows where a
+    # dab would land; not without Ctrl, off the surface, or once the mouse left the view.
+    "brush_hover": "hover 0.45 0.5 ctrl; snapshot hover; hover 0.55 0.42 ctrl; snapshot hover2; "
+                   "hover 0.45 0.5; snapshot noctrl; hover 0.02 0.02 ctrl; snapshot off; "
+                   "hover 0.5 0.5 ctrl; snapshot back; leave; snapshot left",
     # A free pull, then Z typed mid-drag (through Qt, as a user's key): vertical from there
     # on; Z again frees it; seen from the south-west, so the vertical is not end-on.
     "pull_keys": "press 0.5 0.5; move 0.53 0.51; move 0.56 0.52; snapshot free; key Z; "
@@ -215,6 +220,35 @@ def check_undo(out):
     assert np.array_equal(rows[:, 6], stroke[:, 6]), "Edit > Redo did not put the stroke back"
 
 
+def check_hover(out):
+    """The brush cursor while hovering: at the surface point under the mouse, the brush's
+    radius in world units, a cage; hidden without Ctrl, off the surface, out of the view.
+    Hovering paints nothing."""
+    steps = {name: snapshot(out, name)[0]
+             for name in ("hover", "hover2", "noctrl", "off", "back", "left")}
+    kinds = [kind for kind, p in picks(out)]
+    at = [p for kind, p in picks(out)]
+    # Picks on the surface: hover, hover2, noctrl, back (the corner of the view is off it).
+    assert kinds == ["hover"] * 4, kinds
+    for name, texts in steps.items():
+        print("%-7s cursors %s %s" % (name, texts["cursors"], texts.get("cursor_0", "")))
+    radius = float(steps["hover"]["brush_radius"])
+    for name, pick in (("hover", at[0]), ("hover2", at[1]), ("back", at[3])):
+        texts = steps[name]
+        assert texts["cursors"] == "1", (name, texts)
+        c = [float(v) for v in texts["cursor_0"].split()]
+        print("%s: cursor %.3f m from the pick, radius %.3f m (brush %.3f m), representation %d"
+              % (name, np.linalg.norm(np.array(c[:3]) - pick), c[3], radius, c[4]))
+        assert np.linalg.norm(np.array(c[:3]) - pick) <= 1e-6 * radius, (name, c, pick)
+        assert abs(c[3] - radius) <= 1e-9 * radius and c[4] == 1, (name, c, radius)
+    for name in ("noctrl", "off", "left"):
+        assert steps[name]["cursors"] == "0", (name, steps[name])
+    assert all(t["dab_values"] == "0" and t["point_dab_values"] == "0" for t in steps.values())
+    cage = changed_pixels(out + "-hover.png", out + "-noctrl.png")
+    print("the hovering cursor: %d pixels differ from the view without it" % cage)
+    assert cage > 100, cage
+
+
 def vector(results, key):
     return np.array([float(v) for v in results[key].split()])
 
@@ -256,4 +290,4 @@ def check_pull_keys(out):
 
 def check(mode, out):
     {"brush_default": check_default, "brush_fast": check_fast, "brush_undo": check_undo,
-     "pull_keys": check_pull_keys}[mode](out)
+     "brush_hover": check_hover, "pull_keys": check_pull_keys}[mode](out)

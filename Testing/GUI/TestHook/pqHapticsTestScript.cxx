@@ -11,16 +11,22 @@
 #include <pqUndoStack.h>
 #include <pqView.h>
 
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
 #include <vtkAlgorithm.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkMapper.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
+#include <vtkProperty.h>
 #include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
 #include <vtkSMPropertyHelper.h>
 #include <vtkSMProxy.h>
 #include <vtkSMRenderViewProxy.h>
 #include <vtkSMSourceProxy.h>
+#include <vtkSphereSource.h>
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <QVTKOpenGLStereoWidget.h>
@@ -67,7 +73,7 @@ bool pqHapticsTestScript::step()
   this->AfterFrame = frames + 1;
   const QStringList words = this->Steps[this->Next++].split(' ', Qt::SkipEmptyParts);
   const QString& verb = words[0];
-  if (verb == "press" || verb == "move" || verb == "release")
+  if (verb == "press" || verb == "move" || verb == "release" || verb == "hover" || verb == "leave")
   {
     this->mouse(words);
   }
@@ -129,9 +135,10 @@ void pqHapticsTestScript::mouse(const QStringList& words)
   {
     return;
   }
-  if (words[0] == "release")
+  if (words[0] == "release" || words[0] == "leave")
   {
-    interactor->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
+    interactor->InvokeEvent(
+      words[0] == "release" ? vtkCommand::LeftButtonReleaseEvent : vtkCommand::LeaveEvent);
     return;
   }
   const int* size = interactor->GetSize();
@@ -233,6 +240,7 @@ void pqHapticsTestScript::snapshot(const QString& name)
       out << QString::number(m->GetTuple1(i), 'g', 9) << "\n";
     }
   }
+  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
   QFile file(prefix + ".txt");
   if (file.open(QIODevice::WriteOnly | QIODevice::Text))
   {
@@ -259,6 +267,30 @@ void pqHapticsTestScript::snapshot(const QString& name)
           << QString::number(d[1], 'g', 17) << " " << QString::number(d[2], 'g', 17) << "\n";
       out << "GraspPointId = " << vtkSMPropertyHelper(proxy, "GraspPointId").GetAsIdType() << "\n";
     }
+    // The cursors shown: the view's visible sphere actors other than the data.
+    int cursors = 0;
+    vtkRenderer* renderer = view ? view->getRenderViewProxy()->GetRenderer() : nullptr;
+    vtkActorCollection* actors = renderer ? renderer->GetActors() : nullptr;
+    vtkCollectionSimpleIterator it;
+    if (actors)
+    {
+      actors->InitTraversal(it);
+    }
+    while (vtkActor* actor = actors ? actors->GetNextActor(it) : nullptr)
+    {
+      auto* sphere = actor->GetMapper()
+                       ? vtkSphereSource::SafeDownCast(actor->GetMapper()->GetInputAlgorithm())
+                       : nullptr;
+      if (sphere && actor->GetVisibility())
+      {
+        const double* c = sphere->GetCenter();
+        out << "cursor_" << cursors++ << " = " << QString::number(c[0], 'g', 17) << " "
+            << QString::number(c[1], 'g', 17) << " " << QString::number(c[2], 'g', 17) << " "
+            << QString::number(sphere->GetRadius(), 'g', 17) << " "
+            << actor->GetProperty()->GetRepresentation() << "\n";
+      }
+    }
+    out << "cursors = " << cursors << "\n";
     if (auto* pull = this->Dock->findChild<QComboBox*>("PullConstraint"))
     {
       out << "pull_constraint = " << pull->currentData().toInt() << "\n";
@@ -268,7 +300,7 @@ void pqHapticsTestScript::snapshot(const QString& name)
       out << "label_" << label << " = " << text(this->Dock, label) << "\n";
     }
   }
-  if (pqView* view = pqActiveObjects::instance().activeView())
+  if (view)
   {
     view->widget()->grab().save(prefix + ".png");
   }

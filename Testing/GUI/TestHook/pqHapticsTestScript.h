@@ -5,6 +5,8 @@
 //   press X Y [ctrl]   left button down (with Ctrl: paint), the pick written to <out>.picks
 //   move X Y           the mouse moves there (button held), the pick written too
 //   release            left button up
+//   hover X Y [ctrl]   the mouse moves there, no button (with Ctrl held), the pick written
+//   leave              the mouse leaves the view
 //   key K              the key K pressed and released on the render view's window, as the
 //                      window system delivers it (Qt's shortcuts first, then the view)
 //   swatch I           clicks the dock's malleability swatch I (0 ... 10)
@@ -19,7 +21,8 @@
 //   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
 //                      brush, the paint lists' sizes, the pull (Displacement, grasp,
-//                      the dock's Pull row), the dock's texts) and <out>-NAME.png
+//                      the dock's Pull row), the shown cursors (centre, radius), the
+//                      dock's texts) and <out>-NAME.png
 //                      (the render view)
 //   wait               nothing this poll
 // Each step waits for one interactor frame after the previous one, so that the frames
