@@ -142,11 +142,24 @@ bool vtkGrowingBoundsPoints::Settle()
   {
     return false;
   }
-  for (vtkIdType w : this->Witness)
+  for (int side = 0; side < 8; ++side)
   {
-    if (this->IsMoved[std::size_t(w)])
+    const vtkIdType w = this->Witness[side];
+    if (!this->IsMoved[std::size_t(w)])
     {
-      return false; // an extreme point of E moved: its side may shrink to any point
+      continue;
+    }
+    // A moved witness still at or beyond E's extreme keeps the side exact (the unmoved
+    // points are within E); one that moved inward may leave it to any point.
+    double x[3];
+    this->GetPoint(w, x);
+    const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    const bool beyond = side < 6 ? (side % 2 == 0 ? x[side / 2] <= this->ExactBox[side]
+                                                  : x[side / 2] >= this->ExactBox[side])
+                                 : (side == 6 ? r <= this->ExactNorm[0] : r >= this->ExactNorm[1]);
+    if (!beyond)
+    {
+      return false;
     }
   }
   Extremes e;

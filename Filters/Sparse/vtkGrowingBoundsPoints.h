@@ -23,13 +23,14 @@
  * The exact caches after a settling change cost O(moved), not O(n): the points keep the
  * exact box and norm range of the last exact state (E), for each of its 8 extremes one
  * point that attains it (its witness), and the set M of points listed since. A point
- * outside M has not moved since E, so while a side's witness is outside M the unmoved
- * points' extreme on that side is exactly E's; the exact caches are then
+ * outside M has not moved since E, so while a side's witness is outside M (or in M but
+ * still at or beyond E's extreme) the unmoved points are within E's extreme on that side
+ * and one point of E ∪ M attains it; the exact caches are then
  *
  *     B = E ∪ bbox{ x_i : i in M },    N = N_E ∪ [min |x_i|, max |x_i|] over M,
  *
  * O(|M|), and they become the new exact state (a witness that M beats is replaced). When
- * a witness is in M (the drag moved an extreme point of the rest shape) the side may
+ * a witness moved inward (e.g. a pull that made a new maximum, undone) the side may
  * shrink to any point: the caches are dropped and the next query passes over every point
  * (O(n), once; GetNumberOfFullPasses() counts those passes).
  *

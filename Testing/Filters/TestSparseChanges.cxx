@@ -158,6 +158,10 @@ TEST(GrowingBoundsPoints, ASettleAwayFromTheExtremesIsExactWithoutAPassOverEvery
   for (int k = 0; k < 6; ++k)
     EXPECT_EQ(b[k], box[k]) << k;
   EXPECT_EQ(b[5], 4.0);
+  // The same point pulled further (it is the witness of z max now, moved outward).
+  Move(points, 100, 0, 5, 6.0, true);
+  points->GetBounds(b);
+  EXPECT_EQ(b[5], 6.0);
   EXPECT_EQ(points->GetNumberOfFullPasses(), 1);
 }
 
