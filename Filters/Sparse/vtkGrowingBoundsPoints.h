@@ -16,9 +16,23 @@
  * conservatively after that: a point that moves inward does not shrink them until the
  * next Reset() or exact change. A non-finite listed point drops the caches (the next
  * query is exact). A producer whose change settles the shape (a drag released, an edit
- * undone) lists it with `exact` = true: the caches are dropped, so the next query makes
- * them exact (O(n), once) and bounds shrink back; the change is still listed for
- * consumers, which pass the flag on (GetLastChangeExact()).
+ * undone) lists it with `exact` = true: the caches become exact again and bounds shrink
+ * back; the change is still listed for consumers, which pass the flag on
+ * (GetLastChangeExact()).
+ *
+ * The exact caches after a settling change cost O(moved), not O(n): the points keep the
+ * exact box and norm range of the last exact state (E), for each of its 8 extremes one
+ * point that attains it (its witness), and the set M of points listed since. A point
+ * outside M has not moved since E, so while a side's witness is outside M (or in M but
+ * still at or beyond E's extreme) the unmoved points are within E's extreme on that side
+ * and one point of E ∪ M attains it; the exact caches are then
+ *
+ *     B = E ∪ bbox{ x_i : i in M },    N = N_E ∪ [min |x_i|, max |x_i|] over M,
+ *
+ * O(|M|), and they become the new exact state (a witness that M beats is replaced). When
+ * a witness moved inward (e.g. a pull that made a new maximum, undone) the side may
+ * shrink to any point: the caches are dropped and the next query passes over every point
+ * (O(n), once; GetNumberOfFullPasses() counts those passes).
  *
  * The points also say what changed, for consumers that keep a copy (an extracted
  * surface, a GPU buffer): each PointsChanged() is update number GetGeneration() and
@@ -37,6 +51,8 @@
 #include "vtkIdTypeArray.h"                // For vtkNew<vtkIdTypeArray>
 #include "vtkNew.h"                        // For vtkNew
 #include "vtkPoints.h"
+
+#include <vector> // For the points moved since the last exact state
 
 class GEOSHAPINGFILTERSSPARSE_EXPORT vtkGrowingBoundsPoints : public vtkPoints
 {
@@ -63,6 +79,10 @@ public:
   /// The number of the last PointsChanged() (0 before any).
   vtkGetMacro(Generation, int);
 
+  /// Passes over every point made for the caches (first query, another modification, a
+  /// settling change that moved an extreme point).
+  vtkGetMacro(NumberOfFullPasses, int);
+
   /// The ids of the last PointsChanged() if it was update `generation` + 1 and nothing
   /// else modified the points since; nullptr otherwise.
   vtkIdTypeArray* ChangesAfter(int generation);
@@ -77,10 +97,23 @@ private:
 
   // Write Box and Norm into vtkPoints::Bounds and the array's range caches.
   void Publish();
+  // The exact caches from E and the points moved since, O(|M|); false when a witness moved.
+  bool Settle();
+  // Forget E and M.
+  void ForgetExact();
 
   double Box[6] = { 0, 0, 0, 0, 0, 0 };
   double Norm[2] = { 0, 0 };
   bool Known = false;
+  // The last exact state E: its caches, witnesses (x min, x max, y..., z..., |x| min, max),
+  // and the points listed since (Moved, flagged in IsMoved).
+  bool ExactKnown = false;
+  double ExactBox[6] = { 0, 0, 0, 0, 0, 0 };
+  double ExactNorm[2] = { 0, 0 };
+  vtkIdType Witness[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  std::vector<char> IsMoved;
+  std::vector<vtkIdType> Moved;
+  int NumberOfFullPasses = 0;
   bool LastChangeExact = false;
   int Generation = 0;
   vtkMTimeType ChangedTime = 0;

@@ -4,8 +4,11 @@
 // carried onto the plane through the grasp parallel to the view plane, as Blender's grab
 // and ParaView's handle widgets do: the grasped point keeps its place under the cursor
 // whatever the data's scale and the camera. A constraint keeps the pull on a line through
-// the grasp (the vertical, or the surface normal there); Shift makes the motion finer.
+// the grasp (the vertical, or the surface normal there), and can change mid-pull without
+// a jump; Shift makes the motion finer.
 #include <Eigen/Core>
+
+#include <optional>
 
 namespace geoshaping::interactor
 {
@@ -28,6 +31,13 @@ enum class PullConstraint
   normal      // along the surface normal at the grasp
 };
 
+// The keys that switch the constraint during a pull (the letter, either case): Z the
+// vertical (z, as Blender's grab constrains to an axis), N the surface normal, C the
+// cursor (free); the key of the constraint in force frees the pull again (Blender's
+// toggle). None of them is a shortcut of ParaView's render view (S, D, F, G, B select,
+// V finds data). Another key: none.
+std::optional<PullConstraint> constraint_for_key(char key, PullConstraint current);
+
 // One mouse pull, from the press to the release.
 //
 // Free: with W(c) the point of the plane through the grasp g parallel to the view plane
@@ -47,6 +57,18 @@ enum class PullConstraint
 //
 // Precision (Shift, Blender's convention): while it is held, each cursor motion counts a
 // tenth, so pressing or releasing Shift mid-pull does not jump.
+//
+// A constraint switched mid-pull (`constrain`) does not jump either: the pull is a chain
+// of segments, each under one constraint. At the switch the displacement so far, D0 (under
+// the old constraint, through the view of that moment), is kept, the grasp is taken where
+// it now is (g + D0), and the new constraint moves it from there with the cursor's motion
+// since the switch, T - T0:
+//     displacement = D0 + d_new(g + D0, T - T0),   d_new(., 0) = 0.
+// Free after the switch, the grasp's image moves exactly as the cursor does (as before):
+// under the cursor if it was there at the switch (a free pull keeps it there); after a
+// constraint it keeps its offset from the cursor (jumping under the cursor would be the
+// jump). A line after a free pull: the grasp was under the cursor, so it shows at the
+// cursor's foot on the line's image, as for a line chosen at the press.
 class PullControl
 {
 public:
@@ -59,25 +81,35 @@ public:
   // plane and the constraint lines go through it.
   void set_grasp(const Eigen::Vector3d& grasp) { grasp_ = grasp; }
   void move(const Eigen::Vector2d& cursor, bool precise);
+  // From now on the pull keeps to `constraint`, continuing from where the grasp is (above);
+  // `view` and `up` as for displacement(). The same constraint again changes nothing.
+  void constrain(PullConstraint constraint, const ViewProjection& view, const Eigen::Vector3d& up);
+  // Between pulls: the constraint of the next press.
+  void set_constraint(PullConstraint constraint) { constraint_ = constraint; }
+  PullConstraint constraint() const { return constraint_; }
 
   // The displacement of the grasp (world) for the cursor so far, seen through `view`;
   // `up` is the scene's vertical in world coordinates. Zero for non-finite input or a
   // degenerate view.
-  Eigen::Vector3d displacement(
-    const ViewProjection& view, PullConstraint constraint, const Eigen::Vector3d& up) const;
+  Eigen::Vector3d displacement(const ViewProjection& view, const Eigen::Vector3d& up) const;
 
   // The pixel the pull has reached: the press plus the cursor's (scaled) motion.
   const Eigen::Vector2d& target() const { return target_; }
   const Eigen::Vector3d& grasp() const { return grasp_; }
 
 private:
-  Eigen::Vector3d along_line(const ViewProjection& view, const Eigen::Vector3d& axis) const;
+  // The current segment's displacement from the grasp where the segment began.
+  Eigen::Vector3d segment(const ViewProjection& view, const Eigen::Vector3d& up) const;
+  Eigen::Vector3d along_line(
+    const ViewProjection& view, const Eigen::Vector3d& from, const Eigen::Vector3d& axis) const;
 
-  Eigen::Vector2d press_ = Eigen::Vector2d::Zero();
+  PullConstraint constraint_ = PullConstraint::view_plane;
+  Eigen::Vector2d press_ = Eigen::Vector2d::Zero(); // the pixel where the segment began
   Eigen::Vector2d last_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d target_ = Eigen::Vector2d::Zero();
   Eigen::Vector3d grasp_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal_ = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d base_ = Eigen::Vector3d::Zero(); // the displacement where the segment began
 };
 
 } // namespace geoshaping::interactor

@@ -53,8 +53,14 @@ QWidget* pqHapticsPullRow(QWidget* parent, pqHapticsInteractor* interactor)
     "Along the surface normal: it moves across the surface where it was grasped, as a "
     "horizon pushed up or down through its thickness.\n"
     "Hold Shift while dragging for fine control: the point moves a tenth of the cursor's "
-    "motion. The choice can change mid-pull; a stylus keeps its own workspace mapping.");
-  auto* hint = new QLabel("Hold <b>Shift</b> while pulling for a tenth of the motion.", box);
+    "motion.\n"
+    "Keys while dragging: Z vertical, N along the normal, C follow the cursor; the key of the "
+    "choice in force frees the pull again. The choice can change mid-pull, here or by key: "
+    "the pull goes on from where the point is, without a jump. A stylus keeps its own "
+    "workspace mapping.");
+  auto* hint = new QLabel("Hold <b>Shift</b> while pulling for a tenth of the motion; "
+                          "<b>Z</b> vertical, <b>N</b> normal, <b>C</b> free while dragging.",
+    box);
   hint->setObjectName("PullHint");
   hint->setWordWrap(true);
   hint->setToolTip(constraint->toolTip());
@@ -63,6 +69,9 @@ QWidget* pqHapticsPullRow(QWidget* parent, pqHapticsInteractor* interactor)
   QObject::connect(constraint, QOverload<int>::of(&QComboBox::currentIndexChanged), interactor,
     [interactor, constraint]()
     { interactor->setPullConstraint(PullConstraint(constraint->currentData().toInt())); });
+  // A key during a pull: the row shows the constraint in force.
+  QObject::connect(interactor, &pqHapticsInteractor::pullConstraintChanged, constraint,
+    [constraint](int c) { constraint->setCurrentIndex(constraint->findData(c)); });
   pqHapticsTipLabels(box);
   return box;
 }

@@ -144,6 +144,9 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
     }
     auto hand = std::make_unique<Hand>();
     hand->kind = setup.device;
+    hand->mouse.setConstraint(this->Pull);
+    hand->mouse.constraintKeyed = [this](interactor::PullConstraint c)
+    { this->setPullConstraint(c); };
     hand->tool = setup.tool;
     hand->controller.set_tool(setup.tool);
     if (setup.device != Mouse)
@@ -197,14 +200,31 @@ void pqHapticsInteractor::setTool(int hand, interactor::Tool tool)
   }
 }
 
+void pqHapticsInteractor::setPullConstraint(interactor::PullConstraint c)
+{
+  if (c == this->Pull)
+  {
+    return;
+  }
+  this->Pull = c;
+  for (auto& hand : this->Hands)
+  {
+    if (hand && hand->kind == Mouse)
+    {
+      hand->mouse.setConstraint(c);
+    }
+  }
+  Q_EMIT this->pullConstraintChanged(int(c));
+}
+
 bool pqHapticsInteractor::stylusOf(
   Hand& hand, const interactor::WorkspaceMapping& mapping, interactor::StylusState& world)
 {
   if (hand.kind == Mouse)
   {
     const Eigen::Matrix3d turn = this->Proxies.objectMatrix().topLeftCorner<3, 3>();
-    world = hand.mouse.stylus(
-      hand.controller.held(), this->Pull, (turn * Eigen::Vector3d::UnitZ()).normalized());
+    world =
+      hand.mouse.stylus(hand.controller.held(), (turn * Eigen::Vector3d::UnitZ()).normalized());
     return true;
   }
   hand.servo->poll_device(hand.latest);
@@ -461,14 +481,18 @@ void pqHapticsInteractor::onFrame()
     const Eigen::Vector3d color = painting ? geoshaping::malleability_color(this->Brush.value)
                                   : hand.controller.held() ? Eigen::Vector3d(0.2, 1.0, 0.3)
                                                            : Eigen::Vector3d(0.2, 0.6, 1.0);
-    hand.sphere->SetCenter(world.position.data());
+    // A mouse hand shows where it is while held and, about to paint (the Paint tool, or
+    // Ctrl held), where a dab would land while it hovers over the surface.
+    Eigen::Vector3d at = world.position;
+    const bool shown = hand.kind != Mouse || world.button || (painting && hand.mouse.hover(at));
+    hand.sphere->SetCenter(at.data());
     hand.sphere->SetRadius(
-      painting ? this->brushCursorRadius(world.position, camera) : 0.004 * mapping.scale());
+      painting ? this->brushCursorRadius(at, camera) : 0.004 * mapping.scale());
     hand.cursor->GetProperty()->SetColor(color.x(), color.y(), color.z());
     // A cage while painting: the paint under the brush shows through (a translucent
     // sphere would turn on depth peeling, slower than the frame).
     hand.cursor->GetProperty()->SetRepresentation(painting ? VTK_WIREFRAME : VTK_SURFACE);
-    hand.cursor->SetVisibility(hand.kind != Mouse || world.button);
+    hand.cursor->SetVisibility(shown);
     hand.setRenderer(viewProxy ? viewProxy->GetRenderer() : nullptr);
     if (hand.device)
     {

@@ -76,8 +76,10 @@ public:
   void setTool(int hand, geoshaping::interactor::Tool tool);
   void setBrush(const geoshaping::interactor::Brush& brush) { this->Brush = brush; }
   const geoshaping::interactor::Brush& brush() const { return this->Brush; }
-  // How a mouse pull moves the grasp (PullControl.h); can change mid-pull.
-  void setPullConstraint(geoshaping::interactor::PullConstraint c) { this->Pull = c; }
+  // How a mouse pull moves the grasp (PullControl.h); can change mid-pull, from where the
+  // grasp is. A key during a pull (Z, N, C: PullControl.h) changes it too, and then
+  // pullConstraintChanged() is emitted.
+  void setPullConstraint(geoshaping::interactor::PullConstraint c);
   geoshaping::interactor::PullConstraint pullConstraint() const { return this->Pull; }
   // The brush fitted to the data (pqHapticsInteractorBrush.cxx): the radius is the paint's
   // BrushRadius (kept in the state) or, while that is 0, 3 % of the data's diagonal.
@@ -107,7 +109,8 @@ public:
 Q_SIGNALS:
   void frameDone();
   void editsChanged();
-  void brushChanged(); // radius, unit or note
+  void brushChanged();                        // radius, unit or note
+  void pullConstraintChanged(int constraint); // a PullConstraint
   // A device hand touched a swatch of the 3D palette (second button held): the brush
   // now paints `value`.
   void paletteValuePicked(double value);

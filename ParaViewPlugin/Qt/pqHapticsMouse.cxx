@@ -2,6 +2,7 @@
 
 #include "undo_step.h"
 
+#include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -29,6 +30,8 @@ void pqHapticsMouse::attach(vtkSMRenderViewProxy* view)
   this->View = view;
   this->Interactor = view ? view->GetInteractor() : nullptr;
   this->State.button = false;
+  this->InView = false;
+  this->LastPick = Pick();
   if (!this->Interactor)
   {
     return;
@@ -42,6 +45,14 @@ void pqHapticsMouse::attach(vtkSMRenderViewProxy* view)
     vtkCommand::MouseMoveEvent, this, &pqHapticsMouse::onEvent, priority);
   this->Observers[2] = this->Interactor->AddObserver(
     vtkCommand::LeftButtonReleaseEvent, this, &pqHapticsMouse::onEvent, priority);
+  // Qt's key press reaches the interactor as KeyPressEvent then CharEvent: both are kept
+  // from the style (ParaView's keys) while a key switches a pull.
+  this->Observers[3] = this->Interactor->AddObserver(
+    vtkCommand::KeyPressEvent, this, &pqHapticsMouse::onEvent, priority);
+  this->Observers[4] =
+    this->Interactor->AddObserver(vtkCommand::CharEvent, this, &pqHapticsMouse::onEvent, priority);
+  this->Observers[5] =
+    this->Interactor->AddObserver(vtkCommand::LeaveEvent, this, &pqHapticsMouse::onEvent, priority);
 }
 
 namespace
@@ -88,16 +99,62 @@ bool pqHapticsMouse::pointOnSurface(
   return world.allFinite();
 }
 
-geoshaping::interactor::StylusState pqHapticsMouse::stylus(bool pressSeen,
-  geoshaping::interactor::PullConstraint constraint, const Eigen::Vector3d& up) const
+geoshaping::interactor::StylusState pqHapticsMouse::stylus(
+  bool pressSeen, const Eigen::Vector3d& up)
 {
+  this->Up = up;
   geoshaping::interactor::StylusState s = this->State;
   vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
   if (s.button && !this->Paint && pressSeen && renderer)
   {
-    s.position += this->Pull.displacement(RendererProjection(renderer), constraint, up);
+    s.position += this->Pull.displacement(RendererProjection(renderer), up);
   }
   return s;
+}
+
+bool pqHapticsMouse::paint() const
+{
+  if (this->State.button)
+  {
+    return this->Paint;
+  }
+  auto* interactor = vtkRenderWindowInteractor::SafeDownCast(this->Interactor);
+  return this->InView && interactor && interactor->GetControlKey() != 0;
+}
+
+bool pqHapticsMouse::hover(Eigen::Vector3d& world)
+{
+  vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
+  if (this->State.button || !this->InView || !renderer)
+  {
+    return false;
+  }
+  const vtkMTimeType camera = renderer->GetActiveCamera()->GetMTime();
+  Pick& last = this->LastPick;
+  if (last.pixel[0] != this->HoverPixel[0] || last.pixel[1] != this->HoverPixel[1] ||
+      last.camera != camera)
+  {
+    Eigen::Vector3d normal;
+    last.onSurface = this->pointOnSurface(this->HoverPixel, last.world, normal);
+    last.pixel[0] = this->HoverPixel[0];
+    last.pixel[1] = this->HoverPixel[1];
+    last.camera = camera;
+  }
+  world = last.world;
+  return last.onSurface;
+}
+
+void pqHapticsMouse::setConstraint(geoshaping::interactor::PullConstraint constraint)
+{
+  vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
+  if (renderer && this->State.button && !this->Paint)
+  {
+    this->Pull.constrain(constraint, RendererProjection(renderer), this->Up);
+  }
+  else
+  {
+    this->Pull.set_constraint(constraint); // for the next press
+  }
 }
 
 bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
@@ -121,6 +178,17 @@ bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
       consumed = true;
     }
   }
+  else if (event == vtkCommand::MouseMoveEvent && !this->State.button)
+  {
+    // Hovering: the style still sees it (a drag of the camera).
+    this->InView = true;
+    this->HoverPixel[0] = display[0];
+    this->HoverPixel[1] = display[1];
+  }
+  else if (event == vtkCommand::LeaveEvent)
+  {
+    this->InView = false;
+  }
   else if (event == vtkCommand::MouseMoveEvent && this->State.button)
   {
     Eigen::Vector3d world, normal;
@@ -138,6 +206,21 @@ bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
   {
     this->State.button = false;
     consumed = true;
+  }
+  else if ((event == vtkCommand::KeyPressEvent || event == vtkCommand::CharEvent) &&
+           this->State.button && !this->Paint)
+  {
+    const auto constraint =
+      geoshaping::interactor::constraint_for_key(interactor->GetKeyCode(), this->Pull.constraint());
+    if (constraint && event == vtkCommand::KeyPressEvent)
+    {
+      this->setConstraint(*constraint);
+      if (this->constraintKeyed)
+      {
+        this->constraintKeyed(*constraint);
+      }
+    }
+    consumed = constraint.has_value();
   }
   // true aborts the event: the interactor style (the camera) does not see it.
   return consumed;

@@ -5,11 +5,14 @@
 // pulls the grasp with the cursor (PullControl: in the plane through the grasp parallel
 // to the screen, or along the vertical or the surface normal; Shift held: a tenth of the
 // motion); with Ctrl held at the press the hand paints instead, and the stylus follows
-// the surface.
+// the surface. During a pull the keys of constraint_for_key (Z, N, C) switch its
+// constraint, continuing from where the grasp is.
 #include "HapticsControl.h"
 #include "PullControl.h"
 
 #include <vtkWeakPointer.h>
+
+#include <functional>
 
 class vtkObject;
 class vtkSMRenderViewProxy;
@@ -25,12 +28,20 @@ public:
   // the press (`pressSeen`), then the pressed point plus the pull's displacement, seen
   // through the view's current camera; `up` is the scene's vertical. Painting: the point
   // of the surface under the cursor.
-  geoshaping::interactor::StylusState stylus(bool pressSeen,
-    geoshaping::interactor::PullConstraint constraint, const Eigen::Vector3d& up) const;
+  geoshaping::interactor::StylusState stylus(bool pressSeen, const Eigen::Vector3d& up);
+  // The pull's constraint from now on, also mid-pull (without a jump: PullControl).
+  void setConstraint(geoshaping::interactor::PullConstraint constraint);
+  // Called when a key switches the constraint during a pull (after the switch).
+  std::function<void(geoshaping::interactor::PullConstraint)> constraintKeyed;
   // The grasped vertex (world): the pull's plane and lines go through it.
   void setGrasp(const Eigen::Vector3d& world) { this->Pull.set_grasp(world); }
-  // `paint` is true for a drag that began with Ctrl held.
-  bool paint() const { return this->Paint; }
+  // True for a drag that began with Ctrl held; between drags, while Ctrl is held (the
+  // next press would paint).
+  bool paint() const;
+  // Between drags, the point of the surface under the hovering mouse (world): false when
+  // the mouse is off the surface or out of the view. A pick, made again only when the
+  // mouse or the camera has moved since the last one.
+  bool hover(Eigen::Vector3d& world);
 
 private:
   bool onEvent(vtkObject* caller, unsigned long event, void*);
@@ -38,8 +49,19 @@ private:
 
   vtkWeakPointer<vtkSMRenderViewProxy> View;
   vtkWeakPointer<vtkObject> Interactor;
-  unsigned long Observers[3] = { 0, 0, 0 };
+  unsigned long Observers[6] = { 0, 0, 0, 0, 0, 0 };
   geoshaping::interactor::StylusState State; // the pressed point, or the painting point
   geoshaping::interactor::PullControl Pull;
   bool Paint = false;
+  Eigen::Vector3d Up = Eigen::Vector3d::UnitZ(); // the scene's vertical at the last frame
+  // Hovering: the mouse's pixel in the view (none: out of it), and the last pick there.
+  bool InView = false;
+  int HoverPixel[2] = { 0, 0 };
+  struct Pick
+  {
+    int pixel[2] = { -1, -1 };
+    vtkMTimeType camera = 0;
+    bool onSurface = false;
+    Eigen::Vector3d world = Eigen::Vector3d::Zero();
+  } LastPick;
 };

@@ -113,8 +113,61 @@ void BM_FilterUpdateLargeGraspWithNormals(benchmark::State& state)
   state.counters["displaced"] = double(filter->GetNumberOfDisplacedPoints());
   state.counters["core_ms"] = filter->GetLastDeformationMilliseconds();
 }
+// The settle pass (docs/editing.md, "Bounds once the shape settles"): a ~1,000-vertex pull
+// on the 1,000,000-vertex surface, committed and released (the release frame lists its
+// change as exact), then undone (exact again); with range(0) = 1 each settled output is
+// asked for its bounds and coordinate ranges, as ParaView's data information asks, which
+// is where the pass over every point runs. The difference of the two rows is its cost.
+void BM_ReleaseAndUndoOnLargeSurface(benchmark::State& state)
+{
+  const vtkIdType n = 1000;
+  auto grid = Grid(n);
+  vtkNew<vtkChainMailDeformationFilter> filter;
+  filter->SetInputData(grid);
+  const vtkIdType grasp = (n / 2) * n + n / 2;
+  const double pull = PullForThousand();
+  filter->Update();
+  const bool query = state.range(0) != 0;
+  double sink = 0.0;
+  auto settled = [&]
+  {
+    filter->Update();
+    if (query)
+    {
+      vtkPoints* points = filter->GetOutput()->GetPoints();
+      double b[6], r[2];
+      filter->GetOutput()->GetBounds(b);
+      for (int c = 0; c < 3; ++c)
+      {
+        points->GetData()->GetRange(r, c);
+        sink += r[1];
+      }
+      points->GetData()->GetRange(r, -1);
+      sink += b[5] + r[1];
+    }
+  };
+  for (auto _ : state)
+  {
+    filter->SetGraspPointId(grasp);
+    filter->SetDisplacement(0, 0, pull);
+    filter->Update(); // the drag frame
+    filter->CommitEdit();
+    filter->SetGraspPointId(-1);
+    filter->SetDisplacement(0, 0, 0);
+    settled(); // the release
+    filter->UndoEdit();
+    settled(); // the undo
+  }
+  benchmark::DoNotOptimize(sink);
+  state.counters["rebuilds"] = double(filter->GetNumberOfRebuilds());
+}
 } // namespace
 
+BENCHMARK(BM_ReleaseAndUndoOnLargeSurface)
+  ->Arg(0)
+  ->Arg(1)
+  ->Unit(benchmark::kMillisecond)
+  ->MinTime(1.0);
 BENCHMARK(BM_FilterUpdate)->Arg(200)->Arg(2000)->Unit(benchmark::kMicrosecond)->MinTime(0.5);
 BENCHMARK(BM_FilterUpdateWithPasses)
   ->Args({ 4, 0 })

@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace
 {
 vtkSmartPointer<vtkGrowingBoundsPoints> Line(int n)
@@ -81,6 +84,103 @@ TEST(GrowingBoundsPoints, AnyOtherModificationTakesAnExactPass)
   points->Modified();
   points->GetBounds(b);
   EXPECT_EQ(b[1], 8.0); // exact again: shrinks
+}
+
+namespace
+{
+// A 20 x 20 grid in the plane z = 0 with a bump, as float points (as the filter's output).
+vtkSmartPointer<vtkGrowingBoundsPoints> Grid()
+{
+  auto points = vtkSmartPointer<vtkGrowingBoundsPoints>::New();
+  points->SetDataTypeToFloat();
+  for (int j = 0; j < 20; ++j)
+    for (int i = 0; i < 20; ++i)
+      points->InsertNextPoint(i, j, (i == 3 && j == 4) ? 2.0 : 0.1 * ((i * 7 + j * 3) % 5));
+  return points;
+}
+
+// What a pass over every point gives: the box and the norm range.
+void Brute(vtkPoints* points, double box[6], double norm[2])
+{
+  vtkNew<vtkPoints> copy;
+  copy->DeepCopy(points);
+  copy->GetBounds(box);
+  norm[0] = VTK_DOUBLE_MAX;
+  norm[1] = 0.0;
+  for (vtkIdType i = 0; i < copy->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    copy->GetPoint(i, x);
+    const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    norm[0] = std::min(norm[0], r);
+    norm[1] = std::max(norm[1], r);
+  }
+}
+
+void Move(vtkGrowingBoundsPoints* points, vtkIdType id, double x, double y, double z, bool exact)
+{
+  points->SetPoint(id, x, y, z);
+  points->PointsChanged(&id, 1, exact);
+}
+} // namespace
+
+TEST(GrowingBoundsPoints, ASettleAwayFromTheExtremesIsExactWithoutAPassOverEveryPoint)
+{
+  // A drag of interior points out beyond the box and partly back, then the release: the
+  // exact box and norm range come from the rest box and the moved points alone.
+  auto points = Grid();
+  double b[6], range[2];
+  points->GetBounds(b);
+  EXPECT_EQ(points->GetNumberOfFullPasses(), 1);
+  Move(points, 210, 10, 10, 9.0, false); // up, beyond the bump
+  Move(points, 211, 11, 10, -3.0, false);
+  points->GetBounds(b);
+  EXPECT_EQ(b[5], 9.0);
+  Move(points, 210, 10, 10, 1.5, false); // back down, still moved
+  Move(points, 211, 11, 10, 0.0, true);  // the release
+  double box[6], norm[2];
+  Brute(points, box, norm);
+  points->GetBounds(b);
+  for (int k = 0; k < 6; ++k)
+    EXPECT_EQ(b[k], box[k]) << k;
+  EXPECT_EQ(b[5], 2.0); // shrank back to the bump
+  points->GetData()->GetRange(range, -1);
+  EXPECT_EQ(range[0], norm[0]);
+  EXPECT_EQ(range[1], norm[1]);
+  points->GetData()->GetRange(range, 2);
+  EXPECT_EQ(range[1], 2.0);
+  EXPECT_EQ(points->GetNumberOfFullPasses(), 1);
+  // The settled state is the next exact one: a second drag and release, beyond the box.
+  Move(points, 100, 0, 5, 7.0, false);
+  Move(points, 100, 0, 5, 4.0, true);
+  points->GetBounds(b);
+  Brute(points, box, norm);
+  for (int k = 0; k < 6; ++k)
+    EXPECT_EQ(b[k], box[k]) << k;
+  EXPECT_EQ(b[5], 4.0);
+  // The same point pulled further (it is the witness of z max now, moved outward).
+  Move(points, 100, 0, 5, 6.0, true);
+  points->GetBounds(b);
+  EXPECT_EQ(b[5], 6.0);
+  EXPECT_EQ(points->GetNumberOfFullPasses(), 1);
+}
+
+TEST(GrowingBoundsPoints, ASettleThatMovedAnExtremePointPassesOverEveryPoint)
+{
+  // The bump (the highest point) pulled down: z max shrinks to the next highest point,
+  // which only a pass over every point finds.
+  auto points = Grid();
+  double b[6];
+  points->GetBounds(b);
+  EXPECT_EQ(b[5], 2.0);
+  Move(points, 4 * 20 + 3, 3, 4, 0.0, true);
+  double box[6], norm[2];
+  Brute(points, box, norm);
+  points->GetBounds(b);
+  for (int k = 0; k < 6; ++k)
+    EXPECT_EQ(b[k], box[k]) << k;
+  EXPECT_LT(b[5], 2.0);
+  EXPECT_EQ(points->GetNumberOfFullPasses(), 2);
 }
 
 TEST(GrowingBoundsPoints, ChangesAreFollowedOnlyFromTheDirectlyPreviousUpdate)

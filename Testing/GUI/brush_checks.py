@@ -1,7 +1,8 @@
-"""The GUI tests of the brush (run_gui_test.py modes brush_*): a 1,000 km square surface in
-metres (a GOCAD TSurf with AXIS_UNIT m, opened with the plugin's reader), painted with the
-mouse through the plugin's test hook (GEOSHAPING_HAPTICS_MOUSE_SCRIPT, see
-TestHook/pqHapticsTestScript.h); checked from the hook's snapshots."""
+"""The GUI tests of the brush and of the keyed pull (run_gui_test.py modes brush_* and
+pull_keys): a 1,000 km square surface in metres (a GOCAD TSurf with AXIS_UNIT m, opened
+with the plugin's reader), painted or pulled with the mouse through the plugin's test hook
+(GEOSHAPING_HAPTICS_MOUSE_SCRIPT, see TestHook/pqHapticsTestScript.h); checked from the
+hook's snapshots."""
 import math
 import os
 
@@ -34,6 +35,17 @@ SCRIPTS = {
                   "snapshot stroke; undo; snapshot undo1; undo; snapshot undo2; redo; "
                   "snapshot redo1; redo; snapshot redo2; editundo; snapshot editundo; "
                   "editredo; snapshot editredo",
+    # Hovering with Ctrl held (the next press would paint): the brush cursor shows where a
+    # dab would land; not without Ctrl, off the surface, or once the mouse left the view.
+    "brush_hover": "hover 0.45 0.5 ctrl; snapshot hover; hover 0.55 0.42 ctrl; snapshot hover2; "
+                   "hover 0.45 0.5; snapshot noctrl; hover 0.02 0.02 ctrl; snapshot off; "
+                   "hover 0.5 0.5 ctrl; snapshot back; leave; snapshot left",
+    # A free pull, then Z typed mid-drag (through Qt, as a user's key): vertical from there
+    # on; Z again frees it; seen from the south-west, so the vertical is not end-on.
+    "pull_keys": "press 0.5 0.5; move 0.53 0.51; move 0.56 0.52; snapshot free; key Z; "
+                 "snapshot switched; move 0.58 0.58; move 0.6 0.65; snapshot vertical; key Z; "
+                 "snapshot freed; move 0.55 0.7; snapshot free2; release; wait; "
+                 "snapshot released",
 }
 
 
@@ -66,6 +78,8 @@ def prepare(mode, out, env):
     env["GEOSHAPING_HAPTICS_MOUSE_SCRIPT"] = SCRIPTS[mode]
     env["GEOSHAPING_GUI_SETUP"] = os.path.join(here, "gui_setup_brush.py")
     env["GEOSHAPING_GUI_SURFACE"] = out + ".ts"
+    if mode == "pull_keys":
+        env["GEOSHAPING_GUI_CAMERA"] = "oblique"
     if mode in ("brush_fast", "brush_undo"):
         env["GEOSHAPING_GUI_FALLOFF"] = "Constant"  # every vertex under a dab gets its share
 
@@ -206,5 +220,74 @@ def check_undo(out):
     assert np.array_equal(rows[:, 6], stroke[:, 6]), "Edit > Redo did not put the stroke back"
 
 
+def check_hover(out):
+    """The brush cursor while hovering: at the surface point under the mouse, the brush's
+    radius in world units, a cage; hidden without Ctrl, off the surface, out of the view.
+    Hovering paints nothing."""
+    steps = {name: snapshot(out, name)[0]
+             for name in ("hover", "hover2", "noctrl", "off", "back", "left")}
+    kinds = [kind for kind, p in picks(out)]
+    at = [p for kind, p in picks(out)]
+    # Picks on the surface: hover, hover2, noctrl, back (the corner of the view is off it).
+    assert kinds == ["hover"] * 4, kinds
+    for name, texts in steps.items():
+        print("%-7s cursors %s %s" % (name, texts["cursors"], texts.get("cursor_0", "")))
+    radius = float(steps["hover"]["brush_radius"])
+    for name, pick in (("hover", at[0]), ("hover2", at[1]), ("back", at[3])):
+        texts = steps[name]
+        assert texts["cursors"] == "1", (name, texts)
+        c = [float(v) for v in texts["cursor_0"].split()]
+        print("%s: cursor %.3f m from the pick, radius %.3f m (brush %.3f m), representation %d"
+              % (name, np.linalg.norm(np.array(c[:3]) - pick), c[3], radius, c[4]))
+        assert np.linalg.norm(np.array(c[:3]) - pick) <= 1e-6 * radius, (name, c, pick)
+        assert abs(c[3] - radius) <= 1e-9 * radius and c[4] == 1, (name, c, radius)
+    for name in ("noctrl", "off", "left"):
+        assert steps[name]["cursors"] == "0", (name, steps[name])
+    assert all(t["dab_values"] == "0" and t["point_dab_values"] == "0" for t in steps.values())
+    cage = changed_pixels(out + "-hover.png", out + "-noctrl.png")
+    print("the hovering cursor: %d pixels differ from the view without it" % cage)
+    assert cage > 100, cage
+
+
+def vector(results, key):
+    return np.array([float(v) for v in results[key].split()])
+
+
+def check_pull_keys(out):
+    """Z mid-drag: the displacement does not jump at the key, the dock's Pull row shows
+    Vertical only, and from then on x and y stay (dx = dy = 0) while z follows the cursor;
+    Z again: free, without a jump, and x, y move again. The grasped vertex shows where the
+    Displacement puts it."""
+    steps = {name: snapshot(out, name)
+             for name in ("free", "switched", "vertical", "freed", "free2", "released")}
+    d = {name: vector(texts, "Displacement") for name, (texts, _) in steps.items()}
+    for name, (texts, _) in steps.items():
+        print("%-8s Pull row %s, grasp %s, Displacement %s" % (
+            name, texts.get("pull_constraint"), texts["GraspPointId"], d[name]))
+    free, switched, vertical = d["free"], d["switched"], d["vertical"]
+    size = np.linalg.norm(free)
+    assert size > 1e3 and abs(free[0]) > 1e-3 * size, "the free pull did not move: %s" % free
+    assert steps["free"][0]["pull_constraint"] == "0", steps["free"][0]
+    assert steps["switched"][0]["pull_constraint"] == "1", "Z did not switch to Vertical only"
+    assert np.linalg.norm(switched - free) <= 1e-9 * size, ("a jump at the key", free, switched)
+    assert vertical[0] == switched[0] and vertical[1] == switched[1], (switched, vertical)
+    assert vertical[2] - switched[2] > 1e-2 * size, ("the vertical pull did not rise", vertical)
+    assert steps["freed"][0]["pull_constraint"] == "0", "Z again did not free the pull"
+    assert np.linalg.norm(d["freed"] - vertical) <= 1e-9 * size, ("a jump at the second key",)
+    assert np.linalg.norm((d["free2"] - d["freed"])[:2]) > 1e-3 * size, d["free2"]
+    for name in ("free", "vertical", "free2"):
+        texts, rows = steps[name]
+        grasp = int(texts["GraspPointId"])
+        moved = rows[grasp, 3:6] - rows[grasp, :3]
+        print("%s: the grasped vertex moved %s" % (name, moved))
+        assert np.linalg.norm(moved - d[name]) <= 1e-6 * np.linalg.norm(d[name]), (name, moved)
+    released, _ = steps["released"]
+    assert released["edit_history"] == "1" and released["GraspPointId"] == "-1", released
+    print("keyed pull: dz %.1f m after Z, dx = dy = 0; at the keys |jump| = %g and %g m" % (
+        vertical[2] - switched[2], np.linalg.norm(switched - free),
+        np.linalg.norm(d["freed"] - vertical)))
+
+
 def check(mode, out):
-    {"brush_default": check_default, "brush_fast": check_fast, "brush_undo": check_undo}[mode](out)
+    {"brush_default": check_default, "brush_fast": check_fast, "brush_undo": check_undo,
+     "brush_hover": check_hover, "pull_keys": check_pull_keys}[mode](out)

@@ -315,7 +315,8 @@ def main():
         gui_pvserver.run(out, read_results)
         return
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
-    if mode.startswith("brush_"):
+    scripted = mode.startswith("brush_") or mode == "pull_keys"  # brush_checks.SCRIPTS
+    if scripted:
         import brush_checks
         brush_checks.prepare(mode, out, env)
     if mode == "touch":
@@ -349,9 +350,9 @@ def main():
     assert results["started"] == "1" and results["timed_out"] == "0", results
     assert results["dock_visible"] == "1" and results["dock_title"] == "Haptics", results
     assert int(results["frames"]) >= 5, "too few interactor frames"
-    if mode.startswith("brush_"):
+    if scripted:
         brush_checks.check(mode, out)
-        print("GUI brush test passed; screenshots:", out + "-*.png")
+        print("GUI %s test passed; screenshots:" % mode, out + "-*.png")
         return
     if mode == "openhaptics":
         check_openhaptics_fault(results)

@@ -11,22 +11,34 @@
 #include <pqUndoStack.h>
 #include <pqView.h>
 
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
 #include <vtkAlgorithm.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkMapper.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
+#include <vtkProperty.h>
 #include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
 #include <vtkSMPropertyHelper.h>
 #include <vtkSMProxy.h>
 #include <vtkSMRenderViewProxy.h>
 #include <vtkSMSourceProxy.h>
+#include <vtkSphereSource.h>
 
+#include <QVTKOpenGLNativeWidget.h>
+#include <QVTKOpenGLStereoWidget.h>
+#include <QVTKOpenGLWindow.h>
+
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
 #include <QPixmap>
 #include <QPushButton>
+#include <QTest>
 #include <QTextStream>
 #include <QToolButton>
 #include <QWidget>
@@ -61,9 +73,13 @@ bool pqHapticsTestScript::step()
   this->AfterFrame = frames + 1;
   const QStringList words = this->Steps[this->Next++].split(' ', Qt::SkipEmptyParts);
   const QString& verb = words[0];
-  if (verb == "press" || verb == "move" || verb == "release")
+  if (verb == "press" || verb == "move" || verb == "release" || verb == "hover" || verb == "leave")
   {
     this->mouse(words);
+  }
+  else if (verb == "key" && words.size() > 1)
+  {
+    this->key(words[1]);
   }
   else if (verb == "swatch" && words.size() > 1)
   {
@@ -119,9 +135,10 @@ void pqHapticsTestScript::mouse(const QStringList& words)
   {
     return;
   }
-  if (words[0] == "release")
+  if (words[0] == "release" || words[0] == "leave")
   {
-    interactor->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
+    interactor->InvokeEvent(
+      words[0] == "release" ? vtkCommand::LeftButtonReleaseEvent : vtkCommand::LeaveEvent);
     return;
   }
   const int* size = interactor->GetSize();
@@ -141,6 +158,30 @@ void pqHapticsTestScript::mouse(const QStringList& words)
     QTextStream(&file) << words[0] << " " << QString::number(p[0], 'g', 17) << " "
                        << QString::number(p[1], 'g', 17) << " " << QString::number(p[2], 'g', 17)
                        << "\n";
+  }
+}
+
+void pqHapticsTestScript::key(const QString& key)
+{
+  // To the widget (or window) that shows the view, where a user's key goes once the view
+  // is clicked, with Qt's shortcut override first: a ParaView shortcut on the key would
+  // take it, as it would from the user.
+  pqView* view = pqActiveObjects::instance().activeView();
+  QWidget* widget = view ? view->widget() : nullptr;
+  const QKeySequence sequence(key);
+  if (!widget || sequence.count() != 1)
+  {
+    return;
+  }
+  const auto code = Qt::Key(sequence[0] & ~Qt::KeyboardModifierMask);
+  const auto modifiers = Qt::KeyboardModifiers(sequence[0] & Qt::KeyboardModifierMask);
+  if (auto* native = widget->findChild<QVTKOpenGLNativeWidget*>())
+  {
+    QTest::keyClick(native, code, modifiers);
+  }
+  else if (auto* stereo = widget->findChild<QVTKOpenGLStereoWidget*>())
+  {
+    QTest::keyClick(stereo->embeddedOpenGLWindow(), code, modifiers);
   }
 }
 
@@ -199,6 +240,7 @@ void pqHapticsTestScript::snapshot(const QString& name)
       out << QString::number(m->GetTuple1(i), 'g', 9) << "\n";
     }
   }
+  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
   QFile file(prefix + ".txt");
   if (file.open(QIODevice::WriteOnly | QIODevice::Text))
   {
@@ -219,13 +261,46 @@ void pqHapticsTestScript::snapshot(const QString& name)
     {
       out << "edit_history = " << vtkSMPropertyHelper(proxy, "EditHistory").GetNumberOfElements()
           << "\n";
+      double d[3];
+      vtkSMPropertyHelper(proxy, "Displacement").Get(d, 3);
+      out << "Displacement = " << QString::number(d[0], 'g', 17) << " "
+          << QString::number(d[1], 'g', 17) << " " << QString::number(d[2], 'g', 17) << "\n";
+      out << "GraspPointId = " << vtkSMPropertyHelper(proxy, "GraspPointId").GetAsIdType() << "\n";
+    }
+    // The cursors shown: the view's visible sphere actors other than the data.
+    int cursors = 0;
+    vtkRenderer* renderer = view ? view->getRenderViewProxy()->GetRenderer() : nullptr;
+    vtkActorCollection* actors = renderer ? renderer->GetActors() : nullptr;
+    vtkCollectionSimpleIterator it;
+    if (actors)
+    {
+      actors->InitTraversal(it);
+    }
+    while (vtkActor* actor = actors ? actors->GetNextActor(it) : nullptr)
+    {
+      auto* sphere = actor->GetMapper()
+                       ? vtkSphereSource::SafeDownCast(actor->GetMapper()->GetInputAlgorithm())
+                       : nullptr;
+      if (sphere && actor->GetVisibility())
+      {
+        const double* c = sphere->GetCenter();
+        out << "cursor_" << cursors++ << " = " << QString::number(c[0], 'g', 17) << " "
+            << QString::number(c[1], 'g', 17) << " " << QString::number(c[2], 'g', 17) << " "
+            << QString::number(sphere->GetRadius(), 'g', 17) << " "
+            << actor->GetProperty()->GetRepresentation() << "\n";
+      }
+    }
+    out << "cursors = " << cursors << "\n";
+    if (auto* pull = this->Dock->findChild<QComboBox*>("PullConstraint"))
+    {
+      out << "pull_constraint = " << pull->currentData().toInt() << "\n";
     }
     for (const char* label : { "BrushRadius", "BrushRadiusAbout", "BrushNote", "Edits" })
     {
       out << "label_" << label << " = " << text(this->Dock, label) << "\n";
     }
   }
-  if (pqView* view = pqActiveObjects::instance().activeView())
+  if (view)
   {
     view->widget()->grab().save(prefix + ".png");
   }

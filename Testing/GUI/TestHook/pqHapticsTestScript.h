@@ -5,6 +5,10 @@
 //   press X Y [ctrl]   left button down (with Ctrl: paint), the pick written to <out>.picks
 //   move X Y           the mouse moves there (button held), the pick written too
 //   release            left button up
+//   hover X Y [ctrl]   the mouse moves there, no button (with Ctrl held), the pick written
+//   leave              the mouse leaves the view
+//   key K              the key K pressed and released on the render view's window, as the
+//                      window system delivers it (Qt's shortcuts first, then the view)
 //   swatch I           clicks the dock's malleability swatch I (0 ... 10)
 //   radius R           types R into the dock's brush radius
 //   undo | redo        clicks the dock's Undo / Redo
@@ -16,7 +20,9 @@
 //   savestate          File > Save State to <out>.pvsm
 //   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
-//                      brush, the paint lists' sizes, the dock's texts) and <out>-NAME.png
+//                      brush, the paint lists' sizes, the pull (Displacement, grasp,
+//                      the dock's Pull row), the shown cursors (centre, radius), the
+//                      dock's texts) and <out>-NAME.png
 //                      (the render view)
 //   wait               nothing this poll
 // Each step waits for one interactor frame after the previous one, so that the frames
@@ -37,6 +43,7 @@ private:
   void snapshot(const QString& name);
   void dump(const QString& name);
   void mouse(const QStringList& words);
+  void key(const QString& key);
 
   pqHapticsDockPanel* Dock;
   QStringList Steps;
