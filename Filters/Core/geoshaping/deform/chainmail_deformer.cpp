@@ -366,7 +366,11 @@ void ChainMailDeformer::begin_adopted_frame(std::size_t moves)
   moved_root_.resize(moves);
 }
 
-void ChainMailDeformer::move(
+#if defined(__GNUC__)
+__attribute__((always_inline)) // once per moved vertex: not worth a call
+#endif
+inline void
+ChainMailDeformer::move(
   index_t i, const Eigen::Vector3d& d, index_t sponsor_slot, const SuperstepRoot& root, bool gate)
 {
   nodes_[std::size_t(i)].stamp = frame_;

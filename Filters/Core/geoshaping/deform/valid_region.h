@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -68,6 +69,23 @@ inline RegionParams region_params(const ChainMailParams& p)
   return { p.stretch - 1.0, p.compression - 1.0, p.shear };
 }
 
+// Axis i of the box below: o_i and s_i = sum_{j!=i} |o_j| give [lo, hi]. Written without
+// a branch on the sign of o_i (a branch the hot path mispredicts): with k - 1 <= 0 <= t - 1
+// (a TransferFunction's output), (k - 1) o_i <= (t - 1) o_i for o_i >= 0 and the reverse
+// for o_i < 0, so the formula's pick is min(near, far) for lo and max(far, near) for hi.
+// The two agree bit for bit except for the sign of a zero: the operand order returns
+// near (lo) and far (hi) on ties, as the formula does for o_i >= 0 (+0 and -0 included);
+// a tie at o_i < 0 needs near = far = 0, and there a zero of the other sign in lo or hi
+// changes no clamp below (lo is clamped from 0 by max(0, .), which returns +0 for either
+// zero; a zero hi matters only when max(0, u + lo) > 0, i.e. lo > hi, which cannot be).
+inline void axis_bounds(double o_i, double s_i, const RegionParams& p, double& lo, double& hi)
+{
+  const double near = p.compression_minus_1 * o_i; // toward the sponsor (compression)
+  const double far = p.stretch_minus_1 * o_i;      // away from the sponsor (stretch)
+  lo = std::min(near, far) - p.shear * s_i;
+  hi = std::max(far, near) + p.shear * s_i;
+}
+
 // Box for the displacement of the candidate relative to the sponsor's displacement.
 inline Box displacement_bounds(const Eigen::Vector3d& o, const RegionParams& p)
 {
@@ -75,14 +93,7 @@ inline Box displacement_bounds(const Eigen::Vector3d& o, const RegionParams& p)
   const Eigen::Vector3d s(a.y() + a.z(), a.x() + a.z(), a.x() + a.y());
   Box b;
   for (int i = 0; i < 3; ++i)
-  {
-    const double near = p.compression_minus_1 * o[i]; // toward the sponsor (compression)
-    const double far = p.stretch_minus_1 * o[i];      // away from the sponsor (stretch)
-    const double lo = o[i] >= 0.0 ? near : far;
-    const double hi = o[i] >= 0.0 ? far : near;
-    b.lo[i] = lo - p.shear * s[i];
-    b.hi[i] = hi + p.shear * s[i];
-  }
+    axis_bounds(o[i], s[i], p, b.lo[i], b.hi[i]);
   return b;
 }
 
@@ -181,8 +192,19 @@ inline Eigen::Vector3d required_displacement(
 {
   if constexpr (Frame == ValidRegionFrame::axes)
   {
-    const Box b = displacement_bounds(o, p);
-    return Eigen::Vector3d::Zero().cwiseMax(sponsor_u + b.lo).cwiseMin(sponsor_u + b.hi);
+    // clamp(0, u[s] + lo, u[s] + hi) axis by axis, the box's operations in scalars (the
+    // deformer's hot path): std::max(0, .) then std::min(., .), the semantics of
+    // Eigen's cwiseMax / cwiseMin, signed zeros and NaN included.
+    const double ax = std::abs(o.x()), ay = std::abs(o.y()), az = std::abs(o.z());
+    const double s[3] = { ay + az, ax + az, ax + ay };
+    Eigen::Vector3d r;
+    for (int i = 0; i < 3; ++i)
+    {
+      double lo, hi;
+      axis_bounds(o[i], s[i], p, lo, hi);
+      r[i] = std::min(std::max(0.0, sponsor_u[i] + lo), sponsor_u[i] + hi);
+    }
+    return r;
   }
   else
   {
