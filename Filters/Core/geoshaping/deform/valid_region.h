@@ -70,14 +70,17 @@ inline RegionParams region_params(const ChainMailParams& p)
 }
 
 // Axis i of the box below: o_i and s_i = sum_{j!=i} |o_j| give [lo, hi]. Written without
-// a branch on the sign of o_i (a branch the hot path mispredicts): with k - 1 <= 0 <= t - 1
-// (a TransferFunction's output), (k - 1) o_i <= (t - 1) o_i for o_i >= 0 and the reverse
-// for o_i < 0, so the formula's pick is min(near, far) for lo and max(far, near) for hi.
-// The two agree bit for bit except for the sign of a zero: the operand order returns
-// near (lo) and far (hi) on ties, as the formula does for o_i >= 0 (+0 and -0 included);
-// a tie at o_i < 0 needs near = far = 0, and there a zero of the other sign in lo or hi
-// changes no clamp below (lo is clamped from 0 by max(0, .), which returns +0 for either
-// zero; a zero hi matters only when max(0, u + lo) > 0, i.e. lo > hi, which cannot be).
+// a branch on the sign of o_i (a branch the hot path mispredicts). For parameters in the
+// transfer function's domain (t >= 1, k <= 1, so k - 1 <= 0 <= t - 1, each +0 or nonzero)
+// near = (k - 1) o_i <= 0 <= far = (t - 1) o_i when o_i >= 0, and the reverse when
+// o_i < 0, so the formula's pick (near for lo when o_i >= 0, else far; hi the other) is
+// min(near, far) for lo and max(far, near) for hi, bit for bit: on a tie std::min and
+// std::max return their first operand, which is the formula's pick for o_i >= 0 (+0 and
+// -0 included); for o_i < 0 a tie needs both products zero, and (+0) o_i is -0 for
+// both. The one exception is a product that underflows (|o_i| below ~1e-292): then lo or
+// hi may be a zero of the other sign, which required_displacement's clamps absorb (a lo
+// of either zero is clamped by max(0, .) to +0; a zero hi matters only if
+// max(0, u + lo) > 0, i.e. lo > hi, which cannot be).
 inline void axis_bounds(double o_i, double s_i, const RegionParams& p, double& lo, double& hi)
 {
   const double near = p.compression_minus_1 * o_i; // toward the sponsor (compression)
