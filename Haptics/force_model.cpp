@@ -68,16 +68,20 @@ Eigen::Vector3d faded(const Eigen::Vector3d& f, double g, double f_max)
 ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   const ForceParams& params, const DeviceLimits& limits, ContactProxy& proxy, ForceFade* fade)
 {
-  // A fault renders zero at once and forgets the proxy; the force then fades back in.
-  auto fault = [&](ForceStatus why)
+  // A fault renders zero at once; the force then fades back in. `forget` also drops the
+  // proxy: the device's state is unknown (an error) or the proxy itself may be corrupt (a
+  // non-finite result). A non-finite input sample keeps it: the proxy never saw that
+  // sample, and it alone knows the side a pressed stylus came from.
+  auto fault = [&](ForceStatus why, bool forget)
   {
-    proxy.reset();
+    if (forget)
+      proxy.reset();
     if (fade)
       *fade = ForceFade{ 0.0, 0.0 };
     return zero(why);
   };
   if (!in.device_ok)
-    return fault(ForceStatus::device_error);
+    return fault(ForceStatus::device_error, true);
   if (scene.stamp == Clock::time_point())
   {
     // Never published (a loop just started): nothing to render, nothing to fade from.
@@ -87,7 +91,7 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   if (!in.position.allFinite() || !in.velocity.allFinite() ||
       (scene.grasping &&
         (!scene.grasp_anchor.allFinite() || !std::isfinite(scene.grasp_stiffness))))
-    return fault(ForceStatus::non_finite);
+    return fault(ForceStatus::non_finite, false);
 
   // A stale scene stops the coupling (the graphics side no longer follows the drag) but
   // keeps the proxy and its contact with the last patch, the surface the frozen view
@@ -147,7 +151,7 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
 
   const double n = r.force.allFinite() ? r.force.stableNorm() : HUGE_VAL;
   if (!std::isfinite(n) || !proxy.position().allFinite())
-    return fault(ForceStatus::non_finite);
+    return fault(ForceStatus::non_finite, true);
   if (n > f_max)
     r.force *= f_max / n;
   return r;

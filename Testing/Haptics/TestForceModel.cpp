@@ -353,6 +353,36 @@ TEST(ForceModel, ForceIsZeroWhenAnyInputIsNonFinite)
   EXPECT_LE(r.force.norm(), limits.max_force);
 }
 
+TEST(ForceModel, ANonFiniteSampleDoesNotLetAPressedStylusFallThrough)
+{
+  // A stylus pressed 2 mm under the floor; one sample reads NaN (a glitch of the
+  // device's driver). That tick renders zero, but the proxy keeps the side the stylus
+  // came from: the next finite sample, still under the floor, is pushed back up, the
+  // force fading back in (a proxy reset there would start afresh under the floor and
+  // let the hand fall through).
+  const DeviceLimits limits;
+  const ForceParams params;
+  const SceneSnapshot scene = floor_scene();
+  ContactProxy proxy;
+  ForceFade fade;
+  geoshaping::haptics::compute_force(at({ 0, 0, 0.01 }), scene, params, limits, proxy, &fade);
+  ASSERT_TRUE(
+    geoshaping::haptics::compute_force(at({ 0, 0, -0.002 }), scene, params, limits, proxy, &fade)
+      .in_contact);
+  const ForceResult glitch = geoshaping::haptics::compute_force(
+    at({ not_a_number, 0, 0 }), scene, params, limits, proxy, &fade);
+  EXPECT_EQ(glitch.status, ForceStatus::non_finite);
+  EXPECT_EQ(glitch.force, Eigen::Vector3d::Zero());
+  const ForceResult back =
+    geoshaping::haptics::compute_force(at({ 0, 0, -0.002 }), scene, params, limits, proxy, &fade);
+  EXPECT_EQ(back.status, ForceStatus::ok);
+  EXPECT_TRUE(back.in_contact);
+  EXPECT_NEAR(back.proxy.z(), params.proxy_clearance, 1e-12);
+  EXPECT_GT(back.force.z(), 0.0);
+  // Faded in: no more than max force times one fade step on the first tick back.
+  EXPECT_LE(back.force.norm(), limits.max_force * params.servo_period / params.fade_time + 1e-12);
+}
+
 TEST(ForceModel, ForceNeverExceedsTheMaximumAndIsNeverNaNOverRandomInputs)
 {
   std::mt19937_64 rng(42);

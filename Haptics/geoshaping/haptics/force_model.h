@@ -117,11 +117,13 @@ struct ForceResult
 // max force (direction kept, norm computed without overflow): a projection onto a ball,
 // so saturation never makes a step larger than the unsaturated force's.
 //
-// Faults give exactly zero (never NaN), with the reason in `status`, reset the proxy
-// (nothing is known of the side the stylus is on when rendering resumes) and the fades
+// Faults give exactly zero (never NaN), with the reason in `status`, and reset the fades
 // (the force fades back in): device error, any non-finite input, or a non-finite result
-// (e.g. overflow from an absurd position). A scene never published gives zero and resets
-// the proxy.
+// (e.g. overflow from an absurd position). A device error and a non-finite result also
+// reset the proxy (nothing is known of the side the stylus is on when rendering
+// resumes); a non-finite input sample keeps it, so one glitched sample of a stylus
+// pressed into a surface does not let it fall through. A scene never published gives
+// zero and resets the proxy.
 //
 // A stale scene (older than max(stale_after, min(scene.valid_for, stale_after_max))) is
 // not a fault for contact: status stale_scene, the coupling fades out, and the proxy is
