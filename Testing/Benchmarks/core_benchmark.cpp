@@ -19,6 +19,7 @@
 // Priority frame at the paper's scale, timed the same way (frame, envelope, frame, ...), in
 // a drag and on a grasp's first frame.
 #include "bench_scenes.h"
+#include "geoshaping/parallel/thread_clock.h"
 #include "geoshaping/passes/link_projection.h"
 #include "geoshaping/passes/relaxation.h"
 #include "geoshaping/scenes/sample_scenes.h"
@@ -28,7 +29,6 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <ctime>
 
 #include <map>
 #include <memory>
@@ -203,14 +203,6 @@ void BM_Relaxation(benchmark::State& state)
   state.SetLabel(target == 0 ? "fault step" : "painted grid");
 }
 
-// This thread's CPU time: on a loaded machine it leaves out the time other processes ran.
-double thread_seconds()
-{
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
 // Arguments: displaced target; 0 a drag (the projector kept across iterations, as the
 // filter keeps it) or 1 a grasp's first frame (a fresh projector each iteration,
 // allocated untimed as the filter does once per link data: the link cache is empty).
@@ -239,11 +231,11 @@ void BM_Envelope(benchmark::State& state)
       projector = std::make_unique<LinkProjector>(links);
       state.ResumeTiming();
     }
-    const double t0 = thread_seconds();
+    const double t0 = thread_cpu_seconds();
     r = s.deformer->deform(s.grasp, { 0.0, 0.0, s.pull });
-    const double t1 = thread_seconds();
+    const double t1 = thread_cpu_seconds();
     report = refine_links(*projector, *s.deformer, s.grasp, options);
-    const double t2 = thread_seconds();
+    const double t2 = thread_cpu_seconds();
     frame_s += t1 - t0;
     envelope_s += t2 - t1;
     benchmark::DoNotOptimize(report.violation);
@@ -345,11 +337,11 @@ void BM_CoreVsNaive(benchmark::State& state)
   std::size_t core_moved = 0, naive_moved = 0;
   for (auto _ : state)
   {
-    const double t0 = thread_seconds();
+    const double t0 = thread_cpu_seconds();
     core_moved = s->core.deform(s->grasp, d).moved;
-    const double t1 = thread_seconds();
+    const double t1 = thread_cpu_seconds();
     naive_moved = s->naive->deform(s->grasp, d, banded);
-    const double t2 = thread_seconds();
+    const double t2 = thread_cpu_seconds();
     core_s += t1 - t0;
     naive_s += t2 - t1;
   }

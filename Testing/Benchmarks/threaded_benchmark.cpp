@@ -10,13 +10,13 @@
 // the frames ran threaded. The threshold is forced to 0 so every frame after the first
 // runs threaded; the pieces are built before the timed loop.
 #include "bench_scenes.h"
+#include "geoshaping/parallel/thread_clock.h"
 #include "geoshaping/parallel/threaded_chainmail.h"
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <memory>
 
 using namespace geoshaping;
@@ -50,13 +50,6 @@ Scene& scene()
 double pull_for(QueueKind q)
 {
   return q == QueueKind::fifo ? 207.65000081081979 : 241.81000547111037;
-}
-
-double thread_cpu_seconds()
-{
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0)

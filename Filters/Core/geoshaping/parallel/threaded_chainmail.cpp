@@ -2,29 +2,14 @@
 
 #include "geoshaping/mesh/morton.h"
 #include "geoshaping/parallel/in_process_exchange.h"
+#include "geoshaping/parallel/thread_clock.h"
 
 #include <algorithm>
-#include <ctime>
 #include <limits>
 #include <thread>
 
 namespace geoshaping
 {
-
-namespace
-{
-// This thread's CPU time (0 where POSIX does not give it).
-double thread_cpu_seconds()
-{
-#if defined(CLOCK_THREAD_CPUTIME_ID)
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-#else
-  return 0.0;
-#endif
-}
-} // namespace
 
 struct ThreadedChainMail::Piece
 {
@@ -87,13 +72,14 @@ FrameResult ThreadedChainMail::deform(
   last_threaded_ = false;
   last_rounds_ = 0;
   FrameResult r;
-  if (predicts_threaded(whole, grasp, displacement))
+  const bool threaded = predicts_threaded(whole, grasp, displacement);
+  if (threaded)
   {
     const int pieces = threads();
     if (built_for_ != &whole || built_revision_ != whole.revision() || built_pieces_ != pieces)
       build(whole, pieces);
   }
-  if (!pieces_.empty() && predicts_threaded(whole, grasp, displacement))
+  if (threaded && !pieces_.empty()) // a build the partition refused leaves no pieces
   {
     for (auto& piece : pieces_)
     {
