@@ -33,7 +33,13 @@ void vtkGrowingBoundsPoints::ForgetExact()
 
 namespace
 {
-// One pass over the points: the box, the norm range, and a point attaining each extreme.
+double L2Norm(const double x[3])
+{
+  return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+}
+
+// One pass over the points: the box, the norm range, and a point attaining each extreme;
+// or, started from a known box, range and witnesses, those grown by more points.
 struct Extremes
 {
   double box[6] = { 0, 0, 0, 0, 0, 0 };
@@ -41,9 +47,16 @@ struct Extremes
   vtkIdType witness[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
   bool finite = true;
 
+  Extremes() = default;
+  Extremes(const double b[6], const double n[2], const vtkIdType w[8])
+  {
+    std::copy(b, b + 6, box);
+    std::copy(n, n + 2, norm);
+    std::copy(w, w + 8, witness);
+  }
   void first(const double x[3], vtkIdType i)
   {
-    const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    const double r = L2Norm(x);
     for (int c = 0; c < 3; ++c)
       box[2 * c] = box[2 * c + 1] = x[c];
     norm[0] = norm[1] = r;
@@ -52,7 +65,7 @@ struct Extremes
   }
   void add(const double x[3], vtkIdType i)
   {
-    const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    const double r = L2Norm(x);
     finite = finite && std::isfinite(r);
     for (int c = 0; c < 3; ++c)
     {
@@ -153,7 +166,7 @@ bool vtkGrowingBoundsPoints::Settle()
     // points are within E); one that moved inward may leave it to any point.
     double x[3];
     this->GetPoint(w, x);
-    const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    const double r = L2Norm(x);
     const bool beyond = side < 6 ? (side % 2 == 0 ? x[side / 2] <= this->ExactBox[side]
                                                   : x[side / 2] >= this->ExactBox[side])
                                  : (side == 6 ? r <= this->ExactNorm[0] : r >= this->ExactNorm[1]);
@@ -162,10 +175,7 @@ bool vtkGrowingBoundsPoints::Settle()
       return false;
     }
   }
-  Extremes e;
-  std::copy(this->ExactBox, this->ExactBox + 6, e.box);
-  std::copy(this->ExactNorm, this->ExactNorm + 2, e.norm);
-  std::copy(this->Witness, this->Witness + 8, e.witness);
+  Extremes e(this->ExactBox, this->ExactNorm, this->Witness);
   for (vtkIdType i : this->Moved)
   {
     double x[3];
@@ -230,25 +240,23 @@ void vtkGrowingBoundsPoints::PointsChanged(const vtkIdType* ids, vtkIdType k, bo
   {
     return;
   }
+  // The box and range grown by the changed points (its witnesses are not kept: the
+  // exact state's are, above).
+  Extremes e(this->Box, this->Norm, this->Witness);
   for (vtkIdType i = 0; i < k; ++i)
   {
     double x[3];
     this->GetPoint(ids[i], x);
-    const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    if (!std::isfinite(r))
-    {
-      this->Known = false;
-      this->ForgetExact();
-      return;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      this->Box[2 * c] = std::min(this->Box[2 * c], x[c]);
-      this->Box[2 * c + 1] = std::max(this->Box[2 * c + 1], x[c]);
-    }
-    this->Norm[0] = std::min(this->Norm[0], r);
-    this->Norm[1] = std::max(this->Norm[1], r);
+    e.add(x, ids[i]);
   }
+  if (!e.finite)
+  {
+    this->Known = false;
+    this->ForgetExact();
+    return;
+  }
+  std::copy(e.box, e.box + 6, this->Box);
+  std::copy(e.norm, e.norm + 2, this->Norm);
   this->Publish();
 }
 
