@@ -297,6 +297,11 @@ vtkIdType AppendObstacle(
 // (vtkChainMailDeformationFilterObstacles.cxx).
 bool ObstacleSources(vtkChainMailDeformationFilter* self, geoshaping::ChainMailDeformer& deformer,
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>>& sources);
+// The end of it: every obstacle's triangles (AppendObstacle's xyz and triangles, all
+// pieces' on several processes) given to the deformer; false, with the error, when the
+// deformer refuses them.
+bool SetObstacles(vtkChainMailDeformationFilter* self, geoshaping::ChainMailDeformer& deformer,
+  const std::vector<double>& xyz, const std::vector<std::int64_t>& triangles);
 } // namespace vtkChainMailDeformationFilterDetail
 
 inline void vtkChainMailDeformationFilter::vtkInternals::Invalidate(Stale level)

@@ -89,6 +89,21 @@ bool vtkChainMailDeformationFilterDetail::ObstacleSources(vtkChainMailDeformatio
   return true;
 }
 
+bool vtkChainMailDeformationFilterDetail::SetObstacles(vtkChainMailDeformationFilter* self,
+  geoshaping::ChainMailDeformer& deformer, const std::vector<double>& xyz,
+  const std::vector<std::int64_t>& triangles)
+{
+  const std::string error =
+    deformer.set_obstacles(xyz.data(), xyz.size() / 3, triangles.data(), triangles.size() / 3);
+  if (!error.empty())
+  {
+    vtkErrorWithObjectMacro(
+      self, "Obstacles refused: " << error << "; output is the undeformed input.");
+    return false;
+  }
+  return true;
+}
+
 bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** inputVector)
 {
   vtkInternals& state = *this->Internals;
@@ -135,13 +150,8 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
       return false;
     }
   }
-  const std::string error = state.Deformer.set_obstacles(
-    xyz.data(), xyz.size() / 3, triangles.data(), triangles.size() / 3);
-  if (!error.empty())
-  {
-    vtkErrorMacro("Obstacles refused: " << error << "; output is the undeformed input.");
+  if (!vtkChainMailDeformationFilterDetail::SetObstacles(this, state.Deformer, xyz, triangles))
     return false;
-  }
   state.ObstacleSources = std::move(sources);
   return true;
 }

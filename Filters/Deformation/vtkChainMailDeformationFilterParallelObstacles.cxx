@@ -107,13 +107,8 @@ bool vtkChainMailDeformationFilter::UpdateObstaclesParallel(
           triangles.push_back(base + piece[r + j]);
         r += 3 * nt;
       }
-    const std::string error = state.Deformer.set_obstacles(
-      points.data(), points.size() / 3, triangles.data(), triangles.size() / 3);
-    if (!error.empty())
-    {
-      vtkErrorMacro("Obstacles refused: " << error << "; output is the undeformed input.");
+    if (!vtkChainMailDeformationFilterDetail::SetObstacles(this, state.Deformer, points, triangles))
       return false;
-    }
     state.ObstacleSources = std::move(sources);
   }
   return Everywhere(ex, this->UpdateSliding(input));
