@@ -157,4 +157,16 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   return r;
 }
 
+ForceResult force_at_rest(const DeviceSnapshot& device, const SceneSnapshot& scene,
+  const ForceParams& params, const DeviceLimits& limits)
+{
+  ForceInput in;
+  in.position = device.sample.position;
+  in.device_ok = device.device_ok;
+  in.now = scene.stamp;
+  ContactProxy proxy;
+  proxy.place(device.in_contact ? device.proxy : in.position);
+  return compute_force(in, scene, params, limits, proxy);
+}
+
 } // namespace geoshaping::haptics

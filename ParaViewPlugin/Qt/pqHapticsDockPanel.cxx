@@ -129,7 +129,9 @@ void pqHapticsDockPanel::build()
   this->Figures->setObjectName("Figures");
   this->Figures->setWordWrap(true);
   this->Figures->setToolTip(
-    "Per hand: its servo loop's rate in updates per second (a force-feedback device), or "
+    "Per hand: its servo loop's rate in updates per second and the force the stylus is "
+    "asked to render where it is, in newtons (a force-feedback device; the servo fades a "
+    "grasp's pull out while the view updates less than about twice a second), or "
     "\"mouse\". Then the view's frames per second, the time of the last deformation in "
     "milliseconds, and how many vertices it moved.");
   layout->addWidget(this->Figures);
@@ -441,7 +443,10 @@ void pqHapticsDockPanel::onFrame()
     }
     else if (kind != Kind::NoDevice)
     {
-      hands << QString("hand %1: servo %2 Hz").arg(i + 1).arg(f.servoHz[i], 0, 'f', 0);
+      hands << QString("hand %1: servo %2 Hz, force %3 N")
+                 .arg(i + 1)
+                 .arg(f.servoHz[i], 0, 'f', 0)
+                 .arg(f.force[i].force.norm(), 0, 'f', 2);
     }
   }
   this->Figures->setText(QString("%1\nframe %2 fps · deformation %3 ms, %4 points displaced")

@@ -304,25 +304,6 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
   }
 }
 
-bool pqHapticsInteractor::forceFromLastScene(int index, haptics::ForceResult& result) const
-{
-  const Hand* hand = index >= 0 && index < 2 ? this->Hands[index].get() : nullptr;
-  if (!hand || !hand->device)
-  {
-    return false;
-  }
-  haptics::ForceInput in;
-  in.position = hand->latest.sample.position;
-  in.device_ok = hand->latest.device_ok;
-  in.now = hand->sent.stamp;
-  // The servo's proxy as its last snapshot left it, moved on once against the last scene.
-  haptics::ContactProxy proxy;
-  proxy.place(hand->latest.in_contact ? hand->latest.proxy : in.position);
-  result =
-    haptics::compute_force(in, hand->sent, haptics::ForceParams(), hand->device->limits(), proxy);
-  return true;
-}
-
 void pqHapticsInteractor::record(
   Hand& hand, const interactor::WorkspaceMapping& mapping, const interactor::StylusState& world)
 {
@@ -440,6 +421,9 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   this->Stats.contactTicks += hand.latest.in_contact ? 1 : 0;
   hand.sent = scene;
   hand.servo->publish_scene();
+  const std::size_t index = &hand == this->Hands[0].get() ? 0 : 1;
+  this->Stats.force[index] =
+    haptics::force_at_rest(hand.latest, hand.sent, haptics::ForceParams(), hand.device->limits());
 }
 
 void pqHapticsInteractor::onFrame()

@@ -57,6 +57,10 @@ public:
     long long maxContactTriangles = 0; // the most sent in one frame since start
     long long contactTicks = 0;        // device snapshots taken in contact since start
     std::array<long long, 2> recordedSamples{ { 0, 0 } };
+    // Per device hand: the force its last published scene asks for at the stylus, at rest
+    // (haptics::force_at_rest: what the servo renders while the scene is fresh, whatever
+    // the frame rate).
+    std::array<geoshaping::haptics::ForceResult, 2> force;
   };
 
   // Contact patch sent to each servo loop: the triangles within this distance of the
@@ -100,11 +104,6 @@ public:
   const geoshaping::interactor::EditResult& lastEditResult() const { return this->LastEdit; }
   int numberOfEdits() { return this->Proxies.numberOfEdits(); }
   pqHapticsProxies& proxies() { return this->Proxies; }
-  // The force the servo loop renders from the scene last published for device hand
-  // `hand` (0 or 1) at the stylus position of that frame, at rest, as if fresh: what
-  // the graphics side asks the servo to render, independent of its timing, from the
-  // proxy of the servo's last snapshot. False for a hand without a device.
-  bool forceFromLastScene(int hand, geoshaping::haptics::ForceResult& result) const;
 
 Q_SIGNALS:
   void frameDone();

@@ -1,7 +1,7 @@
 """The GUI tests of the brush and of the keyed pull (run_gui_test.py modes brush_* and
 pull_keys): a 1,000 km square surface in metres (a GOCAD TSurf with AXIS_UNIT m, opened
 with the plugin's reader), painted or pulled with the mouse through the plugin's test hook
-(GEOSHAPING_HAPTICS_MOUSE_SCRIPT, see TestHook/pqHapticsTestScript.h); checked from the
+(GEOSHAPING_HAPTICS_SCRIPT, see TestHook/pqHapticsTestScript.h); checked from the
 hook's snapshots."""
 import math
 import os
@@ -75,7 +75,7 @@ def prepare(mode, out, env):
             os.remove(out + suffix)
     write_surface(out + ".ts")
     env["GEOSHAPING_HAPTICS_REPLAY"] = "mouse"
-    env["GEOSHAPING_HAPTICS_MOUSE_SCRIPT"] = SCRIPTS[mode]
+    env["GEOSHAPING_HAPTICS_SCRIPT"] = SCRIPTS[mode]
     env["GEOSHAPING_GUI_SETUP"] = os.path.join(here, "gui_setup_brush.py")
     env["GEOSHAPING_GUI_SURFACE"] = out + ".ts"
     if mode == "pull_keys":

@@ -85,7 +85,7 @@ def session(out, tag, steps, state, reverse):
     The client and the server are stopped whatever happens."""
     prefix = out + "-" + tag
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=prefix,
-               GEOSHAPING_HAPTICS_REPLAY="mouse", GEOSHAPING_HAPTICS_MOUSE_SCRIPT=steps,
+               GEOSHAPING_HAPTICS_REPLAY="mouse", GEOSHAPING_HAPTICS_SCRIPT=steps,
                GEOSHAPING_GUI_STATE=state, GEOSHAPING_GUI_SERVER_PROCESSES=str(RANKS),
                GEOSHAPING_HAPTICS_TEST_TIMEOUT=str(HOOK_SECONDS))
     client_log = open(prefix + ".client.log", "w+")

@@ -435,3 +435,39 @@ TEST(ForceModel, ForceNeverExceedsTheMaximumAndIsNeverNaNOverRandomInputs)
   // The sweep must exercise real forces, not only faults.
   EXPECT_GT(rendered, 500);
 }
+
+TEST(ForceModel, AtRestTheSceneAsksForItsForceHoweverOldItIs)
+{
+  const DeviceLimits limits;
+  const ForceParams params;
+  // A grasp published an hour ago (stale to the servo, which would have faded it out):
+  // at rest it asks for the whole coupling k_g (anchor - x), as when it was fresh.
+  SceneSnapshot scene = grasp({ 0.0, 0.01, 0.0 }, 200.0);
+  scene.stamp = Clock::time_point(std::chrono::seconds(1));
+  DeviceSnapshot device;
+  device.device_ok = true;
+  device.sample.position = Eigen::Vector3d(0.0, 0.0, 0.002);
+  ForceResult r = force_at_rest(device, scene, params, limits);
+  EXPECT_EQ(r.status, ForceStatus::ok);
+  EXPECT_FALSE(r.in_contact);
+  EXPECT_EQ(r.force, Eigen::Vector3d(0.0, 200.0 * 0.01, 200.0 * -0.002));
+  // Pressed 2 mm into the floor, its proxy on top (where the servo's ticks left it): the
+  // contact spring k_c (proxy - x) up; a stylus whose proxy the servo never saw in
+  // contact starts below and feels nothing.
+  scene = floor_scene();
+  device.sample.position = Eigen::Vector3d(0.01, 0.02, -0.002);
+  device.in_contact = true;
+  device.proxy = Eigen::Vector3d(0.01, 0.02, params.proxy_clearance);
+  r = force_at_rest(device, scene, params, limits);
+  EXPECT_TRUE(r.in_contact);
+  EXPECT_NEAR(r.force.z(), params.contact_stiffness * (0.002 + params.proxy_clearance), 1e-12);
+  EXPECT_NEAR(r.force.head<2>().norm(), 0.0, 1e-12);
+  device.in_contact = false;
+  EXPECT_EQ(force_at_rest(device, scene, params, limits).force, Eigen::Vector3d::Zero());
+  // A failed device asks for nothing.
+  device.in_contact = true;
+  device.device_ok = false;
+  r = force_at_rest(device, scene, params, limits);
+  EXPECT_EQ(r.status, ForceStatus::device_error);
+  EXPECT_EQ(r.force, Eigen::Vector3d::Zero());
+}

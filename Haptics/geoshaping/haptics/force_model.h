@@ -137,4 +137,15 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   const ForceParams& params, const DeviceLimits& limits, ContactProxy& proxy,
   ForceFade* fade = nullptr);
 
+// The force `scene` asks for at the stylus of `device` (a servo snapshot), the stylus at
+// rest and the scene taken as fresh: compute_force at the scene's own stamp, without
+// fades, with the servo's proxy as the snapshot left it (at the stylus when out of
+// contact) moved once against the scene. What the servo renders while the graphics side
+// keeps its scene fresh, whatever the frame rate and however long ago the servo last
+// ticked (the servo itself fades the coupling out of a stale scene: its sent force at
+// 1-2 frames/s is a matter of timing, this one is not). A device hand's figure in the
+// Haptics dock.
+ForceResult force_at_rest(const DeviceSnapshot& device, const SceneSnapshot& scene,
+  const ForceParams& params, const DeviceLimits& limits);
+
 } // namespace geoshaping::haptics

@@ -63,8 +63,8 @@ pqHapticsTestHook::pqHapticsTestHook(
   , Trace2(qEnvironmentVariable("GEOSHAPING_HAPTICS_REPLAY2"))
   , Output(output)
 {
-  const QString script = qEnvironmentVariable("GEOSHAPING_HAPTICS_MOUSE_SCRIPT");
-  if (trace == "mouse" && !script.isEmpty())
+  const QString script = qEnvironmentVariable("GEOSHAPING_HAPTICS_SCRIPT");
+  if (!script.isEmpty())
   {
     this->Script = std::make_shared<pqHapticsTestScript>(dock, script, output);
   }
@@ -472,14 +472,7 @@ void pqHapticsTestHook::writeResults()
   {
     out << this->Pull->results();
   }
-  geoshaping::haptics::ForceResult force;
-  if (interactor->forceFromLastScene(0, force))
-  {
-    out << "force_from_last_scene = " << force.force.x() << " " << force.force.y() << " "
-        << force.force.z() << "\n";
-    out << "force_status = " << geoshaping::haptics::to_string(force.status) << "\n";
-    out << "in_contact_last_scene = " << int(force.in_contact) << "\n";
-  }
+  pqHapticsTestScript::writeForce(out, f.force[0]);
   auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
   if (vtkCamera* camera = view ? view->getRenderViewProxy()->GetActiveCamera() : nullptr)
   {

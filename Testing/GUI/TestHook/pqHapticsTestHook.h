@@ -18,8 +18,10 @@
 //                                           (--url): the hook waits for that
 //                                           connection before loading or starting;
 //   GEOSHAPING_HAPTICS_TEST_TIMEOUT=<s>      the hook gives up after s seconds (45);
-//   GEOSHAPING_HAPTICS_MOUSE_SCRIPT=<steps>  with "mouse": the hook plays these steps
-//                                           instead of its drag (pqHapticsTestScript.h);
+//   GEOSHAPING_HAPTICS_SCRIPT=<steps>        the hook plays these steps
+//                                           (pqHapticsTestScript.h): with "mouse"
+//                                           instead of its drag, with a trace beside
+//                                           the replay (until, dump: gui_pvserver.py);
 //   GEOSHAPING_HAPTICS_TOOL1=hold_and_turn  hand 1 holds and turns the object instead;
 //   GEOSHAPING_HAPTICS_REPLAY2=<trace>      hand 2 replays this trace with the Paint tool
 //                                           (two hands at once);

@@ -70,9 +70,21 @@ bool pqHapticsTestScript::step()
   {
     return true;
   }
-  this->AfterFrame = frames + 1;
-  const QStringList words = this->Steps[this->Next++].split(' ', Qt::SkipEmptyParts);
+  const auto now = std::chrono::steady_clock::now();
+  if (!this->Started)
+  {
+    this->Start = now;
+    this->Started = true;
+  }
+  const QStringList words = this->Steps[this->Next].split(' ', Qt::SkipEmptyParts);
   const QString& verb = words[0];
+  if (verb == "until" &&
+      std::chrono::duration<double>(now - this->Start).count() < words.value(1).toDouble())
+  {
+    return false;
+  }
+  ++this->Next;
+  this->AfterFrame = frames + 1;
   if (verb == "press" || verb == "move" || verb == "release" || verb == "hover" || verb == "leave")
   {
     this->mouse(words);
@@ -354,4 +366,28 @@ void pqHapticsTestScript::dump(const QString& name)
   {
     out << "edit_" << i << " = " << edits.GetAsString(i) << "\n";
   }
+  if (pqPipelineSource* paint = pqHapticsFindSource("MalleabilityPaint"))
+  {
+    for (const char* list : { "Dabs", "PointDabs" })
+    {
+      vtkSMPropertyHelper values(paint->getProxy(), list);
+      out << list << " =";
+      for (unsigned int i = 0; i < values.GetNumberOfElements(); ++i)
+      {
+        out << " " << QString::number(values.GetAsDouble(i), 'g', 17);
+      }
+      out << "\n";
+    }
+  }
+  pqHapticsTestScript::writeForce(out, this->Dock->interactor()->figures().force[0]);
+}
+
+void pqHapticsTestScript::writeForce(
+  QTextStream& out, const geoshaping::haptics::ForceResult& force)
+{
+  out << "force_from_last_scene = " << QString::number(force.force.x(), 'g', 17) << " "
+      << QString::number(force.force.y(), 'g', 17) << " "
+      << QString::number(force.force.z(), 'g', 17) << "\n";
+  out << "force_status = " << geoshaping::haptics::to_string(force.status) << "\n";
+  out << "in_contact_last_scene = " << int(force.in_contact) << "\n";
 }

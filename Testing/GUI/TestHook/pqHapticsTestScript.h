@@ -1,7 +1,8 @@
 #pragma once
-// A mouse script for the GUI tests of painting (GEOSHAPING_HAPTICS_MOUSE_SCRIPT, with
-// GEOSHAPING_HAPTICS_REPLAY=mouse): steps separated by ';', one per poll of the hook,
-// positions as fractions of the render view (x right, y up):
+// A script for the GUI tests (GEOSHAPING_HAPTICS_SCRIPT): with
+// GEOSHAPING_HAPTICS_REPLAY=mouse it drives the mouse hand (painting, pulls), with a
+// trace it runs beside the replayed stylus (until, dump). Steps separated by ';', one
+// per poll of the hook, positions as fractions of the render view (x right, y up):
 //   press X Y [ctrl]   left button down (with Ctrl: paint), the pick written to <out>.picks
 //   move X Y           the mouse moves there (button held), the pick written too
 //   release            left button up
@@ -13,10 +14,13 @@
 //   radius R           types R into the dock's brush radius
 //   undo | redo        clicks the dock's Undo / Redo
 //   editundo | editredo  Edit > Undo / Redo (ParaView's undo stack, Ctrl+Z / Ctrl+Y)
+//   until T            waits until T s have passed since the first step (the replayed
+//                      trace's clock started before it, so the stylus is past T too)
 //   dump NAME          the server's ranks write their points (the scene's
 //                      ProgrammableFilter, gui_pvserver.py, runs with `name = 'NAME'`),
 //                      and <out>-NAME.txt holds the deformation proxy's grasp,
-//                      Displacement and EditHistory
+//                      Displacement and EditHistory, the paint proxy's Dabs and
+//                      PointDabs, and the force hand 1's last scene asks for (writeForce)
 //   savestate          File > Save State to <out>.pvsm
 //   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
@@ -28,16 +32,24 @@
 // Each step waits for one interactor frame after the previous one, so that the frames
 // see every event whatever the machine's speed. When the steps are over, step() returns
 // true and the hook writes its results.
+#include "geoshaping/haptics/force_model.h"
+
 #include <QString>
 #include <QStringList>
 
+#include <chrono>
+
 class pqHapticsDockPanel;
+class QTextStream;
 
 class pqHapticsTestScript
 {
 public:
   pqHapticsTestScript(pqHapticsDockPanel* dock, const QString& script, const QString& output);
   bool step();
+  // `force_from_last_scene` (N, device coordinates), `force_status` and
+  // `in_contact_last_scene` of a hand's figure (pqHapticsInteractor::Figures::force).
+  static void writeForce(QTextStream& out, const geoshaping::haptics::ForceResult& force);
 
 private:
   void snapshot(const QString& name);
@@ -49,6 +61,8 @@ private:
   QStringList Steps;
   QString Output;
   int Next = 0;
+  std::chrono::steady_clock::time_point Start; // of the first step
+  bool Started = false;
   int AfterFrame = 1; // the interactor's frame count the next step waits for (the first
                       // frame attaches the mouse)
 };
