@@ -8,7 +8,8 @@ both ranks hold owned points, every copy of a point (owned or ghost, on either r
 equals its owner's bit for bit, and the gathered points equal what one process computes
 (this pvpython, builtin) from the same grasp, displacement and EditHistory, bit for bit;
 the drag moved points, the commit kept them, undo gave the rest points exactly, the
-loaded state shows the committed shape."""
+loaded state shows the committed shape. The harness (write_state, session, gathered,
+one_process, check_shape) serves the dock's other hands too (gui_pvserver_hands.py)."""
 import os
 import shutil
 import subprocess
@@ -32,6 +33,9 @@ SESSION1 = ("press 0.3 0.5; move 0.3 0.52; move 0.3 0.54; move 0.3 0.56; move 0.
             "move 0.3 0.6; wait; dump drag; release; wait; dump commit; undo; wait; dump undo; "
             "redo; wait; dump redo; savestate")
 SESSION2 = "wait; dump loaded; undo; wait; dump loaded_undo"
+# The brush's settings on the paint that the ranks run on their pieces (write_state's
+# paint_pieces): geodesic, so that a dab near the seam paints across it.
+PAINT = dict(DistanceMode="Geodesic", Falloff="Smooth")
 DUMP = """name = 'start'
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -45,27 +49,33 @@ def column(array, kind):
 np.savez(%r + '-' + name + '-rank%%d.npz' %% rank,
          xyz=vtk_to_numpy(data.GetPoints().GetData()).astype(float).reshape(n, 3),
          gid=column(data.GetPointData().GetGlobalIds(), np.int64),
-         ghost=column(data.GetPointData().GetArray('vtkGhostType'), np.int64))
-""" % os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_pvserver")
+         ghost=column(data.GetPointData().GetArray('vtkGhostType'), np.int64),
+         m=column(data.GetPointData().GetArray('Malleability'), float))
+"""
 
 
-def write_state(path):
-    """The scene of the first session as a state file (written here, in pvpython): the
-    pipeline a user builds (docs/mpi.md), the painted fault-step horizon through
-    RedistributeDataSet into ChainMailDeformation, and after it the ProgrammableFilter
-    that the test hook's "dump NAME" runs again: each server rank writes its piece of
-    the deformation's output (points, global ids, ghost flags) to
-    GEOSHAPING_TEST_TMP/gui_pvserver-NAME-rank<r>.npz. A state, so that File > Load
-    State on the server is what sets the scene up (--script works there too)."""
+def write_state(path, out, paint_pieces=False):
+    """The scene of a session as a state file (written here, in pvpython): the pipeline a
+    user builds (docs/mpi.md), the painted fault-step horizon through RedistributeDataSet
+    into ChainMailDeformation (`paint_pieces`: the MalleabilityPaint after the
+    redistribution, so that each rank paints its piece, geodesically, PAINT), and after
+    it the ProgrammableFilter that the test hook's "dump NAME" runs again: each server
+    rank writes its piece of the deformation's output (points, global ids, ghost flags,
+    malleability) to <out>-NAME-rank<r>.npz. A state, so that File > Load State on the
+    server is what sets the scene up (--script works there too)."""
     from paraview import simple
     import geoshaping_presets
     from gui_setup_camera import CAMERA
     horizon = simple.FaultStepHorizon(PaintFigure5C=1)
-    paint = simple.MalleabilityPaint(Input=horizon)
-    deformation = simple.ChainMailDeformation(Input=simple.RedistributeDataSet(Input=paint))
+    if paint_pieces:
+        paint = simple.MalleabilityPaint(Input=simple.RedistributeDataSet(Input=horizon), **PAINT)
+        deformation = simple.ChainMailDeformation(Input=paint)
+    else:
+        paint = simple.MalleabilityPaint(Input=horizon)
+        deformation = simple.ChainMailDeformation(Input=simple.RedistributeDataSet(Input=paint))
     deformation.MalleabilityArray = ["POINTS", "Malleability"]
     deformation.OutputPointsPrecision = "Double"
-    simple.ProgrammableFilter(Input=deformation, Script=DUMP, CopyArrays=0)
+    simple.ProgrammableFilter(Input=deformation, Script=DUMP % out, CopyArrays=0)
     view = simple.GetActiveViewOrCreate("RenderView")
     geoshaping_presets.show_malleability(simple.Show(deformation, view))
     view.OrientationAxesVisibility = 0
@@ -77,16 +87,17 @@ def write_state(path):
     simple.SaveState(path)
 
 
-def session(out, tag, steps, state, reverse):
-    """One paraview client on a new 2-rank server: it connects (--url=cs://), or with
-    `reverse` listens and the server connects to it (--url=csrc://, pvserver
-    --reverse-connection); the test hook loads `state` once connected to both ranks,
-    starts the dock with the mouse hand and plays `steps`. Returns the output prefix.
+def session(out, tag, steps, state, reverse=False, hand="mouse", ranks=RANKS):
+    """One paraview client on a new `ranks`-process server: it connects (--url=cs://),
+    or with `reverse` listens and the server connects to it (--url=csrc://, pvserver
+    --reverse-connection); ranks=0: a builtin session (one process, no server). The test
+    hook loads `state` once connected to every rank, starts the dock with hand 1 `hand`
+    (the mouse, or a trace it replays) and plays `steps`. Returns the output prefix.
     The client and the server are stopped whatever happens."""
     prefix = out + "-" + tag
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=prefix,
-               GEOSHAPING_HAPTICS_REPLAY="mouse", GEOSHAPING_HAPTICS_SCRIPT=steps,
-               GEOSHAPING_GUI_STATE=state, GEOSHAPING_GUI_SERVER_PROCESSES=str(RANKS),
+               GEOSHAPING_HAPTICS_REPLAY=hand, GEOSHAPING_HAPTICS_SCRIPT=steps,
+               GEOSHAPING_GUI_STATE=state, GEOSHAPING_GUI_SERVER_PROCESSES=str(ranks),
                GEOSHAPING_HAPTICS_TEST_TIMEOUT=str(HOOK_SECONDS))
     client_log = open(prefix + ".client.log", "w+")
     server_log = prefix + ".server.log"
@@ -97,13 +108,15 @@ def session(out, tag, steps, state, reverse):
 
     def start_client(url):
         return subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 1024x768x24 -noreset",
-                                 os.environ["PARAVIEW"], "--dr", "--url=" + url], env=env,
-                                stdout=client_log, stderr=subprocess.STDOUT,
+                                 os.environ["PARAVIEW"], "--dr"] + (["--url=" + url] if url else []),
+                                env=env, stdout=client_log, stderr=subprocess.STDOUT,
                                 start_new_session=True)
 
     server = client = log = None
     try:
-        if reverse:
+        if not ranks:
+            client = start_client(None)
+        elif reverse:
             port = pvserver_process.free_port()
             client = start_client("csrc://localhost:%d" % port)
             assert pvserver_process.wait_for(client_log, "Accepting connection", client,
@@ -134,22 +147,22 @@ def read_figures(path):
     return {k: v for k, v in rows}
 
 
-def gathered(name):
-    """Every rank's piece of dump `name`: ({global id: xyz} of the owned points, the
-    pieces as (global ids, xyz, owned mask) per rank), after checking that both ranks
-    own points and every copy equals its owner's."""
-    prefix = os.path.join(os.environ["GEOSHAPING_TEST_TMP"], "gui_pvserver-" + name)
+def gathered(out, name, column="xyz"):
+    """Every rank's piece of dump `name` (<out>-NAME-rank<r>.npz), `column` its points
+    ("xyz") or malleability ("m"): ({global id: value} of the owned points, the pieces as
+    (global ids, values, owned mask) per rank), after checking that both ranks own
+    points and every copy (ghosts) equals its owner's, bit for bit."""
     owned, pieces = {}, []
     for r in range(RANKS):
-        piece = np.load("%s-rank%d.npz" % (prefix, r))
+        piece = np.load("%s-%s-rank%d.npz" % (out, name, r))
         mine = (piece["ghost"] & 1) == 0  # vtkDataSetAttributes::DUPLICATEPOINT
         assert mine.any(), "%s: rank %d owns no point (not distributed)" % (name, r)
-        for g, x in zip(piece["gid"][mine], piece["xyz"][mine]):
+        for g, x in zip(piece["gid"][mine], piece[column][mine]):
             assert int(g) not in owned, "%s: point %d owned twice" % (name, g)
             owned[int(g)] = x
-        pieces.append((piece["gid"], piece["xyz"], mine))
-    for gid, xyz, _ in pieces:
-        for g, x in zip(gid, xyz):
+        pieces.append((piece["gid"], piece[column], mine))
+    for gid, values, _ in pieces:
+        for g, x in zip(gid, values):
             assert np.array_equal(owned[int(g)], x), "%s: a copy of point %d differs" % (name, g)
     return owned, pieces
 
@@ -189,7 +202,9 @@ def same(a, b):
     return a.keys() == b.keys() and all(np.array_equal(a[g], b[g]) for g in a)
 
 
-def run(out, read_results):
+def prepare(out):
+    """Skips (exit 77) without mpiexec; removes the files of an earlier run of `out`;
+    loads the plugin into this pvpython (the one-process answers)."""
     if not shutil.which(os.environ.get("MPIEXEC") or "mpiexec"):
         print("SKIP: no mpiexec (MPIEXEC=%r): the 2-rank pvserver cannot be started"
               % os.environ.get("MPIEXEC", ""))
@@ -201,37 +216,54 @@ def run(out, read_results):
     from paraview import simple
     simple.LoadPlugin(os.path.join(os.environ["PV_PLUGIN_PATH"].split(":")[0], "GeoShaping.so"),
                       remote=False)
-    write_state(out + "-scene.pvsm")
+
+
+def check_session(results, edits, ranks=RANKS):
+    """The hook ran to its end on a `ranks`-process server (0: builtin), and the dock
+    counts `edits`."""
+    print("results:", results)
+    assert results["started"] == "1" and results["timed_out"] == "0", results
+    assert results["server_remote"] == str(int(ranks > 0)), results
+    assert results["server_processes"] == str(max(ranks, 1)), results
+    assert results["label_Edits"] == edits, results
+
+
+def check_shape(out, prefix, name):
+    """Dump `name` of the session `prefix`: every rank's points, ghosts included, equal
+    one process's from the same grasp, Displacement and EditHistory, bit for bit.
+    Returns (the gathered points, the dump's figures, the number of moved points, the
+    one-process LastGraspMalleability)."""
+    figures = read_figures("%s-%s.txt" % (prefix, name))
+    shape, pieces = gathered(out, name)
+    expected, rest, malleability = one_process(figures)
+    for r, (gid, xyz, mine) in enumerate(pieces):
+        same_points = all(np.array_equal(expected[int(g)], x) for g, x in zip(gid, xyz))
+        moved_here = sum(not np.array_equal(rest[int(g)], x) for g, x in zip(gid, xyz))
+        print("  %s rank %d: %d points (%d owned), %d moved, equal to one process: %s"
+              % (name, r, len(gid), mine.sum(), moved_here, same_points))
+        assert same_points, "%s: rank %d's points differ from one process" % (name, r)
+    moved = sum(not np.array_equal(shape[g], rest[g]) for g in rest)
+    print("%s: %d points on %d ranks, %d moved, edits %s, grasp %s, LastGraspMalleability %s"
+          % (name, len(shape), RANKS, moved, figures["edit_history"],
+             figures["last_grasp_point_id"], figures["last_grasp_malleability"]))
+    assert same(shape, expected), "%s: the ranks' points differ from one process" % name
+    return shape, figures, moved, malleability
+
+
+def run(out, read_results):
+    prepare(out)
+    write_state(out + "-scene.pvsm", out)
     first = session(out, "edit", SESSION1, out + "-scene.pvsm", reverse=False)
     assert os.path.exists(first + ".pvsm"), "the first session saved no state"
     second = session(out, "loaded", SESSION2, first + ".pvsm", reverse=True)
     # The dock's own count after each session: the drag committed, undone, redone; the
     # loaded edit undone.
-    for prefix, edits in ((first, "Edits: 1, redoable 0"), (second, "Edits: 0, redoable 1")):
-        results = read_results(prefix + ".txt")
-        print("results:", results)
-        assert results["started"] == "1" and results["timed_out"] == "0", results
-        assert results["server_remote"] == "1", results
-        assert results["server_processes"] == str(RANKS), results
-        assert results["label_Edits"] == edits, results
+    check_session(read_results(first + ".txt"), "Edits: 1, redoable 0")
+    check_session(read_results(second + ".txt"), "Edits: 0, redoable 1")
     shapes = {}
     for name, prefix in (("drag", first), ("commit", first), ("undo", first), ("redo", first),
                          ("loaded", second), ("loaded_undo", second)):
-        figures = read_figures("%s-%s.txt" % (prefix, name))
-        shapes[name], pieces = gathered(name)
-        expected, rest, malleability = one_process(figures)
-        for r, (gid, xyz, mine) in enumerate(pieces):
-            # Each rank's points, ghosts too, against one process's, bit for bit.
-            same_points = all(np.array_equal(expected[int(g)], x) for g, x in zip(gid, xyz))
-            moved_here = sum(not np.array_equal(rest[int(g)], x) for g, x in zip(gid, xyz))
-            print("  %s rank %d: %d points (%d owned), %d moved, equal to one process: %s"
-                  % (name, r, len(gid), mine.sum(), moved_here, same_points))
-            assert same_points, "%s: rank %d's points differ from one process" % (name, r)
-        moved = sum(not np.array_equal(shapes[name][g], rest[g]) for g in rest)
-        print("%s: %d points on %d ranks, %d moved, edits %s, grasp %s, LastGraspMalleability %s"
-              % (name, len(shapes[name]), RANKS, moved, figures["edit_history"],
-                 figures["last_grasp_point_id"], figures["last_grasp_malleability"]))
-        assert same(shapes[name], expected), "%s: the ranks' points differ from one process" % name
+        shapes[name], figures, moved, malleability = check_shape(out, prefix, name)
         if name == "drag":
             assert moved > 50 and int(figures["last_grasp_point_id"]) >= 0, figures
             grasped = float(figures["last_grasp_malleability"])

@@ -314,6 +314,11 @@ def main():
         import gui_pvserver
         gui_pvserver.run(out, read_results)
         return
+    if mode in ("pvserver_paint", "pvserver_stylus"):
+        import gui_pvserver_hands
+        run = gui_pvserver_hands.run_paint if mode == "pvserver_paint" else gui_pvserver_hands.run_stylus
+        run(out, read_results)
+        return
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
     scripted = mode.startswith("brush_") or mode == "pull_keys"  # brush_checks.SCRIPTS
     if scripted:
