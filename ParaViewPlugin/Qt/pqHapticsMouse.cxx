@@ -3,7 +3,9 @@
 #include "undo_step.h"
 
 #include <vtkCamera.h>
+#include <vtkCellPicker.h>
 #include <vtkCommand.h>
+#include <vtkNew.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSMRenderViewProxy.h>
@@ -93,6 +95,23 @@ bool pqHapticsMouse::pointOnSurface(
   if (!this->View || !this->View->ConvertDisplayToPointOnSurface(display, p, n))
   {
     return false;
+  }
+  if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
+  {
+    // A cell was selected under the pixel but no server process intersected the ray with
+    // it (its normal would be a unit vector or NaN): on a distributed server, ParaView
+    // 5.11 answers so, with the point (0, 0, 0), for every cell of a process but the
+    // first (docs/mpi.md). The geometry the client draws itself, delivered to it, is
+    // picked instead; a server that renders remotely delivers none: no point then.
+    vtkRenderer* renderer = this->View->GetRenderer();
+    vtkNew<vtkCellPicker> picker;
+    picker->SetTolerance(0.0);
+    if (!renderer || !picker->Pick(display[0], display[1], 0.0, renderer))
+    {
+      return false;
+    }
+    picker->GetPickPosition(p);
+    picker->GetPickNormal(n);
   }
   world = Eigen::Vector3d(p[0], p[1], p[2]);
   normal = Eigen::Vector3d(n[0], n[1], n[2]);
