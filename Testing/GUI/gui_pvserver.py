@@ -107,9 +107,9 @@ def session(out, tag, steps, state, reverse=False, hand="mouse", ranks=RANKS):
                           display=True, seconds=SERVER_START_SECONDS)
 
     def start_client(url):
-        return subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 1024x768x24 -noreset",
-                                 os.environ["PARAVIEW"], "--dr"] + (["--url=" + url] if url else []),
-                                env=env, stdout=client_log, stderr=subprocess.STDOUT,
+        command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24 -noreset",
+                   os.environ["PARAVIEW"], "--dr"] + (["--url=" + url] if url else [])
+        return subprocess.Popen(command, env=env, stdout=client_log, stderr=subprocess.STDOUT,
                                 start_new_session=True)
 
     server = client = log = None
@@ -232,22 +232,24 @@ def check_shape(out, prefix, name):
     """Dump `name` of the session `prefix`: every rank's points, ghosts included, equal
     one process's from the same grasp, Displacement and EditHistory, bit for bit.
     Returns (the gathered points, the dump's figures, the number of moved points, the
-    one-process LastGraspMalleability)."""
+    one-process LastGraspMalleability, the moved points each rank owns)."""
     figures = read_figures("%s-%s.txt" % (prefix, name))
     shape, pieces = gathered(out, name)
     expected, rest, malleability = one_process(figures)
+    owned_moved = []
     for r, (gid, xyz, mine) in enumerate(pieces):
         same_points = all(np.array_equal(expected[int(g)], x) for g, x in zip(gid, xyz))
-        moved_here = sum(not np.array_equal(rest[int(g)], x) for g, x in zip(gid, xyz))
-        print("  %s rank %d: %d points (%d owned), %d moved, equal to one process: %s"
-              % (name, r, len(gid), mine.sum(), moved_here, same_points))
+        moved_here = np.array([not np.array_equal(rest[int(g)], x) for g, x in zip(gid, xyz)])
+        owned_moved.append(int((moved_here & mine).sum()))
+        print("  %s rank %d: %d points (%d owned), %d moved (%d owned), equal to one process: %s"
+              % (name, r, len(gid), mine.sum(), moved_here.sum(), owned_moved[-1], same_points))
         assert same_points, "%s: rank %d's points differ from one process" % (name, r)
     moved = sum(not np.array_equal(shape[g], rest[g]) for g in rest)
     print("%s: %d points on %d ranks, %d moved, edits %s, grasp %s, LastGraspMalleability %s"
           % (name, len(shape), RANKS, moved, figures["edit_history"],
              figures["last_grasp_point_id"], figures["last_grasp_malleability"]))
     assert same(shape, expected), "%s: the ranks' points differ from one process" % name
-    return shape, figures, moved, malleability
+    return shape, figures, moved, malleability, owned_moved
 
 
 def run(out, read_results):
@@ -263,7 +265,7 @@ def run(out, read_results):
     shapes = {}
     for name, prefix in (("drag", first), ("commit", first), ("undo", first), ("redo", first),
                          ("loaded", second), ("loaded_undo", second)):
-        shapes[name], figures, moved, malleability = check_shape(out, prefix, name)
+        shapes[name], figures, moved, malleability, _ = check_shape(out, prefix, name)
         if name == "drag":
             assert moved > 50 and int(figures["last_grasp_point_id"]) >= 0, figures
             grasped = float(figures["last_grasp_malleability"])

@@ -316,8 +316,8 @@ def main():
         return
     if mode in ("pvserver_paint", "pvserver_stylus"):
         import gui_pvserver_hands
-        run = gui_pvserver_hands.run_paint if mode == "pvserver_paint" else gui_pvserver_hands.run_stylus
-        run(out, read_results)
+        hands = gui_pvserver_hands
+        (hands.run_paint if mode == "pvserver_paint" else hands.run_stylus)(out, read_results)
         return
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
     scripted = mode.startswith("brush_") or mode == "pull_keys"  # brush_checks.SCRIPTS
