@@ -95,6 +95,8 @@ def run_paint(out, read_results):
 # saturated force would hide the grasp's stiffness).
 STYLUS_POINT = [44.0, 30.0, 20.0]
 DRAG = np.array([0.0, 0.004, 0.002])
+# Each dump in the middle of a still stretch of the trace (`until T`: T s of the trace's
+# clock), 2 s before it ends: the frame the dump follows saw the stylus there at 1 frame/s.
 STYLUS_STEPS = ("until 5; dump touch; until 15; dump drag; until 19; dump commit; undo; wait; "
                 "dump undo")
 

@@ -181,7 +181,7 @@ void pqHapticsTestHook::poll()
   }
   if (this->Script)
   {
-    if (this->Script->step() && !this->Output.isEmpty())
+    if (this->Script->step(this->ReplaysStart) && !this->Output.isEmpty())
     {
       this->writeResults();
     }

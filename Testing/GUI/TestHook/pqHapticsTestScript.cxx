@@ -57,7 +57,7 @@ pqHapticsTestScript::pqHapticsTestScript(
   }
 }
 
-bool pqHapticsTestScript::step()
+bool pqHapticsTestScript::step(std::chrono::steady_clock::time_point since)
 {
   // One interactor frame after each step that it must see (a mouse event, Undo): the
   // frame timer runs at its own pace, slower on a loaded machine than these polls.
@@ -70,16 +70,11 @@ bool pqHapticsTestScript::step()
   {
     return true;
   }
-  const auto now = std::chrono::steady_clock::now();
-  if (!this->Started)
-  {
-    this->Start = now;
-    this->Started = true;
-  }
   const QStringList words = this->Steps[this->Next].split(' ', Qt::SkipEmptyParts);
   const QString& verb = words[0];
-  if (verb == "until" &&
-      std::chrono::duration<double>(now - this->Start).count() < words.value(1).toDouble())
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+  if (verb == "until" && seconds < words.value(1).toDouble())
   {
     return false;
   }

@@ -14,8 +14,9 @@
 //   radius R           types R into the dock's brush radius
 //   undo | redo        clicks the dock's Undo / Redo
 //   editundo | editredo  Edit > Undo / Redo (ParaView's undo stack, Ctrl+Z / Ctrl+Y)
-//   until T            waits until T s have passed since the first step (the replayed
-//                      trace's clock started before it, so the stylus is past T too)
+//   until T            waits until T s have passed since the dock started (`since` of
+//                      step(): a replayed trace's clock starts inside the dock's start,
+//                      so the stylus is past T too)
 //   dump NAME          the server's ranks write their points (the scene's
 //                      ProgrammableFilter, gui_pvserver.py, runs with `name = 'NAME'`),
 //                      and <out>-NAME.txt holds the deformation proxy's grasp,
@@ -46,7 +47,8 @@ class pqHapticsTestScript
 {
 public:
   pqHapticsTestScript(pqHapticsDockPanel* dock, const QString& script, const QString& output);
-  bool step();
+  // `since`: when the dock started (for `until`).
+  bool step(std::chrono::steady_clock::time_point since);
   // `force_from_last_scene` (N, device coordinates), `force_status` and
   // `in_contact_last_scene` of a hand's figure (pqHapticsInteractor::Figures::force).
   static void writeForce(QTextStream& out, const geoshaping::haptics::ForceResult& force);
@@ -61,8 +63,6 @@ private:
   QStringList Steps;
   QString Output;
   int Next = 0;
-  std::chrono::steady_clock::time_point Start; // of the first step
-  bool Started = false;
   int AfterFrame = 1; // the interactor's frame count the next step waits for (the first
                       // frame attaches the mouse)
 };
