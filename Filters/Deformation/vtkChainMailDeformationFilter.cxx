@@ -7,6 +7,7 @@ vtkStandardNewMacro(vtkChainMailDeformationFilter);
 vtkChainMailDeformationFilter::vtkChainMailDeformationFilter()
   : Internals(new vtkInternals)
 {
+  this->ThreadedSuperstepThreshold = vtkIdType(this->Internals->Deformer.threaded_threshold());
   this->SetNumberOfInputPorts(2);
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Malleability");
 }
@@ -119,8 +120,7 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CandidateQueue: "
      << geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
-  os << indent << "ThreadedFrameThreshold: " << this->ThreadedFrameThreshold << "\n";
-  os << indent << "ThreadedFrameWidth: " << this->ThreadedFrameWidth << "\n";
+  os << indent << "ThreadedSuperstepThreshold: " << this->ThreadedSuperstepThreshold << "\n";
   os << indent << "ValidRegionFrame: "
      << geoshaping::frame_name(static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame))
      << "\n";

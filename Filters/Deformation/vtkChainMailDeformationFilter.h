@@ -170,18 +170,15 @@ public:
   ///@}
 
   ///@{
-  /// Threads a large frame runs on in one process (geoshaping/parallel/threaded_chainmail.h):
-  /// 1 (the default) one thread; 0 every core; n > 1 that many. A frame runs threaded when
-  /// the previous one displaced at least ThreadedFrameThreshold vertices and at least
-  /// ThreadedFrameWidth per superstep, with the FIFO or FIFO Priority queue and no
-  /// obstacles; the result is the same bit for bit either way. The default is off: on the two cores
-  /// measured the threaded frame is slower (docs/benchmarks.md, "Threaded frame").
+  /// Threads a large superstep runs on in one process (geoshaping/deform/chainmail_deformer.h,
+  /// "Threads"): 1 (the default) one thread; 0 every core; n > 1 that many. A superstep of
+  /// the FIFO or FIFO Priority queue with at least ThreadedSuperstepThreshold entries runs
+  /// on the threads (not with obstacles, not on MPI pieces); the result is the same bit for
+  /// bit either way (docs/benchmarks.md, "Threaded frame").
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
-  vtkSetClampMacro(ThreadedFrameThreshold, vtkIdType, 0, VTK_ID_MAX);
-  vtkGetMacro(ThreadedFrameThreshold, vtkIdType);
-  vtkSetClampMacro(ThreadedFrameWidth, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(ThreadedFrameWidth, double);
+  vtkSetClampMacro(ThreadedSuperstepThreshold, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(ThreadedSuperstepThreshold, vtkIdType);
   ///@}
 
   ///@{
@@ -303,7 +300,7 @@ public:
   vtkIdType GetNumberOfExaminedCandidates() { return this->Statistics.NumberOfExaminedCandidates; }
   double GetLastDeformationMilliseconds() { return this->Statistics.LastDeformationMilliseconds; }
   vtkIdType GetLastGraspPointId() { return this->Statistics.LastGraspPointId; }
-  /// Threads the last frame ran on (1 unless it ran threaded, see NumberOfThreads).
+  /// Threads the last frame ran on (1 unless a superstep ran threaded, see NumberOfThreads).
   int GetLastFrameThreads() { return this->Statistics.LastFrameThreads; }
   double GetLastGraspMalleability() { return this->Statistics.LastGraspMalleability; }
   ///@}
@@ -434,8 +431,7 @@ protected:
   int CandidateQueue = FIFO_PRIORITY;
   int ValidRegionFrame = AXES;
   int NumberOfThreads = 1;
-  vtkIdType ThreadedFrameThreshold = 100000;
-  double ThreadedFrameWidth = 256.0;
+  vtkIdType ThreadedSuperstepThreshold; // the core's default (constructor)
   double StretchRange[2] = { 1.0, 2.0 };
   double CompressionRange[2] = { 1.0, 0.5 };
   double ShearRange[2] = { 0.0, 0.5 };

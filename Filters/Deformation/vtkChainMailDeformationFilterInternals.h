@@ -32,7 +32,6 @@
 #include "geoshaping/mesh/sparse_normals.h"
 #include "geoshaping/parallel/partitioned_chainmail.h"
 #include "geoshaping/parallel/partitioned_envelope.h"
-#include "geoshaping/parallel/threaded_chainmail.h"
 #include "geoshaping/passes/frame_passes.h"
 
 #include <chrono>
@@ -46,8 +45,6 @@
 struct vtkChainMailDeformationFilter::vtkInternals
 {
   geoshaping::ChainMailDeformer Deformer;
-  // Runs a large frame of Deformer on threads (one process; the same result).
-  geoshaping::ThreadedChainMail Threads;
   geoshaping::Curve StretchCurve, CompressionCurve, ShearCurve; // only .points used
 
   // What the cached core state was built from.

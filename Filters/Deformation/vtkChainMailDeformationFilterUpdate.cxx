@@ -460,11 +460,10 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       state.Deformer.reset();
       return;
     }
-    state.Threads.set_threads(this->NumberOfThreads);
-    state.Threads.set_threshold(std::size_t(this->ThreadedFrameThreshold));
-    state.Threads.set_per_superstep(this->ThreadedFrameWidth);
-    r = state.Threads.deform(state.Deformer, v, d);
-    this->Statistics.LastFrameThreads = state.Threads.last_threaded() ? state.Threads.threads() : 1;
+    state.Deformer.set_threads(this->NumberOfThreads);
+    state.Deformer.set_threaded_threshold(std::size_t(this->ThreadedSuperstepThreshold));
+    r = state.Deformer.deform(v, d);
+    this->Statistics.LastFrameThreads = r.threaded_supersteps > 0 ? state.Deformer.threads() : 1;
   }
   this->Statistics.LastDeformationMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

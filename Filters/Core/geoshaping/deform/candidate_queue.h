@@ -176,6 +176,15 @@ public:
     else
       side_.push_back({ { vertex, sponsor }, group });
   }
+  // n entries of one group at once: append(group, c[i].vertex, c[i].sponsor) for each i.
+  void append(std::uint32_t group, const Candidate* c, std::size_t n)
+  {
+    if (group == 0)
+      pool_.insert(pool_.end(), c, c + n);
+    else
+      for (std::size_t i = 0; i < n; ++i)
+        side_.push_back({ c[i], group });
+  }
   // Files the entries appended since the last call as `generation`, which must exceed
   // the previous one's since clear() (std::invalid_argument otherwise; nothing is
   // checked or filed when nothing was appended).

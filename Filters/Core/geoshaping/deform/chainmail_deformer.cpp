@@ -4,7 +4,6 @@
 #include "geoshaping/mesh/morton.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -65,7 +64,6 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
 void ChainMailDeformer::set_mesh(
   const double* xyz, index_t n, Adjacency adjacency, const Eigen::Vector3d& origin)
 {
-  touch();
   const Adjacency adj = std::move(adjacency); // the internal copy replaces it below
   {
     std::lock_guard<std::mutex> lock(caller_adjacency_mutex());
@@ -143,7 +141,6 @@ void ChainMailDeformer::set_mesh(
 template<class T>
 std::size_t ChainMailDeformer::assign_malleability(const T* m)
 {
-  touch();
   std::size_t bad = 0;
   std::vector<float> values(nodes_.size());
   for (std::size_t v = 0; v < values.size(); ++v)
@@ -169,7 +166,6 @@ std::size_t ChainMailDeformer::set_malleability(const double* m)
 
 void ChainMailDeformer::set_uniform_malleability(double m)
 {
-  touch();
   distinct_.assign(nodes_.empty() ? 0 : 1, float(clean_malleability(m)));
   for (Node& node : nodes_)
     node.rank = 0;
@@ -224,7 +220,6 @@ void ChainMailDeformer::rebuild_rank_params()
 
 void ChainMailDeformer::set_pinned(const std::uint8_t* mask)
 {
-  touch();
   rigid_of_.clear(); // pins are left out of the rigid components
   if (!mask)
   {
@@ -238,7 +233,6 @@ void ChainMailDeformer::set_pinned(const std::uint8_t* mask)
 
 void ChainMailDeformer::set_global_ids(const std::int64_t* gid)
 {
-  touch();
   gid_.clear();
   if (gid)
     to_inner(gid_, gid, outer_of_, [](std::int64_t g) { return g; });
@@ -246,7 +240,6 @@ void ChainMailDeformer::set_global_ids(const std::int64_t* gid)
 
 void ChainMailDeformer::set_owned(const std::uint8_t* mask)
 {
-  touch();
   rigid_of_.clear(); // rigid_component_split() depends on the ghosts
   ghost_.clear();
   if (mask)
@@ -270,7 +263,6 @@ void ChainMailDeformer::reset()
 
 void ChainMailDeformer::commit()
 {
-  touch();
   if (committed_.empty() && !moved_.empty())
     committed_.assign(nodes_.size(), Eigen::Vector3d::Zero());
   for (std::size_t slot = 0; slot < moved_rec_.size(); ++slot)
@@ -285,7 +277,6 @@ void ChainMailDeformer::commit()
 void ChainMailDeformer::set_rest(
   index_t v, const Eigen::Vector3d& rest_local, const Eigen::Vector3d& offset)
 {
-  touch();
   if (committed_.empty())
     committed_.assign(nodes_.size(), Eigen::Vector3d::Zero());
   nodes_[inner(v)].rest = rest_local;
@@ -326,7 +317,11 @@ FrameResult ChainMailDeformer::deform(index_t grasp, const Eigen::Vector3d& disp
     case QueueKind::fifo_priority:
       end_superstep();
       for (SuperstepKey key; (key = pending()) != SuperstepQueue::none; end_superstep())
+      {
         result.examined += superstep(key);
+        ++result.supersteps;
+      }
+      result.threaded_supersteps = threaded_supersteps_;
       break;
     case QueueKind::priority:
       propagate(heap_, index_t(g), result);
@@ -348,22 +343,9 @@ void ChainMailDeformer::begin_frame()
   superstep_ = 0;
   superstep_begin_ = 0;
   sorted_begin_ = sorted_end_ = 0;
+  threaded_supersteps_ = 0;
   blocked_ = 0;
   last_fraction_ = 1.0;
-}
-
-void ChainMailDeformer::touch()
-{
-  static std::atomic<std::uint64_t> next{ 0 };
-  revision_ = ++next;
-}
-
-void ChainMailDeformer::begin_adopted_frame(std::size_t moves)
-{
-  begin_frame();
-  moved_.resize(moves);
-  moved_rec_.resize(moves);
-  moved_root_.resize(moves);
 }
 
 #if defined(__GNUC__)
@@ -380,7 +362,7 @@ ChainMailDeformer::move(
     prefetch(&nodes_[std::size_t(neighbors_[e])]);
   slot_[std::size_t(i)] = index_t(moved_rec_.size());
   moved_rec_.push_back({ gate && obstacles_ ? admissible(i, d) : d, i, sponsor_slot });
-  moved_root_.push_back(root);
+  moved_root_.push_back(StoredRoot::of(root));
   moved_.push_back(outer_of_[std::size_t(i)]);
 }
 
@@ -402,16 +384,23 @@ std::size_t ChainMailDeformer::superstep(const SuperstepKey& key)
   if (!supersteps_.pop(key, begin, end))
     return 0;
   const SuperstepRoot root = SuperstepQueue::root_of(key);
-  return frame_kind_ == ValidRegionFrame::link ? examine<ValidRegionFrame::link>(begin, end, root)
-                                               : examine<ValidRegionFrame::axes>(begin, end, root);
+  const bool link = frame_kind_ == ValidRegionFrame::link;
+  if (threaded_superstep(end - begin))
+    return link ? examine_threaded<ValidRegionFrame::link>(begin, end, root)
+                : examine_threaded<ValidRegionFrame::axes>(begin, end, root);
+  return link ? examine<ValidRegionFrame::link>(begin, end, root)
+              : examine<ValidRegionFrame::axes>(begin, end, root);
 }
 
 void ChainMailDeformer::end_superstep()
 {
-  if (queue_kind_ == QueueKind::fifo_priority)
-    push_neighbours<true>();
-  else
-    push_neighbours<false>();
+  if (!file_threaded_pushes())
+  {
+    if (queue_kind_ == QueueKind::fifo_priority)
+      push_neighbours<true>();
+    else
+      push_neighbours<false>();
+  }
   superstep_begin_ = moved_rec_.size();
   ++superstep_;
 }
@@ -444,7 +433,7 @@ void ChainMailDeformer::push_neighbours()
     const index_t s = moved_rec_[slot].vertex;
     const index_t s_rank = nodes[s].rank;
     const std::uint32_t s_band = Banded ? rank_band_[std::size_t(s_rank)] : 0u;
-    const std::uint32_t same = supersteps_.open(s_band, moved_root_[slot]);
+    const std::uint32_t same = supersteps_.open(s_band, moved_root_[slot].get());
     for (std::uint32_t e = offsets[s], e_end = offsets[s + 1]; e < e_end; ++e)
     {
       const index_t c = neighbors[e];
@@ -509,22 +498,6 @@ void ChainMailDeformer::sort_moves(std::size_t begin)
   if (obstacles_)
     for (std::size_t slot = begin; slot < end; ++slot)
       moved_rec_[slot].disp = admissible(moved_rec_[slot].vertex, moved_rec_[slot].disp);
-}
-
-template<ValidRegionFrame Frame>
-#if defined(__GNUC__)
-__attribute__((always_inline)) // once per examined entry: not worth a call
-#endif
-inline Eigen::Vector3d
-ChainMailDeformer::required_displacement(
-  const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const
-{
-  // The nearest point of c's valid region w.r.t. s to c's rest position
-  // (required_displacement() in valid_region.h, on the per-rank parameters).
-  const Eigen::Vector3d o = c.rest - s.rest;
-  if (!o.allFinite())
-    return Eigen::Vector3d::Zero();
-  return geoshaping::required_displacement<Frame>(o, rank_params_[std::size_t(c.rank)], sponsor_u);
 }
 
 template<ValidRegionFrame Frame>
@@ -611,7 +584,6 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
 std::string ChainMailDeformer::set_obstacles(
   const double* xyz, std::size_t n, const std::int64_t* triangles, std::size_t num_triangles)
 {
-  touch();
   auto obstacles = std::make_shared<Obstacles>();
   std::string error = obstacles->set(xyz, n, triangles, num_triangles, origin_);
   obstacles_.reset();
@@ -622,7 +594,6 @@ std::string ChainMailDeformer::set_obstacles(
 
 void ChainMailDeformer::set_sliding(const std::uint8_t* mask)
 {
-  touch();
   rigid_of_.clear(); // sliding vertices are left out of the rigid components
   sliding_.clear();
   if (mask)
@@ -776,8 +747,7 @@ std::size_t ChainMailDeformer::memory_bytes() const
          pinned_.capacity() + pinned_inner_.capacity() +
          committed_.capacity() * sizeof(Eigen::Vector3d) +
          (moved_.capacity() + previously_moved_.capacity()) * sizeof(index_t) +
-         moved_rec_.capacity() * sizeof(MovedRecord) +
-         moved_root_.capacity() * sizeof(SuperstepRoot) +
+         moved_rec_.capacity() * sizeof(MovedRecord) + moved_root_.capacity() * sizeof(StoredRoot) +
          (inner_of_.capacity() + outer_of_.capacity()) * sizeof(index_t) +
          caller_adjacency_bytes() + offsets_.capacity() * sizeof(std::uint32_t) +
          neighbors_.capacity() * sizeof(index_t) + supersteps_.memory_bytes() +
@@ -787,7 +757,7 @@ std::size_t ChainMailDeformer::memory_bytes() const
          rigid_members_.capacity() * sizeof(index_t) +
          rigid_stamp_.capacity() * sizeof(std::uint32_t) +
          rigid_disp_.capacity() * sizeof(Eigen::Vector3d) + rank_rigid_.capacity() +
-         sliding_.capacity();
+         sliding_.capacity() + threaded_bytes();
 }
 
 } // namespace geoshaping

@@ -11,7 +11,10 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace geoshaping
@@ -25,6 +28,8 @@ struct FrameResult
   std::size_t examined = 0;    // candidates popped from the queue
   std::size_t blocked = 0;     // vertices an obstacle held back short of their target
   double grasp_fraction = 1.0; // the part of the displacement the grasp moved (< 1: stopped)
+  std::size_t supersteps = 0;  // groups examined (FIFO, FIFO Priority; 0 for the others)
+  std::size_t threaded_supersteps = 0; // of which on several threads (set_threads)
 };
 
 // Builds adjacency and rest state once; each frame starts from the rest state, moves
@@ -87,6 +92,19 @@ struct FrameResult
 //   sliding mask and transfer function (O(mesh)). Without obstacles the gate is one
 //   pointer test.
 //
+// Threads. With set_threads(n > 1), a superstep whose group holds at least
+// threaded_threshold() entries is examined by n threads of a pool the deformer keeps
+// (worker_pool.h; deform/threaded_superstep.cpp), each a contiguous chunk of the group:
+// entries are independent within a superstep, and "the first entry in push order that
+// moves c wins" becomes an atomic minimum over the entries proposing to move c. The
+// winners are put in global id order (each thread sorts its own, then each merges a range
+// of ids) and written into the slots the one-thread superstep gives them; under FIFO the
+// threads then push the neighbours of their ranges, whose concatenation is the one-thread
+// push order. Everything else runs on the caller's thread as before: small supersteps,
+// FIFO Priority's pushes (their groups depend on the bands), Priority and Max Violation,
+// frames with obstacles, pieces (set_owned). The result is bit for bit the one-thread
+// frame's whatever the threads or their scheduling.
+//
 // Arithmetic is double, on displacements u = x - x0 of rest positions stored relative
 // to a local origin, so UTM-sized coordinates lose nothing and a rigid region's
 // displacement is bit-identical to its sponsor's.
@@ -147,6 +165,13 @@ public:
   const TransferFunction& transfer_function() const { return transfer_; }
   void set_queue(QueueKind q) { queue_kind_ = q; }
   QueueKind queue() const { return queue_kind_; }
+  // Threads (see "Threads" below): a superstep of at least threaded_threshold() entries
+  // runs on `threads` threads; 1 (the default) runs every frame on the caller's thread, 0
+  // takes the hardware's concurrency. Neither changes any result.
+  void set_threads(int threads);
+  int threads() const { return threads_; }
+  void set_threaded_threshold(std::size_t entries) { threaded_threshold_ = entries; }
+  std::size_t threaded_threshold() const { return threaded_threshold_; }
   // Shape of the valid region (valid_region.h): axes (default) or link.
   void set_valid_region_frame(ValidRegionFrame f) { frame_kind_ = f; }
   ValidRegionFrame valid_region_frame() const { return frame_kind_; }
@@ -156,11 +181,7 @@ public:
   // there are none).
   std::string set_obstacles(
     const double* xyz, std::size_t n, const std::int64_t* triangles, std::size_t num_triangles);
-  void clear_obstacles()
-  {
-    obstacles_.reset();
-    touch();
-  }
+  void clear_obstacles() { obstacles_.reset(); }
   // Clearance (scene units, >= 0; false and unchanged otherwise); kept across
   // set_obstacles.
   bool set_obstacle_clearance(double c);
@@ -203,7 +224,7 @@ public:
   // root its owner gave it); v must not have moved this frame.
   void move_vertex(index_t v, const Eigen::Vector3d& d, const SuperstepRoot& root = {});
   // The root of a vertex moved in the current frame (FIFO, FIFO Priority).
-  const SuperstepRoot& root(index_t v) const { return moved_root_[std::size_t(slot_[inner(v)])]; }
+  SuperstepRoot root(index_t v) const { return moved_root_[std::size_t(slot_[inner(v)])].get(); }
   SuperstepKey pending() const { return supersteps_.top(); }
   // Examines this piece's entries of `key` (if it is its lowest); returns how many.
   std::size_t superstep(const SuperstepKey& key);
@@ -266,49 +287,47 @@ public:
   Eigen::Vector3d position(index_t v) const { return origin_ + rest_local(v) + displacement(v); }
   ChainMailParams params(index_t v) const { return transfer_(malleability(v)); }
 
-  // A number that changes whenever the state a frame starts from changes (mesh,
-  // malleability, pins, global ids, ownership, rest shape, obstacles, sliding mask), not
-  // when the transfer function, queue or region shape is set (every frame). Copies share
-  // it; two different states never do. A threaded driver rebuilds its pieces on a change.
-  std::uint64_t revision() const { return revision_; }
-
-  // A frame run elsewhere (threaded_chainmail.h), written in as if deform() had run it:
-  // begin_adopted_frame(n); adopt_move(slot, v, u, root) for each slot 0 .. n - 1 (the
-  // order deform() moves them in; distinct slots may be written from several threads at
-  // once); then, once every move is written, adopt_sponsor(slot, sponsor) for each
-  // (sponsor: the caller id of the vertex v's entry came from, -1 for the grasp).
-  void begin_adopted_frame(std::size_t moves);
-  void adopt_move(std::size_t slot, index_t v, const Eigen::Vector3d& u, const SuperstepRoot& root)
-  {
-    const std::size_t i = inner(v);
-    nodes_[i].stamp = frame_;
-    slot_[i] = index_t(slot);
-    moved_[slot] = v;
-    moved_rec_[slot] = { u, index_t(i), -1 };
-    moved_root_[slot] = root;
-  }
-  void adopt_sponsor(std::size_t slot, index_t sponsor)
-  {
-    moved_rec_[slot].sponsor_slot = sponsor < 0 ? -1 : slot_[inner(sponsor)];
-  }
-  // The same given the sponsor's slot (its index in moved()).
-  void adopt_sponsor_slot(std::size_t slot, index_t sponsor_slot)
-  {
-    moved_rec_[slot].sponsor_slot = sponsor_slot;
-  }
-  // The last frame's moves by slot (index into moved()): displacement, root, and the
-  // slot of the sponsor (-1: the grasp, or a vertex moved by move_vertex()).
-  const Eigen::Vector3d& moved_displacement(std::size_t slot) const
-  {
-    return moved_rec_[slot].disp;
-  }
-  const SuperstepRoot& moved_root(std::size_t slot) const { return moved_root_[slot]; }
-  index_t moved_sponsor_slot(std::size_t slot) const { return moved_rec_[slot].sponsor_slot; }
-
   // Bytes held beyond the input mesh (rest copy, state, adjacency, queue pool).
   std::size_t memory_bytes() const;
 
 private:
+  // Resizing leaves new elements uninitialised (a threaded superstep fills them in).
+  template<class T>
+  struct UninitializedAllocator : std::allocator<T>
+  {
+    template<class U>
+    struct rebind
+    {
+      using other = UninitializedAllocator<U>;
+    };
+    UninitializedAllocator() = default;
+    template<class U>
+    UninitializedAllocator(const UninitializedAllocator<U>&)
+    {
+    }
+    template<class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
+    {
+      ::new (static_cast<void*>(p)) U;
+    }
+    template<class U, class... A>
+    void construct(U* p, A&&... a)
+    {
+      ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+    }
+  };
+  // The pool and the scratch of threaded supersteps (threaded_superstep.cpp), made on the
+  // first; a copy of the deformer starts without and makes its own.
+  struct Threaded;
+  struct ThreadedHandle
+  {
+    std::unique_ptr<Threaded> state;
+    ThreadedHandle();
+    ThreadedHandle(const ThreadedHandle&);
+    ThreadedHandle& operator=(const ThreadedHandle&);
+    ~ThreadedHandle();
+  };
+
   template<ValidRegionFrame Frame, class Queue>
   void propagate(Queue& queue, index_t grasp, FrameResult& result);
   template<class Queue>
@@ -321,7 +340,6 @@ private:
   template<class T>
   std::size_t assign_malleability(const T* m);
   std::size_t inner(index_t v) const { return std::size_t(inner_of_[std::size_t(v)]); }
-  void touch(); // a new revision()
 
   // Internally vertices are renumbered once, in set_mesh, along a space-filling (Morton)
   // curve of their rest positions, so the vertices a frame touches lie close together
@@ -335,6 +353,14 @@ private:
     std::uint32_t stamp;  // == frame_ when moved this frame
     index_t rank;         // index of the malleability among the sorted distinct values
   };
+  // A SuperstepRoot without default values, so that resizing leaves it uninitialised.
+  struct StoredRoot
+  {
+    std::uint32_t generation;
+    std::int64_t gid;
+    static StoredRoot of(const SuperstepRoot& r) { return { r.generation, r.gid }; }
+    SuperstepRoot get() const { return { generation, gid }; }
+  };
   struct MovedRecord
   {
     Eigen::Vector3d disp; // this frame's displacement (zeroed by commit())
@@ -344,10 +370,35 @@ private:
 
   template<ValidRegionFrame Frame>
   std::size_t examine(std::size_t begin, std::size_t end, const SuperstepRoot& root);
+  // examine() on threads (see "Threads"); under FIFO it pushes the neighbours too, which
+  // end_superstep() then files.
+  template<ValidRegionFrame Frame>
+  std::size_t examine_threaded(std::size_t begin, std::size_t end, const SuperstepRoot& root);
+  // Whether the current superstep, `entries` long, runs on threads.
+  bool threaded_superstep(std::size_t entries) const
+  {
+    return threads_ > 1 && entries >= threaded_threshold_ && !obstacles_ && ghost_.empty() &&
+           moved_rec_.size() == superstep_begin_;
+  }
+  // Files the pushes examine_threaded() made, if they are this superstep's; false if not.
+  bool file_threaded_pushes();
+  std::size_t threaded_bytes() const;
   // Where candidate c must move given sponsor s moved by sponsor_u (see propagate()).
   template<ValidRegionFrame Frame>
-  Eigen::Vector3d required_displacement(
-    const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const;
+#if defined(__GNUC__)
+  __attribute__((always_inline)) // once per examined entry: not worth a call
+#endif
+  Eigen::Vector3d
+  required_displacement(const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const
+  {
+    // The nearest point of c's valid region w.r.t. s to c's rest position
+    // (required_displacement() in valid_region.h, on the per-rank parameters).
+    const Eigen::Vector3d o = c.rest - s.rest;
+    if (!o.allFinite())
+      return Eigen::Vector3d::Zero();
+    return geoshaping::required_displacement<Frame>(
+      o, rank_params_[std::size_t(c.rank)], sponsor_u);
+  }
   // gate false: d passes the obstacle gate later (sort_moves()).
   void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,
     const SuperstepRoot& root = {}, bool gate = true);
@@ -389,10 +440,10 @@ private:
   std::vector<Eigen::Vector3d> committed_; // by caller id; empty until the first edit
   Eigen::Vector3d zero_ = Eigen::Vector3d::Zero();
   std::uint32_t frame_ = 0;
-  std::vector<index_t> moved_, previously_moved_;                 // caller ids
-  std::vector<MovedRecord> moved_rec_;                            // by slot
-  std::vector<SuperstepRoot> moved_root_;                         // by slot
-  std::vector<std::pair<std::int64_t, std::uint32_t>> by_id_key_; // sort_by_id() scratch
+  std::vector<index_t> moved_, previously_moved_;                           // caller ids
+  std::vector<MovedRecord, UninitializedAllocator<MovedRecord>> moved_rec_; // by slot
+  std::vector<StoredRoot, UninitializedAllocator<StoredRoot>> moved_root_;  // by slot
+  std::vector<std::pair<std::int64_t, std::uint32_t>> by_id_key_;           // sort_by_id() scratch
   std::vector<std::uint32_t> by_id_;
   std::vector<MovedRecord> moved_scratch_;
 
@@ -415,11 +466,14 @@ private:
   std::vector<std::uint8_t> sliding_;       // by internal id; empty when none
   double last_fraction_ = 1.0;              // of the last gated move
   std::size_t blocked_ = 0;
-  bool rigid_split_ = false; // a component holds a ghost (build_rigid_components)
-  std::uint64_t revision_ = 0;
-  std::uint32_t superstep_ = 0;                   // the current superstep of the frame
-  std::size_t superstep_begin_ = 0;               // slot of its first move
+  bool rigid_split_ = false;        // a component holds a ghost (build_rigid_components)
+  std::uint32_t superstep_ = 0;     // the current superstep of the frame
+  std::size_t superstep_begin_ = 0; // slot of its first move
   std::size_t sorted_begin_ = 0, sorted_end_ = 0; // slots sort_moves() left in id order
+  int threads_ = 1;
+  std::size_t threaded_threshold_ = 4096;
+  std::size_t threaded_supersteps_ = 0; // this frame's
+  ThreadedHandle threaded_;
 };
 
 } // namespace geoshaping

@@ -3,7 +3,7 @@
 // interface: the partitioned deformer, the global numbering, the labels, the envelope and
 // the edit history talk through it; vtkGeoShapingControllerExchange implements it over a
 // vtkMultiProcessController and InProcessExchange over threads of one process
-// (in_process_exchange.h: the threaded frame and the tests).
+// (in_process_exchange.h: the tests).
 // The messages it carries are the moved frontier (MovedVertex) and the round states.
 #include "geoshaping/deform/candidate_queue.h"
 

@@ -1,6 +1,6 @@
 #pragma once
-// Exchange (exchange.h) between pieces run by threads of one process: the threaded frame
-// (threaded_chainmail.h) and the tests' stand-in for MPI. One InProcessHub is shared; each
+// Exchange (exchange.h) between pieces run by threads of one process: the tests' (and the
+// report's) stand-in for MPI. One InProcessHub is shared; each
 // piece's thread uses its own InProcessExchange. Collectives meet at a barrier, so the
 // calls must be made in the same order on every piece, as with MPI.
 //

@@ -168,9 +168,6 @@ bool PartitionedChainMail::fill_outbox()
     box.clear();
   bool any = false;
   const auto& moved = deformer_.moved();
-  if (moved.size() > deformer_.superstep_begin())
-    runs_.push_back({ deformer_.superstep_index(), std::uint32_t(deformer_.superstep_begin()),
-      std::uint32_t(moved.size()) });
   for (std::size_t k = deformer_.superstep_begin(); k < moved.size(); ++k)
   {
     const index_t v = moved[k];
@@ -229,7 +226,6 @@ FrameResult PartitionedChainMail::deform(
 {
   FrameResult result;
   supersteps_ = 0;
-  runs_.clear();
   deformer_.begin_frame();
   const QueueKind q = deformer_.queue();
   if (q != QueueKind::fifo && q != QueueKind::fifo_priority)

@@ -99,23 +99,13 @@ public:
   // Rounds (synchronisations) of the last frame, after the grasp's (the same on every
   // piece): what a frame's latency grows with.
   std::size_t rounds() const { return rounds_; }
-  // The moves of the last frame's supersteps on this piece (its owned vertices), in
-  // superstep order: moved()[begin, end) of the deformer, in global id order, moved in
-  // superstep `superstep`. A driver merges the pieces' runs into the whole mesh's order
-  // (threaded_chainmail.h).
-  struct Run
-  {
-    std::uint32_t superstep;
-    std::uint32_t begin, end;
-  };
-  const std::vector<Run>& runs() const { return runs_; }
   // Appends the local vertices holding global id `gid` (none when this piece does not
   // hold it; a point held twice, all its copies): EditPlace::holders for edits.
   void holders(std::int64_t gid, std::vector<index_t>& out) const;
 
 private:
-  // Fills the outboxes with this superstep's owned moved vertices that other pieces hold
-  // and records their run; true if any are sent.
+  // Fills the outboxes with this superstep's owned moved vertices that other pieces hold;
+  // true if any are sent.
   bool fill_outbox();
   // Sends the outboxes (with a marker of this superstep's number first when `marked`)
   // and moves the ghosts received.
@@ -131,7 +121,6 @@ private:
   std::vector<std::uint32_t> subscriber_offsets_;
   std::vector<std::uint32_t> subscribers_;
   std::vector<std::vector<MovedVertex>> outbox_;
-  std::vector<Run> runs_;
   std::size_t supersteps_ = 0;
   std::size_t rounds_ = 0;
 };

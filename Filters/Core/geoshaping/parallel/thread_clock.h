@@ -1,7 +1,6 @@
 #pragma once
-// The calling thread's CPU time: what the threaded frame reports per thread
-// (threaded_chainmail.h) and what the benchmarks time with, since on a loaded machine it
-// leaves out the time other threads and processes ran.
+// The calling thread's CPU time: what the benchmarks time with, since on a loaded machine
+// it leaves out the time other threads and processes ran.
 #include <ctime>
 
 namespace geoshaping
