@@ -194,12 +194,12 @@ void BM_SuperstepShare(benchmark::State& state)
 
 BENCHMARK(BM_ThreadedFrame)
   ->ArgsProduct({ { 0, 2 }, { 1, 2 }, { 1000, 300, 100, 30 }, { 0 } })
-  ->ArgsProduct({ { 0 }, { 1, 2 }, { 1000 }, { 256 } })
+  ->ArgsProduct({ { 0 }, { 2 }, { 1000, 300 }, { 256, 4096 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_Interleaved)
   ->ArgsProduct({ { 0, 2 }, { 1000, 300, 100, 30 }, { 0 } })
-  ->ArgsProduct({ { 0 }, { 1000, 30 }, { 64, 256, 1024 } })
+  ->ArgsProduct({ { 0 }, { 1000, 300, 100 }, { 256, 4096 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime()
   ->MinTime(1.0);

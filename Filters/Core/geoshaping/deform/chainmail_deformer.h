@@ -471,7 +471,7 @@ private:
   std::size_t superstep_begin_ = 0; // slot of its first move
   std::size_t sorted_begin_ = 0, sorted_end_ = 0; // slots sort_moves() left in id order
   int threads_ = 1;
-  std::size_t threaded_threshold_ = 4096;
+  std::size_t threaded_threshold_ = 1024;
   std::size_t threaded_supersteps_ = 0; // this frame's
   ThreadedHandle threaded_;
 };
