@@ -302,6 +302,14 @@ public:
   vtkIdType GetLastGraspPointId() { return this->Statistics.LastGraspPointId; }
   /// Threads the last frame ran on (1 unless a superstep ran threaded, see NumberOfThreads).
   int GetLastFrameThreads() { return this->Statistics.LastFrameThreads; }
+  /// In one process, the last frame's supersteps (FIFO, FIFO Priority; 0 for the other
+  /// queues) and how many of them ran on threads: with their sizes, what the frame's
+  /// time on more cores follows (docs/benchmarks.md, "Threaded frame").
+  vtkIdType GetLastFrameSupersteps() { return this->Statistics.LastFrameSupersteps; }
+  vtkIdType GetLastFrameThreadedSupersteps()
+  {
+    return this->Statistics.LastFrameThreadedSupersteps;
+  }
   double GetLastGraspMalleability() { return this->Statistics.LastGraspMalleability; }
   ///@}
 
@@ -454,6 +462,8 @@ protected:
     vtkIdType NumberOfExaminedCandidates = 0;
     double LastDeformationMilliseconds = 0.0;
     int LastFrameThreads = 1;
+    vtkIdType LastFrameSupersteps = 0;
+    vtkIdType LastFrameThreadedSupersteps = 0;
     vtkIdType LastGraspPointId = -1;
     double LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
     int NumberOfRefinementSweeps = 0;

@@ -464,6 +464,8 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
     state.Deformer.set_threaded_threshold(std::size_t(this->ThreadedSuperstepThreshold));
     r = state.Deformer.deform(v, d);
     this->Statistics.LastFrameThreads = r.threaded_supersteps > 0 ? state.Deformer.threads() : 1;
+    this->Statistics.LastFrameSupersteps = vtkIdType(r.supersteps);
+    this->Statistics.LastFrameThreadedSupersteps = vtkIdType(r.threaded_supersteps);
   }
   this->Statistics.LastDeformationMilliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

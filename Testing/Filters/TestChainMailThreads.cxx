@@ -67,6 +67,10 @@ TEST(ChainMailThreads, ThreadedFramesEqualTheOneThreadFilterBitForBit)
         f->Update();
       }
       EXPECT_EQ(threaded->GetLastFrameThreads(), 3) << what;
+      EXPECT_GT(threaded->GetLastFrameThreadedSupersteps(), 0) << what;
+      EXPECT_EQ(plain->GetLastFrameThreadedSupersteps(), 0) << what;
+      EXPECT_GT(plain->GetLastFrameSupersteps(), 10) << what;
+      EXPECT_EQ(threaded->GetLastFrameSupersteps(), plain->GetLastFrameSupersteps()) << what;
       EXPECT_EQ(plain->GetLastFrameThreads(), 1) << what;
       EXPECT_GT(plain->GetNumberOfDisplacedPoints(), 300) << what;
       EXPECT_EQ(threaded->GetNumberOfDisplacedPoints(), plain->GetNumberOfDisplacedPoints())
