@@ -125,6 +125,7 @@ struct PartitionedEnvelope::Net
   }
   void set_label(index_t v, int, double, double y) { p.env_.set(v, y); }
   const std::vector<index_t>& touched() const { return p.env_.touched; }
+  const std::vector<index_t>& raised_to_check() const { return touched(); }
   // Relaxes b's links into its free neighbours a: y_a <= y_b + ub(a, b) on y = sign u.
   auto relax(int axis, double sign) const
   {

@@ -26,6 +26,8 @@
 //   for_each_link(v, axis, f(m, lo, hi, m_fixed)): v's links, lo <= u_v - u_m <= hi;
 //   begin_run(axis, sign): new labels (every label the start, y = sign u);
 //   label(v, axis, sign), set_label(v, axis, sign, y), touched(): the run's labels;
+//   raised_to_check(): after cone(), the raised vertices whose links step 2 checks for
+//     breaks: touched(), or any subset holding every raised vertex with a broken link;
 //   cone(axis, sign, f(a, c)): the fixed vertices' cone labels c on y' = sign u, each
 //     vertex a with one;
 //   min_pass(axis, sign, seeds): the min-plus run;
@@ -148,10 +150,10 @@ void EnvelopeAxis::direction(Net& net, int axis, double sign, std::vector<index_
         net.set_label(a, axis, sign, -c);
     });
   // Links the raised labels break seed the run too.
-  const std::vector<index_t>& touched = net.touched();
-  for (std::size_t i = 0; i < touched.size(); ++i)
+  const std::vector<index_t>& raised = net.raised_to_check();
+  for (std::size_t i = 0; i < raised.size(); ++i)
   {
-    const index_t v = touched[i];
+    const index_t v = raised[i];
     const double yv = net.label(v, axis, sign);
     const bool v_fixed = net.is_fixed(v);
     net.for_each_link(v, axis,

@@ -32,8 +32,8 @@ bool link_slab(const LinkMesh& m, index_t c, index_t s, Eigen::Vector3d& lo, Eig
 
 // link_slab on one axis only (the envelope works axis by axis): the same numbers as
 // displacement_bounds, a third of the work. `o` is rest_c - rest_s, finite.
-void axis_slab(const Eigen::Vector3d& o, const ChainMailParams& pc, const ChainMailParams& ps,
-  int i, double& lo, double& hi)
+inline void axis_slab(const Eigen::Vector3d& o, const ChainMailParams& pc,
+  const ChainMailParams& ps, int i, double& lo, double& hi)
 {
   const Eigen::Vector3d a = o.cwiseAbs();
   const double side = a.sum() - a[i]; // S_i = sum_{j != i} |o_j|
@@ -518,13 +518,17 @@ inline void LinkProjector::envelope_touch(index_t v, double value)
 // pins are constant for the projector's life): per neighbour a with a finite rest offset,
 // a's id, whether a is pinned, and per axis i the slab [lo, hi] of u_a - u_v
 // (axis_slab(a, v), the bounds the passes relax with) as up = hi and dn = -lo. Returns
-// the first slot; env_count_[v] slots follow.
-std::int32_t LinkProjector::envelope_links(index_t v)
+// v's slots: `count` from `first`.
+inline LinkProjector::LinkRange LinkProjector::envelope_links(index_t v)
 {
-  if (env_first_[v] >= 0)
-    return env_first_[v];
-  const std::int32_t first = std::int32_t(env_nbr_.size());
+  const LinkRange r = env_links_[std::size_t(v)];
+  return r.first >= 0 ? r : fill_links(v);
+}
+
+LinkProjector::LinkRange LinkProjector::fill_links(index_t v)
+{
   const Adjacency& adj = *mesh_.adjacency;
+  const std::size_t first = env_nbr_.size();
   const Eigen::Vector3d& rest = mesh_.rest[std::size_t(v)];
   const ChainMailParams& pv = mesh_.params[std::size_t(v)];
   for (const index_t* n = adj.begin(v); n != adj.end(v); ++n)
@@ -534,19 +538,55 @@ std::int32_t LinkProjector::envelope_links(index_t v)
       continue;
     env_nbr_.push_back(*n);
     env_fixed_.push_back(mesh_.is_pinned(*n) ? 1 : 0);
+    const ChainMailParams& pn = mesh_.params[std::size_t(*n)];
     for (int i = 0; i < 3; ++i)
       if (env_cache_axes_ & (1 << i))
       {
         double lo, hi;
-        axis_slab(o, mesh_.params[std::size_t(*n)], pv, i, lo, hi);
+        axis_slab(o, pn, pv, i, lo, hi);
         env_up_[i].push_back(hi);
         env_dn_[i].push_back(-lo);
       }
   }
-  env_first_[v] = first;
-  env_count_[v] = std::int32_t(env_nbr_.size()) - first;
+  const LinkRange r{ std::int32_t(first), std::int32_t(env_nbr_.size() - first) };
+  env_links_[std::size_t(v)] = r;
   env_cached_.push_back(v);
-  return first;
+  return r;
+}
+
+// Fills the links of `vertices` in their order, each vertex's loads started ahead of its
+// turn: its cache entry, adjacency row, rest position and parameters 24 vertices ahead,
+// its neighbour list 16 ahead, its neighbours' rest positions and parameters 8 ahead. On
+// a grasp's first frame these are cold (the frame read none of them), and a fill of one
+// vertex at a time waits for each load in turn, three deep (row, neighbours, their rest).
+void LinkProjector::prefill_links(const std::vector<index_t>& vertices)
+{
+  const Adjacency& adj = *mesh_.adjacency;
+  const std::size_t n = vertices.size();
+  constexpr std::size_t far = 24, mid = 16, near = 8;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (i + far < n)
+    {
+      const std::size_t w = std::size_t(vertices[i + far]);
+      __builtin_prefetch(&env_links_[w]);
+      __builtin_prefetch(&adj.offsets[w]);
+      __builtin_prefetch(&mesh_.rest[w]);
+      __builtin_prefetch(&mesh_.params[w]);
+    }
+    if (i + mid < n)
+      __builtin_prefetch(adj.begin(vertices[i + mid]));
+    if (i + near < n && env_links_[std::size_t(vertices[i + near])].first < 0)
+    {
+      const index_t w = vertices[i + near];
+      for (const index_t* m = adj.begin(w); m != adj.end(w); ++m)
+      {
+        __builtin_prefetch(&mesh_.rest[std::size_t(*m)]);
+        __builtin_prefetch(&mesh_.params[std::size_t(*m)]);
+      }
+    }
+    envelope_links(vertices[i]);
+  }
 }
 
 // The passes' priority queue: a radix heap (Ahuja, Mehlhorn, Orlin and Tarjan 1990) on the
@@ -614,8 +654,8 @@ void LinkProjector::envelope_reset_queue()
   env_last_ = 0;
 }
 
-template<class Label, class Relax>
-void LinkProjector::envelope_dijkstra(int axis, double sign, Label label, Relax relax)
+template<class Label, class Relax, class Visit>
+void LinkProjector::envelope_dijkstra(int axis, double sign, Label label, Relax relax, Visit visit)
 {
   const std::vector<double>& ub = sign > 0.0 ? env_up_[axis] : env_dn_[axis];
   while (env_queued_count_ > 0)
@@ -625,7 +665,9 @@ void LinkProjector::envelope_dijkstra(int axis, double sign, Label label, Relax 
     const double y = e.value;
     if (y != label(b))
       continue; // lowered again since it was pushed
-    const std::int32_t first = envelope_links(b), last = first + env_count_[b];
+    const LinkRange r = envelope_links(b);
+    visit(b, y, r);
+    const std::int32_t first = r.first, last = first + r.count;
     const index_t* nbr = env_nbr_.data(); // stable until the next envelope_links()
     const std::uint8_t* pinned = env_fixed_.data();
     const double* w = ub.data();
@@ -659,7 +701,8 @@ void LinkProjector::envelope_min_pass(int axis, double sign, std::vector<index_t
         envelope_touch(a, sign * cap);
         envelope_push(cap, a);
       }
-    });
+    },
+    [](index_t, double, LinkRange) {});
 }
 
 // The cones of the fixed vertices on y = sign u: c(a) = min_f (y_f + d(f, a)) by Dijkstra
@@ -670,6 +713,7 @@ template<class Raise>
 void LinkProjector::envelope_cone(
   int axis, double sign, const std::vector<index_t>& fixed, Raise raise)
 {
+  env_check_.clear();
   if (fixed.empty())
     return;
   double top = 0.0; // every vertex outside the region is at rest
@@ -693,14 +737,46 @@ void LinkProjector::envelope_cone(
     env_cone_[v] = c;
     envelope_push(c, v);
   };
+  // Which raised vertices may have a broken link (EnvelopeAxis::direction then checks
+  // their links exactly): b, popped at its final cone label c_b (its last pop), is raised
+  // to y_b = -c_b on the run's y = -sign u when that is above its start. A link to a
+  // breaks y_b <= fl(y_a + w) (w: the cone's weight, the run's ub(b, a)) only if it
+  // breaks it with any lower bound of a's final label: its start when a is fixed, else
+  // -min(c_a, top) (c_a only falls, a free vertex ends at max(start, -c_a) and no start
+  // is below -top). It breaks y_a <= fl(y_b + w') (w': the run's ub(a, b)) only if a ends
+  // at its start (a raised a checks that link as its own first kind) and a is free.
+  // Breaks are rare (the cone's labels satisfy the links up to rounding) and the test
+  // reads no label of the run: this replaces a pass over every raised vertex's links.
+  const double* w_other = (sign > 0.0 ? env_dn_ : env_up_)[axis].data();
+  const auto visit = [&](index_t b, double c, LinkRange r)
+  {
+    const double yb = -c;
+    if (is_fixed(b) || !(yb > -sign * u_[b][axis]))
+      return;
+    const double* w = (sign > 0.0 ? env_up_ : env_dn_)[axis].data();
+    for (std::int32_t k = r.first; k < r.first + r.count; ++k)
+    {
+      const index_t a = env_nbr_[std::size_t(k)];
+      const bool a_fixed = env_fixed_[std::size_t(k)] || a == grasp_;
+      const double ya = -sign * u_[a][axis];
+      const double low = a_fixed ? ya : -std::min(std::min(cone(a), c + w[k]), top);
+      if (yb > low + w[k] || (!a_fixed && ya > yb + w_other[k]))
+      {
+        env_check_.push_back(b);
+        return;
+      }
+    }
+  };
   for (index_t f : fixed)
     set(f, envelope_value(f, axis, sign));
-  envelope_dijkstra(axis, sign, cone,
+  envelope_dijkstra(
+    axis, sign, cone,
     [&](index_t a, double cap)
     {
       if (cap < cone(a) && cap < top)
         set(a, cap);
-    });
+    },
+    visit);
   for (index_t a : env_cone_touched_)
     raise(a, env_cone_[a]);
 }
@@ -732,7 +808,8 @@ struct LinkProjector::EnvelopeNet
   template<class F>
   void for_each_link(index_t v, int axis, F f) const
   {
-    const std::int32_t first = p.envelope_links(v), last = first + p.env_count_[v];
+    const LinkRange r = p.envelope_links(v);
+    const std::int32_t first = r.first, last = first + r.count;
     const double* up = p.env_up_[axis].data();
     const double* dn = p.env_dn_[axis].data();
     const index_t* nbr = p.env_nbr_.data();
@@ -748,6 +825,7 @@ struct LinkProjector::EnvelopeNet
   double label(index_t v, int axis, double sign) const { return p.envelope_value(v, axis, sign); }
   void set_label(index_t v, int, double sign, double y) { p.envelope_touch(v, sign * y); }
   const std::vector<index_t>& touched() const { return p.env_touched_; }
+  const std::vector<index_t>& raised_to_check() const { return p.env_check_; }
   template<class F>
   void cone(int axis, double sign, F raise)
   {
@@ -777,8 +855,7 @@ void LinkProjector::run_envelope(
     env_stamp_.assign(std::size_t(n), 0);
     env_cone_.reset(new double[std::size_t(n)]);
     env_cone_stamp_.assign(std::size_t(n), 0);
-    env_first_.assign(std::size_t(n), -1);
-    env_count_.reset(new std::int32_t[std::size_t(n)]);
+    env_links_.assign(std::size_t(n), LinkRange{ -1, 0 });
     env_cached_.clear();
   }
   const Adjacency& adj = *mesh_.adjacency;
@@ -807,7 +884,7 @@ void LinkProjector::run_envelope(
   if (too_big || (env_axes_ & ~env_cache_axes_))
   {
     for (index_t v : env_cached_)
-      env_first_[v] = -1;
+      env_links_[v].first = -1;
     env_cached_.clear();
     env_nbr_.clear();
     env_fixed_.clear();
@@ -850,6 +927,8 @@ void LinkProjector::run_envelope(
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
 
+  if (env_axes_)
+    prefill_links(region_); // the first axis's scan reads them all
   EnvelopeNet net{ *this, fixed };
   double squared = 0.0; // sum over the axes of the squared largest slab distance
   for (int axis = 0; axis < 3; ++axis)

@@ -288,11 +288,19 @@ private:
   // The Dijkstra loop both share: pops the queue in increasing label, skips stale
   // entries (value != label(b)), and offers each free, non-grasped neighbour a of b the
   // label value(b) + ub(b, a) through relax(a, cap).
-  template<class Label, class Relax>
-  void envelope_dijkstra(int axis, double sign, Label label, Relax relax);
+  // visit(b, value(b), b's links) is called at each current pop, before the relaxations.
+  template<class Label, class Relax, class Visit>
+  void envelope_dijkstra(int axis, double sign, Label label, Relax relax, Visit visit);
   double envelope_value(index_t v, int axis, double sign) const;
   void envelope_touch(index_t v, double value);
-  std::int32_t envelope_links(index_t v);
+  struct LinkRange
+  {
+    std::int32_t first; // -1: not cached yet
+    std::int32_t count;
+  };
+  LinkRange envelope_links(index_t v);
+  LinkRange fill_links(index_t v);
+  void prefill_links(const std::vector<index_t>& vertices);
   struct RadixEntry
   {
     std::uint64_t key; // radix_key(value): the label's leading bits, order-preserving
@@ -327,11 +335,11 @@ private:
   std::vector<std::uint32_t> env_cone_stamp_;
   std::uint32_t env_cone_pass_ = 0;
   std::vector<index_t> env_cone_touched_;
+  std::vector<index_t> env_check_; // raised vertices whose links may be broken (envelope_cone)
   // The link cache of one call (envelope_links): per vertex reached its first slot (-1:
-  // none yet) and slot count (dense), and per slot the neighbour, whether it is fixed and,
-  // per active axis, the slab bounds the passes relax with.
-  std::vector<std::int32_t> env_first_;
-  std::unique_ptr<std::int32_t[]> env_count_;
+  // none yet) and slot count (dense, side by side: one load), and per slot the neighbour,
+  // whether it is fixed and, per active axis, the slab bounds the passes relax with.
+  std::vector<LinkRange> env_links_;
   std::vector<index_t> env_cached_, env_nbr_;
   std::vector<std::uint8_t> env_fixed_;
   std::vector<double> env_up_[3], env_dn_[3];
