@@ -497,21 +497,48 @@ void LinkProjector::run_admm(const ProjectionOptions& options, ProjectionReport&
   }
 }
 
-// The value of v on `axis` in the current envelope run (the start until a pass sets it).
-inline double LinkProjector::envelope_value(index_t v, int axis, double sign) const
+// The label of v in the current envelope run on y = sign u (its start until the run sets
+// it): env_label_ holds every vertex's (as a value of u) between envelope_begin_axis and
+// the end of the call.
+inline double LinkProjector::envelope_value(index_t v, int, double sign) const
 {
-  const double u = env_stamp_[v] == env_pass_ ? env_value_[v] : u_[v][axis];
-  return sign * u;
+  return sign * env_label_[v];
 }
 
 inline void LinkProjector::envelope_touch(index_t v, double value)
 {
-  if (env_stamp_[v] != env_pass_)
+  if (!env_set_[v])
   {
-    env_stamp_[v] = env_pass_;
+    env_set_[v] = 1;
     env_touched_.push_back(v);
   }
-  env_value_[v] = value;
+  env_label_[v] = value;
+}
+
+// Labels the last run set go back to the start on `axis`, and so do the region's (set on
+// another axis, or moved by the combine): every label is u on `axis` (0 off the region).
+void LinkProjector::envelope_begin_axis(int axis)
+{
+  for (index_t v : env_touched_)
+  {
+    env_label_[v] = u_[v][axis];
+    env_set_[v] = 0;
+  }
+  env_touched_.clear();
+  for (index_t v : region_)
+    env_label_[v] = u_[v][axis];
+}
+
+void LinkProjector::envelope_end_call()
+{
+  for (index_t v : env_touched_)
+  {
+    env_label_[v] = 0.0;
+    env_set_[v] = 0;
+  }
+  env_touched_.clear();
+  for (index_t v : region_)
+    env_label_[v] = 0.0;
 }
 
 // The links of v, cached on first use and kept across calls (the mesh's rest, params and
@@ -719,21 +746,14 @@ void LinkProjector::envelope_cone(
   double top = 0.0; // every vertex outside the region is at rest
   for (index_t v : region_)
     top = std::max(top, sign * u_[v][axis]);
-  ++env_cone_pass_;
   env_cone_touched_.clear();
   envelope_reset_queue();
-  const auto cone = [&](index_t v)
-  {
-    return env_cone_stamp_[v] == env_cone_pass_ ? env_cone_[v]
-                                                : std::numeric_limits<double>::infinity();
-  };
+  const double none = std::numeric_limits<double>::infinity();
+  const auto cone = [&](index_t v) { return env_cone_[v]; };
   const auto set = [&](index_t v, double c)
   {
-    if (env_cone_stamp_[v] != env_cone_pass_)
-    {
-      env_cone_stamp_[v] = env_cone_pass_;
+    if (env_cone_[v] == none)
       env_cone_touched_.push_back(v);
-    }
     env_cone_[v] = c;
     envelope_push(c, v);
   };
@@ -751,14 +771,14 @@ void LinkProjector::envelope_cone(
   const auto visit = [&](index_t b, double c, LinkRange r)
   {
     const double yb = -c;
-    if (is_fixed(b) || !(yb > -sign * u_[b][axis]))
+    if (is_fixed(b) || !(yb > -sign * env_label_[b]))
       return;
     const double* w = (sign > 0.0 ? env_up_ : env_dn_)[axis].data();
     for (std::int32_t k = r.first; k < r.first + r.count; ++k)
     {
       const index_t a = env_nbr_[std::size_t(k)];
       const bool a_fixed = env_fixed_[std::size_t(k)] || a == grasp_;
-      const double ya = -sign * u_[a][axis];
+      const double ya = -sign * env_label_[a];
       const double low = a_fixed ? ya : -std::min(std::min(cone(a), c + w[k]), top);
       if (yb > low + w[k] || (!a_fixed && ya > yb + w_other[k]))
       {
@@ -778,7 +798,10 @@ void LinkProjector::envelope_cone(
     },
     visit);
   for (index_t a : env_cone_touched_)
+  {
     raise(a, env_cone_[a]);
+    env_cone_[a] = none;
+  }
 }
 
 // The whole mesh for EnvelopeAxis: links from the cache (slot k of v holds the slab of
@@ -817,11 +840,7 @@ struct LinkProjector::EnvelopeNet
     for (std::int32_t k = first; k < last; ++k)
       f(nbr[k], -up[k], dn[k], pinned[k] || nbr[k] == p.grasp_);
   }
-  void begin_run(int, double)
-  {
-    ++p.env_pass_;
-    p.env_touched_.clear();
-  }
+  void begin_run(int axis, double) { p.envelope_begin_axis(axis); }
   double label(index_t v, int axis, double sign) const { return p.envelope_value(v, axis, sign); }
   void set_label(index_t v, int, double sign, double y) { p.envelope_touch(v, sign * y); }
   const std::vector<index_t>& touched() const { return p.env_touched_; }
@@ -846,15 +865,13 @@ void LinkProjector::run_envelope(
   const std::vector<index_t>& start, const ProjectionOptions& options, ProjectionReport& report)
 {
   const index_t n = mesh_.size();
-  if (env_stamp_.size() != std::size_t(n))
+  if (env_label_.size() != std::size_t(n))
   {
-    // Values are read only where stamped, counts only where cached: left uninitialised,
-    // so their pages cost only where the calls write (O(touched), not O(mesh)).
-    env_value_.reset(new double[std::size_t(n)]);
+    // Every vertex at rest, no cone, no link cached; each call puts back what it set.
     env_axis_.resize(std::size_t(n));
-    env_stamp_.assign(std::size_t(n), 0);
-    env_cone_.reset(new double[std::size_t(n)]);
-    env_cone_stamp_.assign(std::size_t(n), 0);
+    env_label_.assign(std::size_t(n), 0.0);
+    env_set_.assign(std::size_t(n), 0);
+    env_cone_.assign(std::size_t(n), std::numeric_limits<double>::infinity());
     env_links_.assign(std::size_t(n), LinkRange{ -1, 0 });
     env_cached_.clear();
   }
@@ -938,6 +955,7 @@ void LinkProjector::run_envelope(
     const double worst = env_axis_.run(net, axis);
     squared += worst * worst;
   }
+  envelope_end_call();
   report.iterations = 1;
   const double violation = std::sqrt(squared) / mesh_.scale();
   report.violation = violation;

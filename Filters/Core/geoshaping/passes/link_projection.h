@@ -324,16 +324,17 @@ private:
   double best_violation_ = 0.0;
   double best_update_ = 0.0;
 
-  // Envelope scratch (dense, allocated on first use): values of the current pass, the pass
-  // that set them, and the vertices touched; the per-axis step (D per vertex, the seeds).
+  // Envelope scratch (dense, allocated on first use): the current run's label of every
+  // vertex as a value of u on its axis (the start where the run has not set it: one load
+  // per label), which vertices the run set and their list; the per-axis step (D per
+  // vertex, the seeds).
   EnvelopeAxis env_axis_;
-  std::unique_ptr<double[]> env_value_;
-  std::vector<std::uint32_t> env_stamp_;
-  std::uint32_t env_pass_ = 0;
+  std::vector<double> env_label_;
+  std::vector<std::uint8_t> env_set_;
   std::vector<index_t> env_touched_;
-  std::unique_ptr<double[]> env_cone_; // the fixed vertices' cones, with their own pass stamps
-  std::vector<std::uint32_t> env_cone_stamp_;
-  std::uint32_t env_cone_pass_ = 0;
+  void envelope_begin_axis(int axis); // the start on `axis` where the last run left labels
+  void envelope_end_call();           // every label back to 0 (rest)
+  std::vector<double> env_cone_; // the fixed vertices' cones (+infinity where none)
   std::vector<index_t> env_cone_touched_;
   std::vector<index_t> env_check_; // raised vertices whose links may be broken (envelope_cone)
   // The link cache of one call (envelope_links): per vertex reached its first slot (-1:
