@@ -581,39 +581,34 @@ LinkProjector::LinkRange LinkProjector::fill_links(index_t v)
   return r;
 }
 
-// Fills the links of `vertices` in their order, each vertex's loads started ahead of its
-// turn: its cache entry, adjacency row, rest position and parameters 24 vertices ahead,
-// its neighbour list 16 ahead, its neighbours' rest positions and parameters 8 ahead. On
-// a grasp's first frame these are cold (the frame read none of them), and a fill of one
-// vertex at a time waits for each load in turn, three deep (row, neighbours, their rest).
-void LinkProjector::prefill_links(const std::vector<index_t>& vertices)
+// Fills the links of list[i], the loads of the later vertices of `list` started ahead of
+// their turn: 32 ahead the cache entry, 24 ahead (when not cached) the adjacency row, rest
+// position and parameters, 16 ahead the neighbour list, 8 ahead the neighbours' rest
+// positions and parameters. On a grasp's first frame these are cold (the frame read none
+// of them), and a fill of one vertex at a time waits for each load in turn, four deep.
+void LinkProjector::fill_links_ahead(const std::vector<index_t>& list, std::size_t i)
 {
   const Adjacency& adj = *mesh_.adjacency;
-  const std::size_t n = vertices.size();
-  constexpr std::size_t far = 24, mid = 16, near = 8;
-  for (std::size_t i = 0; i < n; ++i)
+  const std::size_t n = list.size();
+  const auto cold = [&](std::size_t j) { return env_links_[std::size_t(list[j])].first < 0; };
+  if (i + 32 < n)
+    __builtin_prefetch(&env_links_[std::size_t(list[i + 32])]);
+  if (i + 24 < n && cold(i + 24))
   {
-    if (i + far < n)
-    {
-      const std::size_t w = std::size_t(vertices[i + far]);
-      __builtin_prefetch(&env_links_[w]);
-      __builtin_prefetch(&adj.offsets[w]);
-      __builtin_prefetch(&mesh_.rest[w]);
-      __builtin_prefetch(&mesh_.params[w]);
-    }
-    if (i + mid < n)
-      __builtin_prefetch(adj.begin(vertices[i + mid]));
-    if (i + near < n && env_links_[std::size_t(vertices[i + near])].first < 0)
-    {
-      const index_t w = vertices[i + near];
-      for (const index_t* m = adj.begin(w); m != adj.end(w); ++m)
-      {
-        __builtin_prefetch(&mesh_.rest[std::size_t(*m)]);
-        __builtin_prefetch(&mesh_.params[std::size_t(*m)]);
-      }
-    }
-    envelope_links(vertices[i]);
+    const std::size_t w = std::size_t(list[i + 24]);
+    __builtin_prefetch(&adj.offsets[w]);
+    __builtin_prefetch(&mesh_.rest[w]);
+    __builtin_prefetch(&mesh_.params[w]);
   }
+  if (i + 16 < n && cold(i + 16))
+    __builtin_prefetch(adj.begin(list[i + 16]));
+  if (i + 8 < n && cold(i + 8))
+    for (const index_t* m = adj.begin(list[i + 8]); m != adj.end(list[i + 8]); ++m)
+    {
+      __builtin_prefetch(&mesh_.rest[std::size_t(*m)]);
+      __builtin_prefetch(&mesh_.params[std::size_t(*m)]);
+    }
+  envelope_links(list[i]);
 }
 
 // The passes' priority queue: a radix heap (Ahuja, Mehlhorn, Orlin and Tarjan 1990) on the
@@ -768,8 +763,14 @@ void LinkProjector::envelope_cone(
   // Breaks are rare (the cone's labels satisfy the links up to rounding) and the test
   // reads no label of the run: this replaces a pass over every raised vertex's links.
   const double* w_other = (sign > 0.0 ? env_dn_ : env_up_)[axis].data();
+  std::size_t filled = 0; // env_cone_touched_[0, filled) have their links: filled ahead
   const auto visit = [&](index_t b, double c, LinkRange r)
   {
+    // Each vertex is popped some time after its first label (the cone grows by rings):
+    // when the start's links were not all cached (a new grasp, a first frame), the
+    // cone's are filled in the order of the first labels, 32 behind the newest.
+    while (env_cold_ && filled + 32 < env_cone_touched_.size())
+      fill_links_ahead(env_cone_touched_, filled++);
     const double yb = -c;
     if (is_fixed(b) || !(yb > -sign * env_label_[b]))
       return;
@@ -944,8 +945,11 @@ void LinkProjector::run_envelope(
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
 
+  const std::size_t cached = env_cached_.size();
   if (env_axes_)
-    prefill_links(region_); // the first axis's scan reads them all
+    for (std::size_t i = 0; i < region_.size(); ++i)
+      fill_links_ahead(region_, i); // the first axis's scan reads them all
+  env_cold_ = env_cached_.size() > cached;
   EnvelopeNet net{ *this, fixed };
   double squared = 0.0; // sum over the axes of the squared largest slab distance
   for (int axis = 0; axis < 3; ++axis)

@@ -300,7 +300,7 @@ private:
   };
   LinkRange envelope_links(index_t v);
   LinkRange fill_links(index_t v);
-  void prefill_links(const std::vector<index_t>& vertices);
+  void fill_links_ahead(const std::vector<index_t>& list, std::size_t i);
   struct RadixEntry
   {
     std::uint64_t key; // radix_key(value): the label's leading bits, order-preserving
@@ -346,6 +346,7 @@ private:
   std::vector<double> env_up_[3], env_dn_[3];
   int env_axes_ = 0;       // bit i: axis i runs in this call
   int env_cache_axes_ = 0; // bit i: the link cache holds axis i's bounds
+  bool env_cold_ = false;  // this call filled links of the start: the cone fills ahead
   // The passes' radix heap: 65 buckets, the last key popped, the entries queued.
   std::vector<RadixEntry> env_buckets_[65];
   std::uint64_t env_last_ = 0;
