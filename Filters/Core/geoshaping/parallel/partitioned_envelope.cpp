@@ -91,6 +91,9 @@ struct PartitionedEnvelope::Net
 
   bool is_fixed(index_t v) const { return p.is_fixed(v); }
   double u(index_t v, int axis) const { return p.u_[std::size_t(v)][axis]; }
+  double start_u(index_t v, int axis) const { return u(v, axis); }
+  void begin_axis(int) {}
+  void end_runs(int) {}
   template<class F>
   void for_each_scanned(F f) const
   {

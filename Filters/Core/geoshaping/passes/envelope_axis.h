@@ -19,7 +19,10 @@
 //      (links between two fixed vertices left out).
 //
 // A Net supplies (v, m vertices; f a callable):
-//   bool is_fixed(v); double u(v, axis): u_v on the axis (the start until step 3);
+//   bool is_fixed(v); double u(v, axis): u_v on the axis, read by steps 1 and 4 (between
+//     begin_axis and the first begin_run, and after end_runs); start_u(v, axis): u_v on the
+//     axis before step 3, read by step 3;
+//   begin_axis(axis), end_runs(axis): called before step 1 and after step 3;
 //   for_each_scanned(f(v)), for_each_checked(f(v)): the vertices whose links steps 1 and 4
 //     read; scanned_from(m, v), checked_from(m, v): the link (v, m) is read from m's side
 //     there instead;
@@ -85,6 +88,7 @@ private:
 template<class Net>
 double EnvelopeAxis::run(Net& net, int axis)
 {
+  net.begin_axis(axis);
   scan(net, axis);
   direction(net, axis, 1.0, seeds_);
   down_list_ = net.touched();
@@ -93,7 +97,7 @@ double EnvelopeAxis::run(Net& net, int axis)
   direction(net, axis, -1.0, seeds_up_);
   const auto combine = [&](index_t v)
   {
-    const double old = net.u(v, axis);
+    const double old = net.start_u(v, axis);
     const double d = std::isnan(down_[std::size_t(v)]) ? old : down_[std::size_t(v)];
     const double u = -net.label(v, axis, -1.0);
     const double mid = d == u ? d : 0.5 * (d + u);
@@ -107,6 +111,7 @@ double EnvelopeAxis::run(Net& net, int axis)
   for (index_t v : net.touched())
     if (std::isnan(down_[std::size_t(v)]))
       combine(v);
+  net.end_runs(axis);
   for (index_t v : down_list_)
     down_[std::size_t(v)] = std::numeric_limits<double>::quiet_NaN();
   return check(net, axis);

@@ -99,7 +99,7 @@ const char* solver_name(ProjectionSolver solver);
 // value bit for bit. Both are label-correcting Dijkstra runs seeded only by the vertices
 // with a violated link (or by the fixed vertices for the cones): a vertex's value
 // changes only when a neighbour forces it, so the cost is O(r) for the r vertices that
-// change and their neighbours (a radix heap on the labels' 28 leading bits: Dijkstra pops
+// change and their neighbours (a radix heap on the labels' 20 leading bits: Dijkstra pops
 // labels in increasing order, so each entry only moves down its buckets), never O(mesh).
 // The order of the relaxations does not change the result, bit for bit: a pass ends at
 // the greatest y <= its start with y_a <= fl(y_b + ub(a, b)) for every link out of a seed
@@ -332,8 +332,9 @@ private:
   std::vector<double> env_label_;
   std::vector<std::uint8_t> env_set_;
   std::vector<index_t> env_touched_;
-  void envelope_begin_axis(int axis); // the start on `axis` where the last run left labels
-  void envelope_end_call();           // every label back to 0 (rest)
+  void envelope_begin_axis(int axis);
+  void envelope_end_run(int axis);
+  void envelope_end_call();
   std::vector<double> env_cone_; // the fixed vertices' cones (+infinity where none)
   std::vector<index_t> env_cone_touched_;
   std::vector<index_t> env_check_; // raised vertices whose links may be broken (envelope_cone)
