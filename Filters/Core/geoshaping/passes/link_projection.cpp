@@ -544,7 +544,7 @@ void LinkProjector::envelope_end_call()
 
 // The links of v, cached on first use and kept across calls (the mesh's rest, params and
 // pins are constant for the projector's life): per neighbour a with a finite rest offset,
-// a's id, whether a is pinned, and per axis i the slab [lo, hi] of u_a - u_v
+// a's id (~id when a is pinned), and per axis i the slab [lo, hi] of u_a - u_v
 // (axis_slab(a, v), the bounds the passes relax with) as up = hi and dn = -lo. Returns
 // v's slots: `count` from `first`.
 inline LinkProjector::LinkRange LinkProjector::envelope_links(index_t v)
@@ -564,8 +564,7 @@ LinkProjector::LinkRange LinkProjector::fill_links(index_t v)
     const Eigen::Vector3d o = mesh_.rest[std::size_t(*n)] - rest;
     if (!o.allFinite())
       continue;
-    env_nbr_.push_back(*n);
-    env_fixed_.push_back(mesh_.is_pinned(*n) ? 1 : 0);
+    env_nbr_.push_back(mesh_.is_pinned(*n) ? ~*n : *n);
     const ChainMailParams& pn = mesh_.params[std::size_t(*n)];
     for (int i = 0; i < 3; ++i)
       if (env_cache_axes_ & (1 << i))
@@ -693,13 +692,12 @@ void LinkProjector::envelope_dijkstra(int axis, double sign, Label label, Relax 
     visit(b, y, r);
     const std::int32_t first = r.first, last = first + r.count;
     const index_t* nbr = env_nbr_.data(); // stable until the next envelope_links()
-    const std::uint8_t* pinned = env_fixed_.data();
     const double* w = ub.data();
     for (std::int32_t k = first; k < last; ++k)
     {
       const index_t a = nbr[k];
-      if (pinned[k] || a == grasp_)
-        continue;
+      if (a < 0 || a == grasp_)
+        continue; // pinned (stored as ~id) or grasped
       relax(a, y + w[k]);
     }
   }
@@ -779,8 +777,9 @@ void LinkProjector::envelope_cone(
     const double* w = (sign > 0.0 ? env_up_ : env_dn_)[axis].data();
     for (std::int32_t k = r.first; k < r.first + r.count; ++k)
     {
-      const index_t a = env_nbr_[std::size_t(k)];
-      const bool a_fixed = env_fixed_[std::size_t(k)] || a == grasp_;
+      const index_t slot = env_nbr_[std::size_t(k)];
+      const index_t a = slot < 0 ? ~slot : slot;
+      const bool a_fixed = slot < 0 || a == grasp_;
       const double ya = -sign * env_label_[a];
       const double low = a_fixed ? ya : -std::min(std::min(cone(a), c + w[k]), top);
       if (yb > low + w[k] || (!a_fixed && ya > yb + w_other[k]))
@@ -842,9 +841,11 @@ struct LinkProjector::EnvelopeNet
     const double* up = p.env_up_[axis].data();
     const double* dn = p.env_dn_[axis].data();
     const index_t* nbr = p.env_nbr_.data();
-    const std::uint8_t* pinned = p.env_fixed_.data();
     for (std::int32_t k = first; k < last; ++k)
-      f(nbr[k], -up[k], dn[k], pinned[k] || nbr[k] == p.grasp_);
+    {
+      const index_t m = nbr[k] < 0 ? ~nbr[k] : nbr[k];
+      f(m, -up[k], dn[k], nbr[k] < 0 || m == p.grasp_);
+    }
   }
   void begin_run(int axis, double) { p.envelope_end_run(axis); }
   double label(index_t v, int axis, double sign) const { return p.envelope_value(v, axis, sign); }
@@ -911,7 +912,6 @@ void LinkProjector::run_envelope(
       env_links_[v].first = -1;
     env_cached_.clear();
     env_nbr_.clear();
-    env_fixed_.clear();
     for (int i = 0; i < 3; ++i)
     {
       env_up_[i].clear();
@@ -928,7 +928,6 @@ void LinkProjector::run_envelope(
   if (env_nbr_.capacity() < room)
   {
     env_nbr_.reserve(room);
-    env_fixed_.reserve(room);
     for (int i = 0; i < 3; ++i)
       if (env_cache_axes_ & (1 << i))
       {

@@ -339,11 +339,11 @@ private:
   std::vector<index_t> env_cone_touched_;
   std::vector<index_t> env_check_; // raised vertices whose links may be broken (envelope_cone)
   // The link cache of one call (envelope_links): per vertex reached its first slot (-1:
-  // none yet) and slot count (dense, side by side: one load), and per slot the neighbour,
-  // whether it is fixed and, per active axis, the slab bounds the passes relax with.
+  // none yet) and slot count (dense, side by side: one load), and per slot the neighbour
+  // (~id when it is pinned: no array of flags to load) and, per active axis, the slab
+  // bounds the passes relax with.
   std::vector<LinkRange> env_links_;
   std::vector<index_t> env_cached_, env_nbr_;
-  std::vector<std::uint8_t> env_fixed_;
   std::vector<double> env_up_[3], env_dn_[3];
   int env_axes_ = 0;       // bit i: axis i runs in this call
   int env_cache_axes_ = 0; // bit i: the link cache holds axis i's bounds
