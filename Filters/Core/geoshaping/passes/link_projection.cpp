@@ -686,6 +686,19 @@ void LinkProjector::envelope_dijkstra(int axis, double sign, Label label, Relax 
     const RadixEntry e = envelope_pop();
     const index_t b = e.vertex;
     const double y = e.value;
+    // The next pops' links, started ahead (their order is known within bucket 0).
+    const std::vector<RadixEntry>& next = env_buckets_[0];
+    if (next.size() >= 2)
+      __builtin_prefetch(&env_links_[std::size_t(next[next.size() - 2].vertex)]);
+    if (!next.empty())
+    {
+      const LinkRange n = env_links_[std::size_t(next.back().vertex)];
+      if (n.first >= 0)
+      {
+        __builtin_prefetch(&env_nbr_[std::size_t(n.first)]);
+        __builtin_prefetch(&ub[std::size_t(n.first)]);
+      }
+    }
     if (y != label(b))
       continue; // lowered again since it was pushed
     const LinkRange r = envelope_links(b);
