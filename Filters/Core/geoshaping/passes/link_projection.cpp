@@ -630,7 +630,7 @@ std::uint64_t radix_key(double y)
   std::uint64_t bits;
   const double z = y + 0.0;
   std::memcpy(&bits, &z, sizeof bits);
-  return ((bits >> 63) ? ~bits : bits | (std::uint64_t(1) << 63)) >> 44;
+  return ((bits >> 63) ? ~bits : bits | (std::uint64_t(1) << 63)) >> 36;
 }
 
 int radix_bucket(std::uint64_t x)

@@ -99,7 +99,7 @@ const char* solver_name(ProjectionSolver solver);
 // value bit for bit. Both are label-correcting Dijkstra runs seeded only by the vertices
 // with a violated link (or by the fixed vertices for the cones): a vertex's value
 // changes only when a neighbour forces it, so the cost is O(r) for the r vertices that
-// change and their neighbours (a radix heap on the labels' 20 leading bits: Dijkstra pops
+// change and their neighbours (a radix heap on the labels' 28 leading bits: Dijkstra pops
 // labels in increasing order, so each entry only moves down its buckets), never O(mesh).
 // The order of the relaxations does not change the result, bit for bit: a pass ends at
 // the greatest y <= its start with y_a <= fl(y_b + ub(a, b)) for every link out of a seed
