@@ -795,7 +795,8 @@ void LinkProjector::envelope_cone(
       const bool a_fixed = slot < 0 || a == grasp_;
       const double ya = -sign * env_label_[a];
       const double low = a_fixed ? ya : -std::min(std::min(cone(a), c + w[k]), top);
-      if (yb > low + w[k] || (!a_fixed && ya > yb + w_other[k]))
+      // w' >= 0: ya <= yb keeps the second (and leaves w' unread: a cold array here).
+      if (yb > low + w[k] || (!a_fixed && ya > yb && ya > yb + w_other[k]))
       {
         env_check_.push_back(b);
         return;

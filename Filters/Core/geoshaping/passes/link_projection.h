@@ -112,16 +112,18 @@ const char* solver_name(ProjectionSolver solver);
 // mesh is constant for the projector's life). The cache holds only the axes its calls
 // ran (a pull along z fills a third); a call on another axis, or a cache past 8x the
 // start + 65,536 vertices, drops it, so its memory stays O(displaced). The dense scratch
-// is allocated by the first call: stamps and marks set (20 bytes per mesh vertex), the
-// values and counts (20 bytes) left uninitialised, as they are read only where a stamp or
-// the cache says they were written.
+// (labels as values of u, cone labels, link ranges, D, marks: 33 bytes per mesh vertex)
+// is allocated by the first call and reset sparsely after each run and call. The D run's
+// check of the links its cone's raise broke (by rounding only) reads only the vertices
+// the cone flags at their last pop (envelope_cone).
 // It is not the projection (E_ref measures how far it lies from it, docs/report.md); with
 // inconsistent fixed values (F empty) the conflicting links stay violated and
 // `converged` is false.
 // Measured (docs/error-metrics.md, "Where the envelope's time goes"): at the paper's scale
 // (29,236 displaced, ChainMail's E_link 16.4 L) E_link 0; thread CPU time, interleaved,
-// load 5-9: the first implementation 55-66 ms (frame + envelope 20-22x the frame), this
-// one 31-34 ms (11.3-11.8x). Dykstra and ADMM stall at ~0.9 L there because their grown
+// load 5-9: the first implementation 55-66 ms (frame + envelope 20-22x the frame); now
+// (frame + envelope) / frame XDRAGx in a drag, XFIRSTx on a grasp's first frame (medians of
+// interleaved runs). Dykstra and ADMM stall at ~0.9 L there because their grown
 // region is smaller than the feasible configurations' support (47,439 vertices).
 // A Link-region envelope: a difference constraint bounds u_a - u_b on one world axis, so
 // the only inner approximations of a link's cylinder that keep the lattice are boxes
