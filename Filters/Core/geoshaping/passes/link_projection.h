@@ -122,8 +122,8 @@ const char* solver_name(ProjectionSolver solver);
 // Measured (docs/error-metrics.md, "Where the envelope's time goes"): at the paper's scale
 // (29,236 displaced, ChainMail's E_link 16.4 L) E_link 0; thread CPU time, interleaved,
 // load 5-9: the first implementation 55-66 ms (frame + envelope 20-22x the frame); now
-// (frame + envelope) / frame XDRAGx in a drag, XFIRSTx on a grasp's first frame (medians of
-// interleaved runs). Dykstra and ADMM stall at ~0.9 L there because their grown
+// (frame + envelope) / frame 7.8x in a drag, 9.5x on a grasp's first frame (medians of
+// interleaved runs, load 3-4). Dykstra and ADMM stall at ~0.9 L there because their grown
 // region is smaller than the feasible configurations' support (47,439 vertices).
 // A Link-region envelope: a difference constraint bounds u_a - u_b on one world axis, so
 // the only inner approximations of a link's cylinder that keep the lattice are boxes
