@@ -1,7 +1,7 @@
 #pragma once
 // A fixed set of threads that run one job together, for the deformer's large supersteps
 // (chainmail_deformer.h, "Threads"). The caller is thread 0 of every run; the others wait
-// between runs, first spinning briefly (a frame's supersteps follow one another within
+// between runs, first spinning for up to 2 ms (a frame's supersteps follow one another within
 // microseconds), then blocked on a condition variable (between frames).
 #include <atomic>
 #include <condition_variable>
