@@ -2,6 +2,7 @@
 
 #include "geoshaping/deform/valid_region.h"
 #include "geoshaping/mesh/morton.h"
+#include "geoshaping/mesh/prefetch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,16 +17,6 @@ namespace geoshaping
 
 namespace
 {
-// A hint to start loading a cache line that is needed soon.
-inline void prefetch(const void* p)
-{
-#if defined(__GNUC__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
-
 // A per-vertex array in the caller's numbering brought into the deformer's (renumbered)
 // layout: out[i] = f(values[outer_of[i]]).
 template<class T, class S, class F>

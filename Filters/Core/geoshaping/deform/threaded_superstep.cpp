@@ -2,6 +2,7 @@
 // bit for bit.
 #include "geoshaping/deform/chainmail_deformer.h"
 #include "geoshaping/deform/worker_pool.h"
+#include "geoshaping/mesh/prefetch.h"
 
 #include <algorithm>
 #include <atomic>
@@ -99,15 +100,6 @@ bool ChainMailDeformer::file_threaded_pushes()
 
 namespace
 {
-inline void prefetch(const void* p)
-{
-#if defined(__GNUC__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
-
 // m = min(m, v) on claims, 0 standing for none.
 inline void claim_first(std::atomic<std::uint32_t>& m, std::uint32_t v)
 {

@@ -2,6 +2,7 @@
 
 #include "geoshaping/deform/chainmail_deformer.h"
 #include "geoshaping/deform/valid_region.h"
+#include "geoshaping/mesh/prefetch.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -592,21 +593,21 @@ void LinkProjector::fill_links_ahead(const std::vector<index_t>& list, std::size
   const std::size_t n = list.size();
   const auto cold = [&](std::size_t j) { return env_links_[std::size_t(list[j])].first < 0; };
   if (i + 32 < n)
-    __builtin_prefetch(&env_links_[std::size_t(list[i + 32])]);
+    prefetch(&env_links_[std::size_t(list[i + 32])]);
   if (i + 24 < n && cold(i + 24))
   {
     const std::size_t w = std::size_t(list[i + 24]);
-    __builtin_prefetch(&adj.offsets[w]);
-    __builtin_prefetch(&mesh_.rest[w]);
-    __builtin_prefetch(&mesh_.params[w]);
+    prefetch(&adj.offsets[w]);
+    prefetch(&mesh_.rest[w]);
+    prefetch(&mesh_.params[w]);
   }
   if (i + 16 < n && cold(i + 16))
-    __builtin_prefetch(adj.begin(list[i + 16]));
+    prefetch(adj.begin(list[i + 16]));
   if (i + 8 < n && cold(i + 8))
     for (const index_t* m = adj.begin(list[i + 8]); m != adj.end(list[i + 8]); ++m)
     {
-      __builtin_prefetch(&mesh_.rest[std::size_t(*m)]);
-      __builtin_prefetch(&mesh_.params[std::size_t(*m)]);
+      prefetch(&mesh_.rest[std::size_t(*m)]);
+      prefetch(&mesh_.params[std::size_t(*m)]);
     }
   envelope_links(list[i]);
 }
@@ -689,14 +690,14 @@ void LinkProjector::envelope_dijkstra(int axis, double sign, Label label, Relax 
     // The next pops' links, started ahead (their order is known within bucket 0).
     const std::vector<RadixEntry>& next = env_buckets_[0];
     if (next.size() >= 2)
-      __builtin_prefetch(&env_links_[std::size_t(next[next.size() - 2].vertex)]);
+      prefetch(&env_links_[std::size_t(next[next.size() - 2].vertex)]);
     if (!next.empty())
     {
       const LinkRange n = env_links_[std::size_t(next.back().vertex)];
       if (n.first >= 0)
       {
-        __builtin_prefetch(&env_nbr_[std::size_t(n.first)]);
-        __builtin_prefetch(&ub[std::size_t(n.first)]);
+        prefetch(&env_nbr_[std::size_t(n.first)]);
+        prefetch(&ub[std::size_t(n.first)]);
       }
     }
     if (y != label(b))
