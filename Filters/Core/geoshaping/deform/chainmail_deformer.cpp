@@ -353,7 +353,7 @@ ChainMailDeformer::move(
     prefetch(&nodes_[std::size_t(neighbors_[e])]);
   slot_[std::size_t(i)] = index_t(moved_rec_.size());
   moved_rec_.push_back({ gate && obstacles_ ? admissible(i, d) : d, i, sponsor_slot });
-  moved_root_.push_back(StoredRoot::of(root));
+  moved_root_.emplace_back(root);
   moved_.push_back(outer_of_[std::size_t(i)]);
 }
 

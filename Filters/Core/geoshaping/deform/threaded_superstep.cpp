@@ -126,7 +126,7 @@ std::size_t ChainMailDeformer::examine_threaded(
   const std::uint8_t* const pins = pinned_inner_.empty() ? nullptr : pinned_inner_.data();
   moved_rec_.resize(first + count); // uninitialised
   moved_root_.resize(first + count);
-  const StoredRoot stored_root = StoredRoot::of(root);
+  const StoredRoot stored_root(root);
 
   auto job = [&](int t)
   {
