@@ -74,6 +74,22 @@ double process_cpu_seconds()
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
+// One deformer's frames, timed: wall clock, the calling thread's CPU, the process's CPU.
+struct FrameTimes
+{
+  double wall = 0.0, main_cpu = 0.0, cpu = 0.0;
+  FrameResult run(ChainMailDeformer& d, index_t grasp, const Eigen::Vector3d& pull)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_seconds(), p0 = process_cpu_seconds();
+    FrameResult r = d.deform(grasp, pull);
+    main_cpu += thread_cpu_seconds() - c0;
+    cpu += process_cpu_seconds() - p0;
+    wall += seconds_since(t0);
+    return r;
+  }
+};
+
 void BM_ThreadedFrame(benchmark::State& state)
 {
   const auto queue = static_cast<QueueKind>(state.range(0));
@@ -84,24 +100,19 @@ void BM_ThreadedFrame(benchmark::State& state)
     state.range(3) > 0 ? std::size_t(state.range(3)) : ChainMailDeformer().threaded_threshold());
   const Eigen::Vector3d pull(0.0, 0.0, pull_for(queue, int(state.range(2))));
   FrameResult r = d.deform(grasp, pull); // starts the threads
-  double wall = 0.0, main_cpu = 0.0, cpu = 0.0;
+  FrameTimes times;
   for (auto _ : state)
   {
-    const auto t0 = std::chrono::steady_clock::now();
-    const double c0 = thread_cpu_seconds(), p0 = process_cpu_seconds();
-    r = d.deform(grasp, pull);
-    main_cpu += thread_cpu_seconds() - c0;
-    cpu += process_cpu_seconds() - p0;
-    wall += seconds_since(t0);
+    r = times.run(d, grasp, pull);
     benchmark::DoNotOptimize(r.moved);
   }
   const double n = double(state.iterations());
   state.counters["displaced"] = double(r.moved);
   state.counters["supersteps"] = double(r.supersteps);
   state.counters["threaded_supersteps"] = double(r.threaded_supersteps);
-  state.counters["ms"] = 1e3 * wall / n;
-  state.counters["main_cpu_ms"] = 1e3 * main_cpu / n;
-  state.counters["cpu_ms"] = 1e3 * cpu / n;
+  state.counters["ms"] = 1e3 * times.wall / n;
+  state.counters["main_cpu_ms"] = 1e3 * times.main_cpu / n;
+  state.counters["cpu_ms"] = 1e3 * times.cpu / n;
   state.SetLabel(std::string(queue_name(queue)) + ", " + std::to_string(d.threads()) + " threads");
 }
 
@@ -121,34 +132,24 @@ void BM_Interleaved(benchmark::State& state)
     two.set_threaded_threshold(std::size_t(state.range(2)));
   const Eigen::Vector3d pull(0.0, 0.0, pull_for(queue, int(state.range(1))));
   two.deform(grasp, pull); // starts the threads
-  double one_s = 0.0, two_s = 0.0, one_cpu = 0.0, two_main_cpu = 0.0, two_cpu = 0.0;
+  FrameTimes one_t, two_t;
   FrameResult r;
   for (auto _ : state)
   {
-    auto t0 = std::chrono::steady_clock::now();
-    double c0 = thread_cpu_seconds();
-    r = one.deform(grasp, pull);
-    one_cpu += thread_cpu_seconds() - c0;
-    one_s += seconds_since(t0);
-    t0 = std::chrono::steady_clock::now();
-    c0 = thread_cpu_seconds();
-    const double p0 = process_cpu_seconds();
-    r = two.deform(grasp, pull);
-    two_main_cpu += thread_cpu_seconds() - c0;
-    two_cpu += process_cpu_seconds() - p0;
-    two_s += seconds_since(t0);
+    one_t.run(one, grasp, pull);
+    r = two_t.run(two, grasp, pull);
     benchmark::DoNotOptimize(r.moved);
   }
   const double n = double(state.iterations());
   state.counters["displaced"] = double(r.moved);
   state.counters["supersteps"] = double(r.supersteps);
   state.counters["threaded_supersteps"] = double(r.threaded_supersteps);
-  state.counters["one_ms"] = 1e3 * one_s / n;
-  state.counters["two_ms"] = 1e3 * two_s / n;
-  state.counters["speedup"] = one_s / two_s;
-  state.counters["one_cpu_ms"] = 1e3 * one_cpu / n;
-  state.counters["two_main_cpu_ms"] = 1e3 * two_main_cpu / n;
-  state.counters["two_cpu_ms"] = 1e3 * two_cpu / n;
+  state.counters["one_ms"] = 1e3 * one_t.wall / n;
+  state.counters["two_ms"] = 1e3 * two_t.wall / n;
+  state.counters["speedup"] = one_t.wall / two_t.wall;
+  state.counters["one_cpu_ms"] = 1e3 * one_t.main_cpu / n;
+  state.counters["two_main_cpu_ms"] = 1e3 * two_t.main_cpu / n;
+  state.counters["two_cpu_ms"] = 1e3 * two_t.cpu / n;
   state.SetLabel(queue_name(queue));
 }
 
