@@ -776,7 +776,6 @@ void LinkProjector::envelope_cone(
   // at its start (a raised a checks that link as its own first kind) and a is free.
   // Breaks are rare (the cone's labels satisfy the links up to rounding) and the test
   // reads no label of the run: this replaces a pass over every raised vertex's links.
-  const double* w_other = (sign > 0.0 ? env_dn_ : env_up_)[axis].data();
   std::size_t filled = 0; // env_cone_touched_[0, filled) have their links: filled ahead
   const auto visit = [&](index_t b, double c, LinkRange r)
   {
@@ -788,7 +787,9 @@ void LinkProjector::envelope_cone(
     const double yb = -c;
     if (is_fixed(b) || !(yb > -sign * env_label_[b]))
       return;
+    // Read after the fill above, which may grow (and move) the link arrays.
     const double* w = (sign > 0.0 ? env_up_ : env_dn_)[axis].data();
+    const double* w_other = (sign > 0.0 ? env_dn_ : env_up_)[axis].data();
     for (std::int32_t k = r.first; k < r.first + r.count; ++k)
     {
       const index_t slot = env_nbr_[std::size_t(k)];
