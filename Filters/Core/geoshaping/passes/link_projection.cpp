@@ -616,15 +616,16 @@ void LinkProjector::fill_links_ahead(const std::vector<index_t>& list, std::size
 // leading bits of the labels. Dijkstra pops labels in increasing order and pushes none
 // below the last popped (weights >= 0), so a monotone queue suffices: an entry sits in
 // bucket floor(log2(key ^ last)) + 1 and moves only to lower buckets; push is O(1), pop
-// amortised O(1). The key keeps the sign, the exponent and the 8 leading bits of the
-// significand: labels within a relative 2^-8 of each other share a key and pop in any
+// amortised O(1). The key keeps the sign, the exponent and the 16 leading bits of the
+// significand: labels within a relative 2^-16 of each other share a key and pop in any
 // order among themselves (the result does not depend on the order, link_projection.h),
-// and an entry moves at most 20 times. Fewer bits move entries less and pop a vertex
-// again more often: at the paper's scale 20 bits cost 3 % fewer instructions per call
-// than 28 (the queue's -18 %) and 16 bits no fewer (the passes' +15 %).
+// and an entry moves at most 28 times. Fewer bits move entries less but pop more labels
+// out of order: 20 bits cost 3 % fewer instructions per call at the paper's scale, but
+// once a cone's labels are large against its slabs it pops in any order (a pull of 2^20
+// mesh units took twice the time).
 namespace
 {
-// Order-preserving map of a double onto its 20 leading bits (-0 taken as +0; no NaN
+// Order-preserving map of a double onto its 28 leading bits (-0 taken as +0; no NaN
 // reaches here): a non-decreasing function of y.
 std::uint64_t radix_key(double y)
 {
