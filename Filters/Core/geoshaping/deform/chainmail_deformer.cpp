@@ -347,10 +347,7 @@ ChainMailDeformer::move(
   index_t i, const Eigen::Vector3d& d, index_t sponsor_slot, const SuperstepRoot& root, bool gate)
 {
   nodes_[std::size_t(i)].stamp = frame_;
-  // end_superstep() tests the neighbours: start loading their records (the row was
-  // prefetched when i was queued).
-  for (std::uint32_t e = offsets_[std::size_t(i)]; e < offsets_[std::size_t(i) + 1]; ++e)
-    prefetch(&nodes_[std::size_t(neighbors_[e])]);
+  prefetch_neighbour_records(std::size_t(i)); // the row was prefetched when i was queued
   slot_[std::size_t(i)] = index_t(moved_rec_.size());
   moved_rec_.push_back({ gate && obstacles_ ? admissible(i, d) : d, i, sponsor_slot });
   moved_root_.emplace_back(root);
@@ -507,9 +504,7 @@ std::size_t ChainMailDeformer::examine(
     const Node& c = nodes_[std::size_t(e.vertex)];
     if (c.stamp == frame_) // moved by an earlier entry (a sponsor of lower id) or superstep
       continue;
-    const MovedRecord& s = moved_rec_[std::size_t(e.sponsor)];
-    const Eigen::Vector3d target =
-      required_displacement<Frame>(c, nodes_[std::size_t(s.vertex)], s.disp);
+    const Eigen::Vector3d target = required_displacement<Frame>(c, e.sponsor);
     if (target.isZero(0.0))
       continue;
     move(e.vertex, target, e.sponsor, root, false);
@@ -543,9 +538,7 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
         continue;
       double violation = 0.0;
       if constexpr (Queue::needs_violation)
-        violation = required_displacement<Frame>(
-          node, nodes_[std::size_t(s)], moved_rec_[std::size_t(s_slot)].disp)
-                      .norm();
+        violation = required_displacement<Frame>(node, s_slot).norm();
       queue.push({ c, s_slot }, node.rank, violation);
     }
   };
@@ -560,9 +553,7 @@ void ChainMailDeformer::propagate(Queue& queue, index_t grasp, FrameResult& resu
     const Node& c = nodes_[std::size_t(cand.vertex)];
     if (c.stamp == frame_)
       continue;
-    const MovedRecord& s = moved_rec_[std::size_t(cand.sponsor)];
-    const Eigen::Vector3d target =
-      required_displacement<Frame>(c, nodes_[std::size_t(s.vertex)], s.disp);
+    const Eigen::Vector3d target = required_displacement<Frame>(c, cand.sponsor);
     if (target.isZero(0.0))
       continue;
     const index_t slot = index_t(moved_rec_.size());

@@ -5,6 +5,7 @@
 #include "geoshaping/deform/transfer_function.h"
 #include "geoshaping/deform/valid_region.h"
 #include "geoshaping/mesh/adjacency.h"
+#include "geoshaping/mesh/prefetch.h"
 
 #include <Eigen/Core>
 
@@ -397,15 +398,23 @@ private:
   __attribute__((always_inline)) // once per examined entry: not worth a call
 #endif
   Eigen::Vector3d
-  required_displacement(const Node& c, const Node& s, const Eigen::Vector3d& sponsor_u) const
+  required_displacement(const Node& c, index_t sponsor_slot) const
   {
-    // The nearest point of c's valid region w.r.t. s to c's rest position
-    // (required_displacement() in valid_region.h, on the per-rank parameters).
-    const Eigen::Vector3d o = c.rest - s.rest;
+    // The nearest point of c's valid region w.r.t. the sponsor moved in `sponsor_slot` to
+    // c's rest position (required_displacement() in valid_region.h, on the per-rank
+    // parameters): zero when c may stay at rest.
+    const MovedRecord& s = moved_rec_[std::size_t(sponsor_slot)];
+    const Eigen::Vector3d o = c.rest - nodes_[std::size_t(s.vertex)].rest;
     if (!o.allFinite())
       return Eigen::Vector3d::Zero();
-    return geoshaping::required_displacement<Frame>(
-      o, rank_params_[std::size_t(c.rank)], sponsor_u);
+    return geoshaping::required_displacement<Frame>(o, rank_params_[std::size_t(c.rank)], s.disp);
+  }
+  // Starts loading the records of internal vertex i's neighbours, which the push after
+  // its move tests.
+  void prefetch_neighbour_records(std::size_t i) const
+  {
+    for (std::uint32_t e = offsets_[i]; e < offsets_[i + 1]; ++e)
+      prefetch(&nodes_[std::size_t(neighbors_[e])]);
   }
   // gate false: d passes the obstacle gate later (sort_moves()).
   void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,

@@ -147,9 +147,7 @@ std::size_t ChainMailDeformer::examine_threaded(
       const std::uint32_t claimed = claim.load(std::memory_order_relaxed);
       if (claimed != 0 && claimed <= k)
         continue;
-      const MovedRecord& s = moved_rec_[std::size_t(entry.sponsor)];
-      const Eigen::Vector3d target =
-        required_displacement<Frame>(c, nodes_[std::size_t(s.vertex)], s.disp);
+      const Eigen::Vector3d target = required_displacement<Frame>(c, entry.sponsor);
       if (target.isZero(0.0))
         continue;
       claim_first(claim, std::uint32_t(k + 1));
@@ -170,9 +168,7 @@ std::size_t ChainMailDeformer::examine_threaded(
       th.claim[i].store(0, std::memory_order_relaxed);
       nodes_[i].stamp = frame_;
       lane.won.push_back({ global_id_inner(p.vertex), std::uint32_t(j), outer_of_[i] });
-      // Step 4 tests the neighbours: start loading their records, as move() does.
-      for (std::uint32_t x = offsets_[i]; x < offsets_[i + 1]; ++x)
-        prefetch(&nodes_[std::size_t(neighbors_[x])]);
+      prefetch_neighbour_records(i); // step 4 tests them, as after move()
     }
     std::sort(lane.won.begin(), lane.won.end());
     lane.samples.clear();
