@@ -11,6 +11,13 @@ namespace geoshaping::bench
 // (0.3 ... 0.86, smooth bands), so the FIFO Priority queue holds several buckets.
 geoshaping::testing::Mesh painted_grid(index_t n, std::vector<float>& malleability);
 
+// Malleability as a user paints it with the project's Smooth brush (Painter, Euclidean):
+// 0.5 everywhere, then strokes and dabs of several radii, values (0, 0.2, 0.8, 1) and
+// strengths over the square [0, size]^2 of the xy plane, as fractions of it. A smooth
+// falloff leaves many distinct values (tens of thousands on a 1001 x 1001 grid).
+std::vector<float> brush_painted(
+  const double* xyz, index_t n, const Adjacency& adjacency, double x0, double y0, double size);
+
 // The vertical pull of the centre vertex whose FIFO Priority frame displaces the
 // number of vertices closest to `target` (bisection on the pull); returns the pull.
 double pull_for_count(ChainMailDeformer& d, index_t grasp, std::size_t target);

@@ -12,9 +12,11 @@
 // (2: the gate's queries alone); BM_ObstacleBuild: the fault's tree, built once per
 // obstacle geometry.
 // BM_CoreVsNaive: the core's FIFO / FIFO Priority frame against the naive reference
-// (naive_chainmail.h, FIFO / FIFO-PQ) on one 1001 x 1001 painted grid, 10^3 to 10^6
-// displaced, timed interleaved (core, naive, core, ...) in thread CPU time: `speedup` =
-// naive / core.
+// (naive_chainmail.h, FIFO / FIFO-PQ) and, for FIFO Priority, the textbook
+// FIFO-preserving priority queue, on one 1001 x 1001 grid painted in tiles (last argument
+// 0, the friendly case) or with the Smooth brush (1, the real case), 10^3 to 10^6
+// displaced, timed interleaved (core, naive, textbook, core, ...) in thread CPU time:
+// `speedup` = naive / core, `vs_textbook` = textbook / core.
 // BM_Envelope: the envelope refinement (ProjectionSolver::envelope, Axes) after the FIFO
 // Priority frame at the paper's scale, timed the same way (frame, envelope, frame, ...), in
 // a drag and on a grasp's first frame.
@@ -25,6 +27,7 @@
 #include "geoshaping/scenes/sample_scenes.h"
 #include "naive_chainmail.h"
 #include "test_sheets.h"
+#include "vs_reference.h"
 
 #include <benchmark/benchmark.h>
 
@@ -314,15 +317,19 @@ void BM_CoreVsNaive(benchmark::State& state)
     index_t grasp = 0;
     double pull = 0.0;
   };
-  static std::map<std::size_t, std::unique_ptr<NaiveScene>> cache;
+  static std::map<std::pair<std::size_t, bool>, std::unique_ptr<NaiveScene>> cache;
   const auto queue = static_cast<QueueKind>(state.range(0));
   const std::size_t target = std::size_t(state.range(1));
-  std::unique_ptr<NaiveScene>& s = cache[target];
+  const bool brush = state.range(2) != 0;
+  std::unique_ptr<NaiveScene>& s = cache[{ target, brush }];
   if (!s)
   {
     constexpr index_t side = 1001;
     s = std::make_unique<NaiveScene>();
     s->mesh = bench::painted_grid(side, s->m);
+    if (brush)
+      s->m = bench::brush_painted(
+        s->mesh.xyz.data(), s->mesh.size(), s->mesh.adjacency, 0.0, 0.0, side - 1.0);
     s->core.set_mesh(s->mesh.xyz.data(), s->mesh.size(), s->mesh.adjacency);
     s->core.set_malleability(s->m.data());
     s->naive = std::make_unique<bench::NaiveChainMail>(
@@ -331,27 +338,8 @@ void BM_CoreVsNaive(benchmark::State& state)
     s->pull = bench::pull_for_count(s->core, s->grasp, target);
   }
   s->core.set_queue(queue);
-  const bool banded = queue == QueueKind::fifo_priority;
-  const Eigen::Vector3d d(0.0, 0.0, s->pull);
-  double core_s = 0.0, naive_s = 0.0;
-  std::size_t core_moved = 0, naive_moved = 0;
-  for (auto _ : state)
-  {
-    const double t0 = thread_cpu_seconds();
-    core_moved = s->core.deform(s->grasp, d).moved;
-    const double t1 = thread_cpu_seconds();
-    naive_moved = s->naive->deform(s->grasp, d, banded);
-    const double t2 = thread_cpu_seconds();
-    core_s += t1 - t0;
-    naive_s += t2 - t1;
-  }
-  const double n = double(state.iterations());
-  state.counters["displaced"] = double(core_moved);
-  state.counters["naive_displaced"] = double(naive_moved);
-  state.counters["core_ms"] = 1e3 * core_s / n;
-  state.counters["naive_ms"] = 1e3 * naive_s / n;
-  state.counters["speedup"] = naive_s / core_s;
-  state.SetLabel(std::string(queue_name(queue)) + " vs naive");
+  bench::time_against_references(
+    state, s->core, *s->naive, s->grasp, s->pull, brush ? "brush paint" : "tiles");
 }
 
 void TableArgs(benchmark::internal::Benchmark* b)
@@ -375,7 +363,7 @@ BENCHMARK(BM_BfsFloor)
   ->MinTime(0.2);
 
 BENCHMARK(BM_CoreVsNaive)
-  ->ArgsProduct({ { 0, 2 }, { 1000, 3000, 10000, 30000, 100000, 300000, 1000000 } })
+  ->ArgsProduct({ { 0, 2 }, { 1000, 3000, 10000, 30000, 100000, 300000, 1000000 }, { 0, 1 } })
   ->Unit(benchmark::kMillisecond)
   ->MinTime(0.5);
 

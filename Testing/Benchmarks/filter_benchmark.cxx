@@ -1,8 +1,15 @@
 // Per-update cost through vtkChainMailDeformationFilter when only Displacement changes:
 // a ~1,000-vertex grasp on a 40,000-vertex and on a 4,000,000-vertex surface must cost
 // the same (adjacency and rest state cached, only moved vertices rewritten).
+// BM_RealDemVsTextbook/<queue>/<displaced>: the core frame on a real DEM (matplotlib's
+// Jacksboro fault zone, 344 x 403, read by vtkNpzDEMReader, in UTM metres) painted with
+// the Smooth brush (bench::brush_painted), against the naive ChainMail and the textbook
+// FIFO-preserving priority queue (vs_reference.h), grasped at the middle vertex.
 #include "bench_scenes.h"
+#include "vs_reference.h"
 #include "vtkChainMailDeformationFilter.h"
+#include "vtkGeoShapingAdapter.h"
+#include "vtkNpzDEMReader.h"
 #include "vtk_test_meshes.h"
 
 #include "vtkCellArray.h"
@@ -14,6 +21,9 @@
 #include "vtkSmartPointer.h"
 
 #include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
 
 namespace
 {
@@ -163,6 +173,53 @@ void BM_ReleaseAndUndoOnLargeSurface(benchmark::State& state)
 }
 } // namespace
 
+void BM_RealDemVsTextbook(benchmark::State& state)
+{
+  struct DemScene
+  {
+    std::vector<double> xyz;
+    geoshaping::Adjacency adjacency;
+    std::vector<float> m;
+    geoshaping::ChainMailDeformer core;
+    std::unique_ptr<geoshaping::bench::NaiveChainMail> naive;
+    geoshaping::index_t grasp = 0;
+    double pull = 0.0;
+  };
+  static std::map<std::size_t, std::unique_ptr<DemScene>> cache;
+  const std::size_t target = std::size_t(state.range(1));
+  std::unique_ptr<DemScene>& s = cache[target];
+  if (!s)
+  {
+    vtkNew<vtkNpzDEMReader> reader;
+    reader->SetFileName("/usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz");
+    reader->Update();
+    vtkPolyData* dem = reader->GetOutput();
+    if (dem->GetNumberOfPoints() == 0)
+    {
+      state.SkipWithError("the Jacksboro DEM (python-matplotlib-data) is not installed");
+      return;
+    }
+    s = std::make_unique<DemScene>();
+    vtkIdType skipped = 0, bad = 0;
+    vtkGeoShapingAdapter::PointsAsDouble(dem->GetPoints(), s->xyz, bad);
+    s->adjacency = vtkGeoShapingAdapter::BuildAdjacency(dem, skipped);
+    double b[6];
+    dem->GetBounds(b);
+    const double size = std::min(b[1] - b[0], b[3] - b[2]);
+    const auto n = geoshaping::index_t(dem->GetNumberOfPoints());
+    s->m = geoshaping::bench::brush_painted(s->xyz.data(), n, s->adjacency, b[0], b[2], size);
+    s->core.set_mesh(s->xyz.data(), n, s->adjacency);
+    s->core.set_malleability(s->m.data());
+    s->naive = std::make_unique<geoshaping::bench::NaiveChainMail>(
+      s->xyz.data(), s->adjacency, s->m.data(), s->core.transfer_function());
+    s->grasp = n / 2;
+    s->pull = geoshaping::bench::pull_for_count(s->core, s->grasp, target);
+  }
+  s->core.set_queue(static_cast<geoshaping::QueueKind>(state.range(0)));
+  geoshaping::bench::time_against_references(
+    state, s->core, *s->naive, s->grasp, s->pull, "Jacksboro DEM, brush paint");
+}
+
 BENCHMARK(BM_ReleaseAndUndoOnLargeSurface)
   ->Arg(0)
   ->Arg(1)
@@ -175,5 +232,10 @@ BENCHMARK(BM_FilterUpdateWithPasses)
   ->Unit(benchmark::kMicrosecond)
   ->MinTime(0.5);
 BENCHMARK(BM_FilterUpdateLargeGraspWithNormals)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+BENCHMARK(BM_RealDemVsTextbook)
+  ->ArgsProduct({ { 0, 2 }, { 3000, 10000, 30000, 100000 } })
+  ->Unit(benchmark::kMillisecond)
+  ->MinTime(0.5);
 
 BENCHMARK_MAIN();

@@ -9,6 +9,7 @@ NaiveChainMail::NaiveChainMail(const double* xyz, const Adjacency& adjacency,
   const float* malleability, const TransferFunction& tf)
   : xyz_(xyz)
   , adj_(adjacency)
+  , malleability_(malleability, malleability + adjacency.size())
 {
   const std::size_t n = std::size_t(adjacency.size());
   std::vector<float> values(malleability, malleability + n);
@@ -43,6 +44,33 @@ void NaiveChainMail::move(index_t v, const Eigen::Vector3d& u, index_t sponsor, 
     }
 }
 
+void NaiveChainMail::move_textbook(index_t v, const Eigen::Vector3d& u, index_t sponsor)
+{
+  stamp_[std::size_t(v)] = frame_;
+  disp_[std::size_t(v)] = u;
+  sponsor_[std::size_t(v)] = sponsor;
+  moved_.push_back(v);
+  for (const index_t* c = adj_.begin(v); c != adj_.end(v); ++c)
+    if (stamp_[std::size_t(*c)] != frame_)
+      heap_.push({ malleability_[std::size_t(*c)], counter_++, { *c, v } });
+}
+
+void NaiveChainMail::examine(const Entry& e, bool banded, bool textbook)
+{
+  if (stamp_[std::size_t(e.candidate)] == frame_)
+    return;
+  const Eigen::Vector3d o =
+    Eigen::Vector3d(xyz_ + 3 * e.candidate) - Eigen::Vector3d(xyz_ + 3 * e.sponsor);
+  const Eigen::Vector3d u = required_displacement<ValidRegionFrame::axes>(
+    o, params_[std::size_t(e.candidate)], disp_[std::size_t(e.sponsor)]);
+  if (u.isZero(0.0))
+    return;
+  if (textbook)
+    move_textbook(e.candidate, u, e.sponsor);
+  else
+    move(e.candidate, u, e.sponsor, banded);
+}
+
 std::size_t NaiveChainMail::deform(index_t grasp, const Eigen::Vector3d& d, bool banded)
 {
   ++frame_;
@@ -57,14 +85,22 @@ std::size_t NaiveChainMail::deform(index_t grasp, const Eigen::Vector3d& d, bool
       break;
     const Entry e = queues_[lowest_].front();
     queues_[lowest_].pop_front();
-    if (stamp_[std::size_t(e.candidate)] == frame_)
-      continue;
-    const Eigen::Vector3d o =
-      Eigen::Vector3d(xyz_ + 3 * e.candidate) - Eigen::Vector3d(xyz_ + 3 * e.sponsor);
-    const Eigen::Vector3d u = required_displacement<ValidRegionFrame::axes>(
-      o, params_[std::size_t(e.candidate)], disp_[std::size_t(e.sponsor)]);
-    if (!u.isZero(0.0))
-      move(e.candidate, u, e.sponsor, banded);
+    examine(e, banded, false);
+  }
+  return moved_.size();
+}
+
+std::size_t NaiveChainMail::deform_textbook(index_t grasp, const Eigen::Vector3d& d)
+{
+  ++frame_;
+  moved_.clear();
+  counter_ = 0;
+  move_textbook(grasp, d, -1);
+  while (!heap_.empty())
+  {
+    const Entry e = heap_.top().entry;
+    heap_.pop();
+    examine(e, false, true);
   }
   return moved_.size();
 }

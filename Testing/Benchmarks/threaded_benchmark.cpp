@@ -3,7 +3,8 @@
 // displace 1,000,000, 300,000, 100,000 or 30,000 vertices.
 //
 // BM_ThreadedFrame/<queue>/<threads>/<displaced in thousands>/<threshold>, queue 0 FIFO or 2 FIFO
-//   Priority: frames on `threads` threads (1: the one-thread frame), for farm-bench to time
+//   Priority: frames on `threads` threads (1: the one-thread frame; 0: automatic, one thread
+//   for a while after a stall on a busy machine), for farm-bench to time
 //   whole processes A B A B (docs/benchmarks.md, "Threaded frame"). Counters per frame:
 //   wall `ms`, the calling thread's CPU `main_cpu_ms`, the process's `cpu_ms` (all
 //   threads), supersteps and threaded supersteps.
@@ -194,7 +195,7 @@ void BM_SuperstepShare(benchmark::State& state)
 } // namespace
 
 BENCHMARK(BM_ThreadedFrame)
-  ->ArgsProduct({ { 0, 2 }, { 1, 2 }, { 1000, 300, 100, 30 }, { 0 } })
+  ->ArgsProduct({ { 0, 2 }, { 1, 2, 0 }, { 1000, 300, 100, 30 }, { 0 } })
   ->ArgsProduct({ { 0 }, { 2 }, { 1000, 300 }, { 256, 4096 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
