@@ -171,10 +171,12 @@ public:
 
   ///@{
   /// Threads a large superstep runs on in one process (geoshaping/deform/chainmail_deformer.h,
-  /// "Threads"): 1 (the default) one thread; 0 every core; n > 1 that many. A superstep of
-  /// the FIFO or FIFO Priority queue with at least ThreadedSuperstepThreshold entries runs
-  /// on the threads (not with obstacles, not on MPI pieces); the result is the same bit for
-  /// bit either way (docs/benchmarks.md, "Threaded frame").
+  /// "Threads"): 0 (the default) automatic, every core while they are free and one thread
+  /// for a while after a stall (another process holding a core); 1 one thread; n > 1 always
+  /// n. A superstep of the FIFO or FIFO Priority queue with at least
+  /// ThreadedSuperstepThreshold entries runs on the threads (not with obstacles, not on MPI
+  /// pieces); the result is the same bit for bit either way (docs/benchmarks.md, "Threaded
+  /// frame").
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   vtkSetClampMacro(ThreadedSuperstepThreshold, vtkIdType, 1, VTK_ID_MAX);
@@ -438,7 +440,7 @@ protected:
   double DefaultMalleability = 0.5;
   int CandidateQueue = FIFO_PRIORITY;
   int ValidRegionFrame = AXES;
-  int NumberOfThreads = 1;
+  int NumberOfThreads = 0;
   vtkIdType ThreadedSuperstepThreshold; // the core's default (constructor)
   double StretchRange[2] = { 1.0, 2.0 };
   double CompressionRange[2] = { 1.0, 0.5 };

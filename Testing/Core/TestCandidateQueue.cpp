@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <random>
 #include <stdexcept>
@@ -144,4 +145,27 @@ TEST(CandidateQueue, MaxViolationIsLargestFirst)
   q.push({ 2, 0 }, 0, 3.0);
   q.push({ 3, 0 }, 0, 1.0);
   EXPECT_EQ(drain(q), (std::vector<index_t>{ 2, 3, 1 }));
+}
+
+TEST(CandidateQueue, PriorityBandIsRigidAloneThenSixtyFourLevels)
+{
+  EXPECT_EQ(priority_levels, 64u);
+  EXPECT_EQ(priority_band(0.0f), 0u);
+  EXPECT_EQ(priority_band(-0.0f), 0u);
+  EXPECT_EQ(priority_band(1e-30f), 1u); // any softness leaves the rigid band
+  EXPECT_EQ(priority_band(1.0f / 64.0f), 2u);
+  EXPECT_EQ(priority_band(0.5f), 33u);
+  EXPECT_EQ(priority_band(std::nextafter(0.5f, 0.0f)), 32u);
+  EXPECT_EQ(priority_band(63.0f / 64.0f), 64u); // the last level ...
+  EXPECT_EQ(priority_band(1.0f), 64u);          // ... holds 1
+  // Monotone, and values 1/64 apart always fall in different bands.
+  std::uint32_t last = 0;
+  for (int i = 0; i <= 100000; ++i)
+  {
+    const float m = float(i) / 100000.0f;
+    EXPECT_GE(priority_band(m), last);
+    last = priority_band(m);
+    if (m + 1.0f / 64.0f <= 1.0f)
+      EXPECT_LT(priority_band(m), priority_band(m + 1.0f / 64.0f)) << m;
+  }
 }

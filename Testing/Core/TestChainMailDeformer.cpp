@@ -181,6 +181,36 @@ TEST(ChainMailDeformer, PriorityVeinsDifferFromFifoPrioritySpiralOnEqualMalleabi
     EXPECT_EQ(fp.displacement(v), fifo.displacement(v));
 }
 
+// A smooth brush leaves many values a hair apart; within one band (priority_band) they are
+// equal for the order, so FIFO Priority is exactly FIFO there, while each vertex keeps its
+// own valid region.
+TEST(ChainMailDeformer, FifoPriorityTakesValuesOfOneBandFirstInFirstOut)
+{
+  const index_t n = 41;
+  const auto mesh = geoshaping::testing::triangle_grid(n, n, 1.0);
+  std::vector<float> m(std::size_t(mesh.size()));
+  for (std::size_t v = 0; v < m.size(); ++v) // in [0.5, 0.5 + 1/64): band 33
+    m[v] = 0.5f + 0.015f * float((v * 7919) % 101) / 100.0f;
+  ChainMailDeformer fp = make(mesh), fifo = make(mesh), flat = make(mesh);
+  fp.set_malleability(m.data());
+  fifo.set_malleability(m.data());
+  fp.set_queue(QueueKind::fifo_priority);
+  fifo.set_queue(QueueKind::fifo);
+  flat.set_queue(QueueKind::fifo_priority);
+  const Eigen::Vector3d delta(0.0, 0.0, 10.0);
+  fp.deform(grid_id(n, 20, 20), delta);
+  fifo.deform(grid_id(n, 20, 20), delta);
+  flat.deform(grid_id(n, 20, 20), delta); // malleability 0.5 everywhere
+  ASSERT_EQ(fp.moved(), fifo.moved());
+  double from_flat = 0.0;
+  for (index_t v = 0; v < fp.size(); ++v)
+  {
+    EXPECT_EQ(fp.displacement(v), fifo.displacement(v)) << v;
+    from_flat = std::max(from_flat, (fp.displacement(v) - flat.displacement(v)).norm());
+  }
+  EXPECT_GT(from_flat, 0.0); // the exact values still shape the regions
+}
+
 TEST(ChainMailDeformer, PinnedVerticesStayPutAndBlockPropagation)
 {
   const auto mesh = geoshaping::testing::chain(10, 1.0);

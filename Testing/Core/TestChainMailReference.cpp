@@ -114,17 +114,17 @@ public:
   // Supersteps: every entry of the lowest (malleability, root, generation), in
   // (candidate id, sponsor id) order; the neighbours of what a superstep moved are
   // queued after it. A root (generation, id) starts where an entry goes down in
-  // malleability, is kept within one malleability, and is (0, 0) going up.
+  // malleability band (priority_band), is kept within one band, and is (0, 0) going up.
   template<class Required, class Move>
   void supersteps(bool banded, index_t g, Required required, Move move, FrameResult& r)
   {
     using Root = std::pair<std::uint32_t, std::int64_t>;
     using Entry = std::tuple<std::int64_t, std::int64_t, index_t, index_t>; // gids, c, s
-    std::map<std::tuple<float, Root, std::uint32_t>, std::vector<Entry>> pending;
+    std::map<std::tuple<std::uint32_t, Root, std::uint32_t>, std::vector<Entry>> pending;
     std::vector<Root> root(malleability_.size(), Root{ 0, 0 });
     std::vector<index_t> this_step{ g };
     std::uint32_t step = 0;
-    auto band = [&](index_t v) { return banded ? malleability_[v] : 0.0f; };
+    auto band = [&](index_t v) { return banded ? priority_band(malleability_[v]) : 0u; };
     auto queue_neighbours = [&]
     {
       for (index_t s : this_step)

@@ -4,14 +4,17 @@
 // both region shapes, across grasps, commits and repainting. Nothing here depends on how
 // the threads are scheduled: the result is the same for any interleaving.
 #include "geoshaping/deform/chainmail_deformer.h"
+#include "geoshaping/deform/worker_pool.h"
 #include "test_meshes.h"
 #include "test_pieces.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <thread>
 
 using namespace geoshaping;
 
@@ -161,6 +164,22 @@ TEST(ThreadedSuperstep, PaintedGridEqualsOneThreadOnOneToFourThreads)
     }
 }
 
+// Automatic threads (set_threads(0)) may go to one thread for a while when the machine is
+// busy: frames are the one-thread frames either way, however the threads were scheduled.
+TEST(ThreadedSuperstep, AutomaticThreadsEqualOneThreadHoweverBusyTheMachine)
+{
+  const Scene s = geoshaping::testing::painted_grid(48, 40);
+  const auto frames = drag(48, 40);
+  for (QueueKind q : { QueueKind::fifo, QueueKind::fifo_priority })
+    expect_threaded_equals_one_thread(s, true, q, ValidRegionFrame::axes, 0, frames, 8);
+  ChainMailDeformer d;
+  d.set_threads(0);
+  EXPECT_TRUE(d.automatic_threads());
+  EXPECT_GE(d.threads(), 1);
+  d.set_threads(2);
+  EXPECT_FALSE(d.automatic_threads());
+}
+
 TEST(ThreadedSuperstep, CallerIdsAndLinkRegionEqualOneThread)
 {
   const Scene s = geoshaping::testing::painted_grid(40, 36);
@@ -286,4 +305,30 @@ TEST(ThreadedSuperstep, CopiesRunTheirOwnThreads)
   expect_same_frame(copy, rc, plain, rw, "copy");
   expect_same_frame(d, rd, plain, rw, "original");
   EXPECT_EQ(copy.moved(), d.moved());
+}
+
+// A busy machine (chainmail_deformer.h, "Threads"): a thread kept off its core makes the
+// others wait at a barrier for longer than they worked, which the pool reports so the
+// deformer can go on alone. The sleep stands in for the scheduler; a wait it forces is at
+// least its length whatever the machine does, so the test cannot pass by luck.
+TEST(WorkerPool, ThreadKeptOffItsCoreIsReportedAsAStall)
+{
+  WorkerPool pool(2);
+  int ran[2] = { 0, 0 };
+  auto job = [&](int t)
+  {
+    if (t == 1)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    pool.barrier();
+    ++ran[t];
+  };
+  pool.run(job);
+  EXPECT_TRUE(pool.stalled());
+  EXPECT_EQ(ran[0], 1);
+  EXPECT_EQ(ran[1], 1);
+  auto alone = [&](int t) { ++ran[t]; };
+  WorkerPool one(1);
+  one.run(alone);
+  EXPECT_FALSE(one.stalled()); // one thread never waits
+  EXPECT_EQ(ran[0], 2);
 }

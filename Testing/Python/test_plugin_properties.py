@@ -17,6 +17,9 @@ check(list(chain.StretchRange) == [1.0, 2.0], "default stretch range 1 -> 2")
 check(list(chain.CompressionRange) == [1.0, 0.5], "default compression range 1 -> 0.5")
 check(list(chain.ShearRange) == [0.0, 0.5], "default shear range 0 -> 0.5")
 check(chain.DefaultMalleability == 0.5, "default malleability 0.5")
+check(chain.NumberOfThreads == 0 and
+      chain.SMProxy.GetProperty("NumberOfThreads").GetPanelVisibility() == "advanced",
+      "threads automatic by default, an advanced property")
 # ParaView 5.11's properties panel draws no widget for an IdTypeVectorProperty.
 check(chain.SMProxy.GetProperty("GraspPointId").IsA("vtkSMIntVectorProperty"),
       "GraspPointId is an IntVectorProperty, so the properties panel draws it")

@@ -35,10 +35,10 @@ std::uint32_t SuperstepQueue::open_group(const ChainKey& k)
   else
   {
     for (std::size_t g = open_of_.size(); g < open_.size(); ++g)
-      open_of_.emplace(open_[g], std::uint32_t(g));
-    const auto found = open_of_.find(k);
-    if (found != open_of_.end())
-      return found->second;
+      open_of_.insert(open_[g], std::uint32_t(g));
+    const std::uint32_t found = open_of_.find(k);
+    if (found != nil)
+      return found;
   }
   open_.push_back(k);
   return std::uint32_t(open_.size() - 1);
@@ -86,8 +86,7 @@ void SuperstepQueue::seal_in_push_order(std::uint32_t generation)
     side_.clear();
   }
   open_.clear();
-  if (!open_of_.empty())
-    open_of_.clear();
+  open_of_.clear();
 }
 
 void SuperstepQueue::file(const Group& g)
@@ -96,14 +95,15 @@ void SuperstepQueue::file(const Group& g)
   std::uint32_t c = last_;
   if (c == nil || !(chains_[c].key == ck))
   {
-    const auto found = chain_of_.find(ck);
-    if (found != chain_of_.end())
-      c = found->second;
-    else
+    // A root made in this generation (a downhill entry) has no chain yet: seal files each
+    // (band, root) of a generation once.
+    const bool new_root = std::uint32_t(ck.band_generation) == g.key[2];
+    c = new_root ? nil : chain_of_.find(ck);
+    if (c == nil)
     {
       c = std::uint32_t(chains_.size());
       chains_.push_back({ ck, nil, nil, false });
-      chain_of_.emplace(ck, c);
+      chain_of_.insert(ck, c);
     }
   }
   std::uint32_t slot;
@@ -129,6 +129,53 @@ void SuperstepQueue::file(const Group& g)
     std::push_heap(heap_.begin(), heap_.end(), Later{ &chains_ });
   }
   last_ = c;
+}
+
+std::uint32_t SuperstepQueue::KeyTable::find(const ChainKey& k) const
+{
+  if (size_ == 0)
+    return nil;
+  for (std::size_t i = home(k);; i = (i + 1) & (slots_.size() - 1))
+  {
+    const Slot& s = slots_[i];
+    if (s.epoch != epoch_)
+      return nil;
+    if (s.key == k)
+      return s.id;
+  }
+}
+
+void SuperstepQueue::KeyTable::insert(const ChainKey& k, std::uint32_t id)
+{
+  if (2 * (size_ + 1) > slots_.size())
+  {
+    std::vector<Slot> old(std::max<std::size_t>(64, 2 * slots_.size()));
+    old.swap(slots_);
+    const std::uint32_t live = epoch_;
+    epoch_ = 1;
+    size_ = 0;
+    for (const Slot& s : old)
+      if (s.epoch == live)
+        insert(s.key, s.id);
+  }
+  std::size_t i = home(k);
+  while (slots_[i].epoch == epoch_)
+    i = (i + 1) & (slots_.size() - 1);
+  slots_[i] = { k, id, epoch_ };
+  ++size_;
+}
+
+void SuperstepQueue::KeyTable::clear()
+{
+  if (size_ == 0)
+    return;
+  size_ = 0;
+  if (++epoch_ == 0) // after 2^32 - 1 clears: no stale stamp may match
+  {
+    for (Slot& s : slots_)
+      s.epoch = 0;
+    epoch_ = 1;
+  }
 }
 
 void SuperstepQueue::drop_done_chains() const
@@ -169,8 +216,7 @@ void SuperstepQueue::clear()
   chain_of_.clear();
   open_.clear();
   side_.clear();
-  if (!open_of_.empty())
-    open_of_.clear();
+  open_of_.clear();
   last_ = nil;
   sealed_generation_ = 0;
 }

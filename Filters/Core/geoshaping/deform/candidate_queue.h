@@ -7,7 +7,6 @@
 #include <functional>
 #include <memory>
 #include <queue>
-#include <unordered_map>
 #include <vector>
 
 namespace geoshaping
@@ -98,8 +97,8 @@ public:
 // g <= t: they never join the superstep that creates them, so the deformer files them
 // after it (seal_in_push_order).
 //
-// band is the bit pattern of a float in [0, 1] (+0 for -0), whose unsigned order is the
-// numeric order, so pieces with different sets of malleability values agree on it.
+// band = priority_band(m) (below): m quantised to a fixed number of levels, a function of
+// the value alone, so pieces with different sets of malleability values agree on it.
 //
 // Cost: a frame of P appended entries in S supersteps with R distinct (band, root)s
 // costs O(P + S + H log R) expected time (hash look-ups), H <= P being the number of
@@ -132,6 +131,25 @@ struct SuperstepRoot
     return generation == o.generation && gid == o.gid;
   }
 };
+
+// FIFO Priority's band of a malleability m in [0, 1]: rigid (m = 0, +0 or -0) alone in band
+// 0, then 64 levels of width 1/64, the last one closed:
+//
+//   band(0) = 0,   band(m) = 1 + min(63, floor(64 m))   for m in (0, 1]
+//
+// Values of one band are equal for the order (first in, first out among them); the valid
+// region still uses the exact value. Bands are monotone in m, so malleabilities at least
+// 1/64 apart keep the exact order bit for bit (painted tiles, palette colours, the
+// scenes); a smooth brush's many values fall into 65 bands instead of one band each,
+// which keeps supersteps large (docs/deformer.md, "Bands").
+constexpr std::uint32_t priority_levels = 64;
+inline std::uint32_t priority_band(float m)
+{
+  if (!(m > 0.0f))
+    return 0;
+  const float scaled = m * float(priority_levels);
+  return 1 + (scaled >= float(priority_levels - 1) ? priority_levels - 1 : std::uint32_t(scaled));
+}
 
 // (band, root, generation) as three words compared in lexicographic order, so pieces
 // can reduce it as plain integers.
@@ -208,9 +226,7 @@ public:
            free_.capacity() * sizeof(std::uint32_t) + chains_.capacity() * sizeof(Chain) +
            heap_.capacity() * sizeof(std::uint32_t) + offsets_.capacity() * sizeof(std::uint32_t) +
            side_.capacity() * sizeof(SideEntry) + open_.capacity() * sizeof(ChainKey) +
-           (chain_of_.size() + open_of_.size()) *
-             (sizeof(ChainKey) + 2 * sizeof(void*) + sizeof(std::uint32_t)) +
-           (chain_of_.bucket_count() + open_of_.bucket_count()) * sizeof(void*);
+           chain_of_.memory_bytes() + open_of_.memory_bytes();
   }
 
 private:
@@ -232,12 +248,35 @@ private:
       return band_generation == o.band_generation && gid == o.gid;
     }
   };
-  struct ChainHash
+  // ChainKey -> id by open addressing (linear probing, at most half full): no allocation
+  // per key, and clear() is O(1) (an epoch stamp per slot), which matters when a smooth
+  // paint makes a (band, root) for most moved vertices. Expected O(1) per operation.
+  class KeyTable
   {
-    std::size_t operator()(const ChainKey& k) const
+  public:
+    std::uint32_t find(const ChainKey& k) const;      // nil when absent
+    void insert(const ChainKey& k, std::uint32_t id); // k must be absent
+    void clear();
+    bool empty() const { return size_ == 0; }
+    std::size_t size() const { return size_; }
+    std::size_t memory_bytes() const { return slots_.capacity() * sizeof(Slot); }
+
+  private:
+    struct Slot
     {
-      return std::size_t((k.band_generation * 0x9e3779b97f4a7c15ULL) ^ k.gid);
+      ChainKey key;
+      std::uint32_t id, epoch; // the slot is used iff epoch == epoch_
+    };
+    std::size_t home(const ChainKey& k) const
+    {
+      std::uint64_t h = k.band_generation * 0x9e3779b97f4a7c15ULL + k.gid;
+      h ^= h >> 32;
+      h *= 0xd6e8feb86659fd93ULL;
+      return std::size_t(h ^ (h >> 32)) & (slots_.size() - 1);
     }
+    std::vector<Slot> slots_; // a power of two, or empty
+    std::size_t size_ = 0;
+    std::uint32_t epoch_ = 1;
   };
   struct Chain
   {
@@ -265,7 +304,7 @@ private:
   std::vector<std::uint32_t> free_;         // free slots of groups_
   mutable std::vector<Chain> chains_;       // by chain id, the frame's (band, root)s
   mutable std::vector<std::uint32_t> heap_; // chains with pending groups, a heap on Later
-  std::unordered_map<ChainKey, std::uint32_t, ChainHash> chain_of_; // chains_ by key
+  KeyTable chain_of_;                       // chains_ by key
   std::uint32_t open_group(const ChainKey& k);
   struct SideEntry
   {
@@ -276,8 +315,8 @@ private:
   std::size_t open_begin_ = 0;         // its first entry in pool_
   std::vector<SideEntry> side_;        // its entries of groups other than the first
   std::vector<std::uint32_t> offsets_; // seal_in_push_order's counting sort
-  std::unordered_map<ChainKey, std::uint32_t, ChainHash> open_of_; // open_ by key, when large
-  std::uint32_t last_ = nil; // the chain popped or filed to last (most often the next)
+  KeyTable open_of_;                   // open_ by key, when large
+  std::uint32_t last_ = nil;           // the chain popped or filed to last (most often the next)
   std::uint32_t sealed_generation_ = 0;
 };
 

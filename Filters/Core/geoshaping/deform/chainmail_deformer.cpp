@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -197,9 +196,7 @@ void ChainMailDeformer::rebuild_rank_params()
   rank_band_.resize(distinct_.size());
   for (std::size_t r = 0; r < distinct_.size(); ++r)
   {
-    // The value's bits: for floats >= +0 their unsigned order is the numeric order.
-    const float value = distinct_[r] == 0.0f ? 0.0f : distinct_[r];
-    std::memcpy(&rank_band_[r], &value, sizeof value);
+    rank_band_[r] = priority_band(distinct_[r]);
     rank_params_[r] = region_params(transfer_(distinct_[r]));
   }
   // The transfer function is set every frame: keep the components while the rigid ranks
@@ -334,6 +331,10 @@ void ChainMailDeformer::begin_frame()
   superstep_ = 0;
   superstep_begin_ = 0;
   sorted_begin_ = sorted_end_ = 0;
+  if (threaded_supersteps_ > 0 && !threads_paused_)
+    backoff_ = 0; // the last frame ran threaded without a stall
+  threads_paused_ = paused_frames_ > 0;
+  paused_frames_ -= paused_frames_ > 0;
   threaded_supersteps_ = 0;
   blocked_ = 0;
   last_fraction_ = 1.0;
@@ -428,15 +429,15 @@ void ChainMailDeformer::push_neighbours()
       const Node& node = nodes[c];
       if (node.stamp == frame || (pins && pins[c]) || (ghosts && ghosts[c]))
         continue;
-      // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base
-      // (ranks are in band order).
-      if (!Banded || node.rank == s_rank)
+      // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base.
+      const std::uint32_t c_band =
+        !Banded || node.rank == s_rank ? s_band : rank_band_[std::size_t(node.rank)];
+      if (c_band == s_band)
         supersteps_.append(same, c, index_t(slot));
       else
-        supersteps_.append(
-          supersteps_.open(rank_band_[std::size_t(node.rank)],
-            node.rank < s_rank ? SuperstepRoot{ superstep_ + 1, global_id_inner(c) }
-                               : SuperstepRoot{}),
+        supersteps_.append(supersteps_.open(c_band,
+                             c_band < s_band ? SuperstepRoot{ superstep_ + 1, global_id_inner(c) }
+                                             : SuperstepRoot{}),
           c, index_t(slot));
       prefetch(neighbors + offsets[c]); // read if c moves
     }

@@ -106,6 +106,13 @@ struct FrameResult
 // frames with obstacles, pieces (set_owned). The result is bit for bit the one-thread
 // frame's whatever the threads or their scheduling.
 //
+// On a busy machine threads would lose (another process on a core stops one thread for
+// milliseconds at each barrier). With automatic threads (set_threads(0)), when the pool
+// reports a stall (WorkerPool::stalled()) the rest of the frame and the next b frames
+// run on the caller's thread, b doubling from 1 to 64 while stalls recur and going back
+// to 0 after a threaded frame without one: a frame costs at most one stall more than the
+// one-thread frame. An explicit count (set_threads(n > 1)) always uses n threads.
+//
 // Arithmetic is double, on displacements u = x - x0 of rest positions stored relative
 // to a local origin, so UTM-sized coordinates lose nothing and a rigid region's
 // displacement is bit-identical to its sponsor's.
@@ -167,10 +174,12 @@ public:
   void set_queue(QueueKind q) { queue_kind_ = q; }
   QueueKind queue() const { return queue_kind_; }
   // Threads (see "Threads" below): a superstep of at least threaded_threshold() entries
-  // runs on `threads` threads; 1 (the default) runs every frame on the caller's thread, 0
-  // takes the hardware's concurrency. Neither changes any result.
+  // runs on `threads` threads; 1 (the default) runs every frame on the caller's thread;
+  // 0 is automatic: the hardware's concurrency, and one thread for a while whenever the
+  // machine is busy (a stall). Neither changes any result.
   void set_threads(int threads);
   int threads() const { return threads_; }
+  bool automatic_threads() const { return automatic_threads_; }
   void set_threaded_threshold(std::size_t entries) { threaded_threshold_ = entries; }
   std::size_t threaded_threshold() const { return threaded_threshold_; }
   // Shape of the valid region (valid_region.h): axes (default) or link.
@@ -386,8 +395,8 @@ private:
   // Whether the current superstep, `entries` long, runs on threads.
   bool threaded_superstep(std::size_t entries) const
   {
-    return threads_ > 1 && entries >= threaded_threshold_ && !obstacles_ && ghost_.empty() &&
-           moved_rec_.size() == superstep_begin_;
+    return threads_ > 1 && entries >= threaded_threshold_ && !threads_paused_ && !obstacles_ &&
+           ghost_.empty() && moved_rec_.size() == superstep_begin_;
   }
   // Files the pushes examine_threaded() made, if they are this superstep's; false if not.
   bool file_threaded_pushes();
@@ -490,6 +499,11 @@ private:
   int threads_ = 1;
   std::size_t threaded_threshold_ = 1024;
   std::size_t threaded_supersteps_ = 0; // this frame's
+  // The back-off after a stall ("Threads"): this frame runs on one thread from here on;
+  // frames still to run on one thread; the length of the last back-off.
+  bool automatic_threads_ = false;
+  bool threads_paused_ = false;
+  std::uint32_t paused_frames_ = 0, backoff_ = 0;
   ThreadedHandle threaded_;
 };
 

@@ -68,6 +68,9 @@ void ChainMailDeformer::set_threads(int threads)
   if (n != threads_)
     threaded_.state.reset();
   threads_ = n;
+  automatic_threads_ = threads <= 0;
+  threads_paused_ = false;
+  paused_frames_ = backoff_ = 0;
 }
 
 std::size_t ChainMailDeformer::threaded_bytes() const
@@ -285,6 +288,12 @@ std::size_t ChainMailDeformer::examine_threaded(
     th.pushed_end = moved_rec_.size();
   }
   ++threaded_supersteps_;
+  if (automatic_threads_ && th.pool.stalled()) // busy: one thread a while (chainmail_deformer.h)
+  {
+    threads_paused_ = true;
+    backoff_ = std::min<std::uint32_t>(64, std::max<std::uint32_t>(1, 2 * backoff_));
+    paused_frames_ = backoff_;
+  }
   return count;
 }
 

@@ -1,5 +1,6 @@
 #include "geoshaping/deform/worker_pool.h"
 
+#include <algorithm>
 #include <chrono>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -13,9 +14,8 @@ namespace
 {
 // How long a waiting thread spins before it blocks: longer than the one-thread part
 // between two large supersteps (tens of microseconds), short against the pause between
-// frames. Blocking sooner costs a wake-up per barrier: with 256 spins (~10 us) two threads
-// ran a 1,000,000-vertex FIFO frame at 0.47-0.61x one thread on two idle cores (five
-// barriers in each of 633 supersteps), with spinning up to 1-10 ms at 1.13-1.48x.
+// frames. Blocking sooner costs a wake-up per barrier, several per superstep, which on idle
+// cores made two threads slower than one (docs/benchmarks.md, "Threaded frame").
 constexpr std::chrono::microseconds spin_before_blocking{ 2000 };
 
 inline void pause()
@@ -26,6 +26,10 @@ inline void pause()
   std::this_thread::yield();
 #endif
 }
+
+// When this thread last left a barrier (or started a run): its work since is the time
+// from there to its next barrier.
+thread_local std::chrono::steady_clock::time_point left_barrier;
 } // namespace
 
 WorkerPool::WorkerPool(int threads)
@@ -48,11 +52,11 @@ void WorkerPool::work(int t)
 {
   for (;;)
   {
-    barrier();
+    barrier(false);
     if (stop_)
       return;
     call_(job_, t);
-    barrier();
+    barrier(true);
   }
 }
 
@@ -60,17 +64,18 @@ void WorkerPool::run_erased(void (*call)(void*, int), void* job)
 {
   call_ = call;
   job_ = job;
+  stalled_.store(false, std::memory_order_relaxed);
   if (workers_.empty())
   {
     call(job, 0);
     return;
   }
-  barrier();
+  barrier(false);
   call(job, 0);
-  barrier();
+  barrier(true);
 }
 
-void WorkerPool::barrier()
+void WorkerPool::barrier(bool in_job)
 {
   // Sense by generation: the last of threads_ arrivals resets the count and starts the
   // next generation. seq_cst on generation_ and sleepers_: a waiter that found the old
@@ -86,22 +91,42 @@ void WorkerPool::barrier()
       std::lock_guard<std::mutex> lock(mutex_);
       wake_.notify_all();
     }
+    left_barrier = std::chrono::steady_clock::now();
     return;
   }
-  const auto until = std::chrono::steady_clock::now() + spin_before_blocking;
-  do
+  using clock = std::chrono::steady_clock;
+  const clock::time_point arrived = clock::now();
+  // Longer than this, and the thread waited for ran at under half this one's speed.
+  const clock::duration stall = std::max<clock::duration>(stall_floor, arrived - left_barrier);
+  bool waited_long = false;
+  for (clock::time_point now = arrived; now - arrived < spin_before_blocking; now = clock::now())
   {
     for (int i = 0; i < 64; ++i)
     {
       if (generation_.load(std::memory_order_acquire) != gen)
+      {
+        left_barrier = clock::now();
         return;
+      }
       pause();
     }
-  } while (std::chrono::steady_clock::now() < until);
-  std::unique_lock<std::mutex> lock(mutex_);
-  sleepers_.fetch_add(1);
-  wake_.wait(lock, [&] { return generation_.load() != gen; });
-  sleepers_.fetch_sub(1);
+    if (in_job && !waited_long && now - arrived > stall)
+    {
+      waited_long = true;
+      stalled_.store(true, std::memory_order_relaxed);
+    }
+    if (now - arrived > yield_after)
+      std::this_thread::yield();
+  }
+  if (in_job)
+    stalled_.store(true, std::memory_order_relaxed);
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    sleepers_.fetch_add(1);
+    wake_.wait(lock, [&] { return generation_.load() != gen; });
+    sleepers_.fetch_sub(1);
+  }
+  left_barrier = clock::now();
 }
 
 } // namespace geoshaping

@@ -3,7 +3,16 @@
 // (chainmail_deformer.h, "Threads"). The caller is thread 0 of every run; the others wait
 // between runs, first spinning for up to 2 ms (a frame's supersteps follow one another within
 // microseconds), then blocked on a condition variable (between frames).
+//
+// A busy machine: when another process holds the core of one of the threads, the others
+// wait for it at each barrier for as long as the scheduler keeps it off (milliseconds),
+// and a run takes longer than on one thread. The pool notices it and says so (stalled()):
+// a thread that waits at a barrier inside a job for longer than it worked since the last
+// one (and longer than `stall_floor`) means another ran at less than half its speed,
+// where T threads cannot beat one. A wait past `yield_after` yields the core instead of
+// spinning on it, so the thread waited for can run there.
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
@@ -32,11 +41,19 @@ public:
   }
   // Inside a job: returns once every thread of the run has called it; what a thread wrote
   // before it is visible to all after it.
-  void barrier();
+  void barrier() { barrier(true); }
+  // Whether a thread of the last run waited at a barrier inside the job for longer than it
+  // had worked since its previous barrier, and longer than stall_floor (see above).
+  bool stalled() const { return stalled_.load(std::memory_order_relaxed); }
+  static constexpr std::chrono::microseconds stall_floor{ 100 };
+  static constexpr std::chrono::microseconds yield_after{ 50 };
 
 private:
   void run_erased(void (*call)(void*, int), void* job);
   void work(int t);
+  // in_job: a barrier inside a run (a long wait there is a stall), not the one that starts
+  // a run (workers wait there between runs).
+  void barrier(bool in_job);
 
   int threads_;
   std::vector<std::thread> workers_;
@@ -47,6 +64,7 @@ private:
   std::atomic<int> arrived_{ 0 };
   std::atomic<std::uint32_t> generation_{ 0 };
   std::atomic<int> sleepers_{ 0 };
+  std::atomic<bool> stalled_{ false };
   std::mutex mutex_;
   std::condition_variable wake_;
 };
