@@ -308,8 +308,8 @@ TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)
   std::vector<double> triples = { 99.0, 0.1, 0.2 }; // earlier dabs are kept
   interactor::append_point_dabs(
     { 4, 8, 15 }, { 0.0, 1.0, 2.0 }, 2.0, 0.8, 0.5, geoshaping::Falloff::linear, triples);
-  // The rim (weight 0) is left out.
-  const std::vector<double> expected = { 99.0, 0.1, 0.2, 4.0, 0.8, 0.5, 8.0, 0.8, 0.25 };
+  // The core (half the radius) at full strength; the rim (weight 0) is left out.
+  const std::vector<double> expected = { 99.0, 0.1, 0.2, 4.0, 0.8, 0.5, 8.0, 0.8, 0.5 };
   EXPECT_EQ(triples, expected);
 
   std::vector<double> clamped;
