@@ -9,6 +9,9 @@
 
 #include <pqRenderView.h>
 
+#include <QCoreApplication>
+#include <QKeyEvent>
+
 #include <vtkActor.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
@@ -145,8 +148,8 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
     auto hand = std::make_unique<Hand>();
     hand->kind = setup.device;
     hand->mouse.setConstraint(this->Pull);
-    hand->mouse.constraintKeyed = [this](interactor::PullConstraint c)
-    { this->setPullConstraint(c); };
+    hand->mouse.constraintShown = [this](interactor::PullConstraint c)
+    { Q_EMIT this->pullConstraintChanged(int(c)); };
     hand->tool = setup.tool;
     hand->controller.set_tool(setup.tool);
     if (setup.device != Mouse)
@@ -175,11 +178,36 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
   this->FpsSince = std::chrono::steady_clock::now();
   this->FramesSince = 0;
   this->Timer.start();
+  QCoreApplication::instance()->installEventFilter(this);
   return true;
+}
+
+bool pqHapticsInteractor::eventFilter(QObject* watched, QEvent* event)
+{
+  const bool press = event->type() == QEvent::KeyPress;
+  if (press || event->type() == QEvent::KeyRelease)
+  {
+    auto* key = static_cast<QKeyEvent*>(event);
+    if (key->key() == Qt::Key_Control && !key->isAutoRepeat())
+    {
+      for (auto& hand : this->Hands)
+      {
+        if (hand && hand->kind == Mouse)
+        {
+          hand->mouse.setControlKey(press);
+        }
+      }
+    }
+  }
+  return QObject::eventFilter(watched, event);
 }
 
 void pqHapticsInteractor::stop()
 {
+  if (QCoreApplication* application = QCoreApplication::instance())
+  {
+    application->removeEventFilter(this);
+  }
   this->Timer.stop();
   for (auto& hand : this->Hands)
   {

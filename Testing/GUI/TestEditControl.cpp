@@ -329,3 +329,15 @@ TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)
     { -1 }, { 0.0 }, 1.0, 0.5, 0.5, geoshaping::Falloff::constant, none); // bad id
   EXPECT_TRUE(none.empty());
 }
+
+TEST(RedoableSteps, CountTheEditsAndTheStrokesRedoWillRestore)
+{
+  using geoshaping::interactor::redoable_steps;
+  // A stroke undone: Redo restores it, though the deformation has nothing to redo.
+  EXPECT_EQ(redoable_steps(0, { "Paint Stroke" }, "Paint Stroke"), 1);
+  // Then the pull before it: two presses of Redo restore something.
+  EXPECT_EQ(redoable_steps(1, { "Paint Stroke", "Edit Commit" }, "Paint Stroke"), 2);
+  // Another proxy's step is not the dock's to redo.
+  EXPECT_EQ(redoable_steps(0, { "Delete", "Paint Stroke" }, "Paint Stroke"), 1);
+  EXPECT_EQ(redoable_steps(-1, {}, "Paint Stroke"), 0);
+}
