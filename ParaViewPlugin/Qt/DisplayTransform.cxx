@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,29 @@ DisplayTransform::DisplayTransform(const Eigen::Matrix4d& matrix)
   invertible_ = matrix.allFinite() && std::isfinite(det) && std::abs(det) > 0.0;
   inverse_ = invertible_ ? Eigen::Matrix4d(matrix.inverse()) : Eigen::Matrix4d::Identity();
   invertible_ = invertible_ && inverse_.allFinite();
+  if (invertible_)
+  {
+    const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::Matrix3d>(linear).singularValues();
+    stretch_ = sigma(0) / sigma(2);
+  }
+}
+
+std::size_t DisplayTransform::nearest_drawn(
+  const Eigen::Vector3d& point, const std::vector<Eigen::Vector3d>& candidates) const
+{
+  const Eigen::Matrix3d linear = matrix_.topLeftCorner<3, 3>();
+  std::size_t best = 0;
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+  {
+    const double d = (linear * (candidates[i] - point)).squaredNorm();
+    if (d < least)
+    {
+      least = d;
+      best = i;
+    }
+  }
+  return best;
 }
 
 DisplayTransform DisplayTransform::of_prop(const double position[3], const double orientation[3],

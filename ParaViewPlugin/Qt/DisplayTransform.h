@@ -8,6 +8,9 @@
 // exaggeration (Scale 1, 1, s) leaves the hand where the surface is drawn.
 #include <Eigen/Core>
 
+#include <cstddef>
+#include <vector>
+
 namespace geoshaping::interactor
 {
 
@@ -33,10 +36,20 @@ public:
   Eigen::Vector3d normal_to_world(
     const Eigen::Vector3d& data_normal, const Eigen::Vector3d& toward_viewer) const;
 
+  // The grasp takes the vertex drawn nearest to the picked point, which under a
+  // vertical exaggeration need not be the data's nearest: it lies within stretch() times
+  // the data's nearest distance (the largest over the smallest singular value of the
+  // linear part; 1 for a rigid motion). nearest_drawn() is the index of the candidate
+  // (data coordinates) drawn nearest to `point` (data coordinates); 0 for none.
+  double stretch() const { return stretch_; }
+  std::size_t nearest_drawn(
+    const Eigen::Vector3d& point, const std::vector<Eigen::Vector3d>& candidates) const;
+
 private:
   Eigen::Matrix4d matrix_ = Eigen::Matrix4d::Identity();
   Eigen::Matrix4d inverse_ = Eigen::Matrix4d::Identity();
   bool invertible_ = true;
+  double stretch_ = 1.0;
 };
 
 // The vertical exaggeration the dock sets: the display Scale (1, 1, s), for s within

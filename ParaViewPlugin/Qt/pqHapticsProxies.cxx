@@ -206,7 +206,27 @@ void pqHapticsProxies::grasp(const Eigen::Vector3d& position)
   const double zero[3] = { 0.0, 0.0, 0.0 };
   vtkSMPropertyHelper(proxy, "Displacement").Set(zero, 3);
   vtkStaticPointLocator* locator = this->shownLocator();
-  const vtkIdType id = locator ? locator->FindClosestPoint(position.data()) : -1;
+  vtkIdType id = locator ? locator->FindClosestPoint(position.data()) : -1;
+  const auto shown = pqHapticsDisplayTransform(this->representation(this->Deformation));
+  if (id >= 0 && shown.stretch() > 1.0 + 1e-9)
+  {
+    // Exaggerated: the vertex drawn nearest, among those it can be (DisplayTransform.h).
+    vtkPointSet* surface = this->shownSurface();
+    Eigen::Vector3d nearest;
+    surface->GetPoint(id, nearest.data());
+    vtkNew<vtkIdList> ids;
+    locator->FindPointsWithinRadius(
+      shown.stretch() * (nearest - position).norm(), position.data(), ids);
+    std::vector<Eigen::Vector3d> candidates(std::size_t(ids->GetNumberOfIds()));
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+    {
+      surface->GetPoint(ids->GetId(i), candidates[std::size_t(i)].data());
+    }
+    if (!candidates.empty())
+    {
+      id = ids->GetId(vtkIdType(shown.nearest_drawn(position, candidates)));
+    }
+  }
   if (id >= 0)
   {
     // The vertex the user sees nearest (after committed edits it is not the nearest

@@ -54,7 +54,8 @@ public:
   double verticalExaggeration() const;
   void setVerticalExaggeration(double s);
 
-  // Grasps the vertex of the shown (deformed) surface nearest to `position`: in a builtin
+  // Grasps the vertex of the shown (deformed) surface drawn nearest to `position` (data
+  // coordinates; through the display transform: DisplayTransform::nearest_drawn): in a builtin
   // session by GraspPointId from a locator on the deformation's client-side output,
   // otherwise GraspMode = Nearest To Position (the filter's nearest *input* vertex).
   void grasp(const Eigen::Vector3d& position);

@@ -136,3 +136,16 @@ TEST(DisplayTransform, ExaggerationIsTheVerticalScaleWithinItsRange)
   EXPECT_TRUE(std::isnan(exaggeration_of(uneven)));
   EXPECT_FALSE(DisplayTransform(Eigen::Matrix4d::Zero()).invertible());
 }
+
+TEST(DisplayTransform, GraspTakesTheVertexDrawnNearest)
+{
+  // Under Scale (1, 1, 5) a vertex 60 m to the side is drawn nearer than one 20 m below.
+  const DisplayTransform shown = exaggerated(5.0);
+  EXPECT_DOUBLE_EQ(shown.stretch(), 5.0);
+  const Vector3d picked(0.0, 0.0, 0.0);
+  const std::vector<Vector3d> candidates = { Vector3d(0, 0, -20), Vector3d(60, 0, 0),
+    Vector3d(0, 90, 0) };
+  EXPECT_EQ(shown.nearest_drawn(picked, candidates), 1u);
+  EXPECT_EQ(DisplayTransform().nearest_drawn(picked, candidates), 0u);
+  EXPECT_EQ(DisplayTransform().stretch(), 1.0);
+}

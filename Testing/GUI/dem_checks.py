@@ -108,6 +108,8 @@ def check(mode, out):
               EXAGGERATION * d[2]))
     assert grasped["GraspPointId"] == pull["GraspPointId"], (grasped, pull)
     assert gap <= 1.5 * CELL, "grasped a vertex away from the press: %.1f m" % gap
+    # A vertex spacing (100 m) shows as about 5 px here; the vertex drawn nearest is taken.
+    assert np.linalg.norm(offset) <= 5.0, "the grasp shows %.1f px off the press" % np.linalg.norm(offset)
     assert np.linalg.norm(moved) > 20 and np.linalg.norm(d) > 0, (moved, d)
     assert error <= PIXEL, "the grasped vertex moved %.3f px off the cursor's motion" % error
     released, _ = snapshot(out, "released")
