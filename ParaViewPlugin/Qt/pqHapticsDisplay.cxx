@@ -163,11 +163,11 @@ std::vector<vtkSMProxy*> pqHapticsProxies::shapedRepresentations() const
 
 double pqHapticsProxies::verticalExaggeration() const
 {
-  const std::vector<vtkSMProxy*> shaped = this->shapedRepresentations();
+  vtkSMProxy* repr = this->representation(this->Deformation);
   double scale[3] = { 1.0, 1.0, 1.0 };
-  if (!shaped.empty() && shaped[0]->GetProperty("Scale"))
+  if (repr && repr->GetProperty("Scale"))
   {
-    vtkSMPropertyHelper(shaped[0], "Scale").Get(scale, 3);
+    vtkSMPropertyHelper(repr, "Scale").Get(scale, 3);
   }
   return interactor::exaggeration_of(scale);
 }

@@ -1,6 +1,7 @@
 """The GUI test of the vertical exaggeration (run_gui_test.py mode dem_exaggerated): a 9 km
 GeoTIFF hill (1.2 km high, 100 m pixels, UTM 16N, written by gdal_translate) through DEM
-Surface, shown with the display Scale (1, 1, 5); the mouse hovers, paints and pulls
+Surface, shown with the display Scale (1, 1, 5) (and an obstacle under the hill's foot);
+the mouse hovers, paints and pulls
 through the plugin's test hook (GEOSHAPING_HAPTICS_SCRIPT, TestHook/pqHapticsTestScript.h),
 then the dock's Vertical exaggeration sets 2. Checked against VTK's own picker on the
 drawn geometry and the hook's snapshots."""
@@ -61,7 +62,7 @@ def check(mode, out):
     """Hover: the brush cursor where the hill is drawn under the mouse. Ctrl-drag: the
     stroke paints the vertices under its drawn path (in data units). Drag: the grasped
     vertex is the one drawn under the press and stays under the cursor. The dock's
-    Vertical exaggeration sets the surface's Scale."""
+    Vertical exaggeration sets the surface's Scale and its obstacle's."""
     kinds = [kind for kind, _, _ in drawn_picks(out)]
     assert kinds == ["hover", "press", "move", "move", "press", "move", "move"], kinds
     drawn = drawn_picks(out)
@@ -71,7 +72,7 @@ def check(mode, out):
     radius = float(hover["brush_radius"])
     print("scale %s; brush radius %.1f m; hover: %s cursor(s) %s, drawn point %s" % (
         hover["Scale"], radius, hover["cursors"], hover.get("cursor_0"), drawn[0][1]))
-    assert hover["Scale"] == "1 1 %g" % EXAGGERATION, hover["Scale"]
+    assert hover["Scale"] == hover["obstacle_scale_0"] == "1 1 %g" % EXAGGERATION, hover
     assert hover["cursors"] == "1", "no brush cursor over the exaggerated hill"
     cursor = vector(hover, "cursor_0")
     off = np.linalg.norm(cursor[:3] - drawn[0][1])
@@ -109,12 +110,13 @@ def check(mode, out):
     assert grasped["GraspPointId"] == pull["GraspPointId"], (grasped, pull)
     assert gap <= 1.5 * CELL, "grasped a vertex away from the press: %.1f m" % gap
     # A vertex spacing (100 m) shows as about 5 px here; the vertex drawn nearest is taken.
-    assert np.linalg.norm(offset) <= 5.0, "the grasp shows %.1f px off the press" % np.linalg.norm(offset)
+    assert np.linalg.norm(offset) <= 5.0, "the grasp shows %s px off the press" % offset
     assert np.linalg.norm(moved) > 20 and np.linalg.norm(d) > 0, (moved, d)
     assert error <= PIXEL, "the grasped vertex moved %.3f px off the cursor's motion" % error
     released, _ = snapshot(out, "released")
     assert released["edit_history"] == "1", released
 
     two, _ = snapshot(out, "two")
-    print("the dock's Vertical exaggeration 2: Scale %s" % two["Scale"])
-    assert two["Scale"] == "1 1 2", two["Scale"]
+    print("the dock's Vertical exaggeration 2: Scale %s, the obstacle's %s" % (
+        two["Scale"], two["obstacle_scale_0"]))
+    assert two["Scale"] == two["obstacle_scale_0"] == "1 1 2", two

@@ -1,11 +1,12 @@
 #include "pqHapticsTestScript.h"
 
+#include "pqHapticsTestDrawn.h"
+
 #include "pqHapticsDockPanel.h"
 #include "pqHapticsProxies.h"
 
 #include <pqActiveObjects.h>
 #include <pqApplicationCore.h>
-#include <pqDataRepresentation.h>
 #include <pqPipelineSource.h>
 #include <pqRenderView.h>
 #include <pqSaveStateReaction.h>
@@ -313,7 +314,7 @@ void pqHapticsTestScript::snapshot(const QString& name)
           << QString::number(d[1], 'g', 17) << " " << QString::number(d[2], 'g', 17) << "\n";
       out << "GraspPointId = " << vtkSMPropertyHelper(proxy, "GraspPointId").GetAsIdType() << "\n";
     }
-    this->writeDrawnGrasp(out, deformation, shown);
+    pqHapticsWriteDrawnGrasp(out, deformation, shown);
     // The cursors shown: the view's visible sphere actors other than the data.
     int cursors = 0;
     vtkRenderer* renderer = view ? view->getRenderViewProxy()->GetRenderer() : nullptr;
@@ -351,37 +352,6 @@ void pqHapticsTestScript::snapshot(const QString& name)
   if (view)
   {
     view->widget()->grab().save(prefix + ".png");
-  }
-}
-
-void pqHapticsTestScript::writeDrawnGrasp(
-  QTextStream& out, pqPipelineSource* deformation, vtkPointSet* shown)
-{
-  // The deformation's display Scale, and its grasped vertex as drawn (the shown vertex
-  // scaled; Position, Orientation and Origin are the defaults in these tests) in display
-  // pixels, beside the mouse's last event pixel.
-  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
-  pqDataRepresentation* repr = view && deformation ? deformation->getRepresentation(view) : nullptr;
-  if (!repr || !shown)
-  {
-    return;
-  }
-  double scale[3];
-  vtkSMPropertyHelper(repr->getProxy(), "Scale").Get(scale, 3);
-  out << "Scale = " << scale[0] << " " << scale[1] << " " << scale[2] << "\n";
-  vtkRenderer* renderer = view->getRenderViewProxy()->GetRenderer();
-  const int* mouse = view->getRenderViewProxy()->GetInteractor()->GetEventPosition();
-  out << "mouse_px = " << mouse[0] << " " << mouse[1] << "\n";
-  const vtkIdType id = vtkSMPropertyHelper(deformation->getProxy(), "GraspPointId").GetAsIdType();
-  if (id >= 0 && id < shown->GetNumberOfPoints())
-  {
-    double p[3];
-    shown->GetPoint(id, p);
-    renderer->SetWorldPoint(p[0] * scale[0], p[1] * scale[1], p[2] * scale[2], 1.0);
-    renderer->WorldToDisplay();
-    const double* d = renderer->GetDisplayPoint();
-    out << "grasp_px = " << QString::number(d[0], 'g', 17) << " " << QString::number(d[1], 'g', 17)
-        << "\n";
   }
 }
 

@@ -30,7 +30,8 @@
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
 //                      brush, the paint lists' sizes, the pull (Displacement, grasp,
 //                      the dock's Pull row), the shown cursors (centre, radius), the
-//                      deformation's display Scale, its grasped vertex's pixel as drawn
+//                      deformation's display Scale and its obstacles', its grasped
+//                      vertex's pixel as drawn
 //                      and the mouse's pixel, the
 //                      dock's texts) and <out>-NAME.png
 //                      (the render view)
@@ -46,8 +47,6 @@
 #include <chrono>
 
 class pqHapticsDockPanel;
-class pqPipelineSource;
-class vtkPointSet;
 class QTextStream;
 
 class pqHapticsTestScript
@@ -62,7 +61,6 @@ public:
 
 private:
   void snapshot(const QString& name);
-  void writeDrawnGrasp(QTextStream& out, pqPipelineSource* deformation, vtkPointSet* shown);
   void dump(const QString& name);
   void mouse(const QStringList& words);
   void key(const QString& key);
