@@ -26,6 +26,15 @@ DisplayTransform::DisplayTransform(const Eigen::Matrix4d& matrix)
   }
 }
 
+Eigen::Matrix4d DisplayTransform::about(const Eigen::Vector3d& world) const
+{
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  const Eigen::Matrix3d linear = matrix_.topLeftCorner<3, 3>();
+  m.topLeftCorner<3, 3>() = linear;
+  m.topRightCorner<3, 1>() = world - linear * world;
+  return m;
+}
+
 std::size_t DisplayTransform::nearest_drawn(
   const Eigen::Vector3d& point, const std::vector<Eigen::Vector3d>& candidates) const
 {

@@ -36,6 +36,11 @@ public:
   Eigen::Vector3d normal_to_world(
     const Eigen::Vector3d& data_normal, const Eigen::Vector3d& toward_viewer) const;
 
+  // A shape of data size drawn at `world`: the linear part about that point,
+  // T(world) L T(-world). The brush cage is its sphere through it (an ellipsoid s times
+  // taller under a vertical exaggeration), as the brush reaches in the data.
+  Eigen::Matrix4d about(const Eigen::Vector3d& world) const;
+
   // The grasp takes the vertex drawn nearest to the picked point, which under a
   // vertical exaggeration need not be the data's nearest: it lies within stretch() times
   // the data's nearest distance (the largest over the smallest singular value of the

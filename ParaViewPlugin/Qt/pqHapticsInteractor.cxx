@@ -1,5 +1,6 @@
 #include "pqHapticsInteractor.h"
 
+#include "DisplayTransform.h"
 #include "pqHapticsMouse.h"
 
 #include "geoshaping/haptics/contact_patch.h"
@@ -13,6 +14,7 @@
 #include <QKeyEvent>
 
 #include <vtkActor.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -48,6 +50,7 @@ struct pqHapticsInteractor::Hand
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkPolyDataMapper> mapper;
   vtkNew<vtkActor> cursor;
+  vtkNew<vtkMatrix4x4> cage;         // the cursor's matrix: the brush as drawn (onFrame)
   interactor::StylusPalette palette; // device hands: shown while the second button is held
   vtkNew<vtkSphereSource> swatchSphere;
   vtkNew<vtkPolyDataMapper> swatchMapper;
@@ -500,6 +503,18 @@ void pqHapticsInteractor::onFrame()
     hand.sphere->SetCenter(at.data());
     hand.sphere->SetRadius(
       painting ? this->brushCursorRadius(at, camera) : 0.004 * mapping.scale());
+    // The cage is the brush as drawn: its sphere in the data through the display
+    // transform, about where a dab lands (an ellipsoid under a vertical exaggeration).
+    const Eigen::Matrix4d cage =
+      painting ? interactor::DisplayTransform(object).about(at) : Eigen::Matrix4d::Identity();
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        hand.cage->SetElement(i, j, cage(i, j));
+      }
+    }
+    hand.cursor->SetUserMatrix(hand.cage);
     hand.cursor->GetProperty()->SetColor(color.x(), color.y(), color.z());
     // A cage while painting: the paint under the brush shows through (a translucent
     // sphere would turn on depth peeling, slower than the frame).

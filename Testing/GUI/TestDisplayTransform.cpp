@@ -149,3 +149,16 @@ TEST(DisplayTransform, GraspTakesTheVertexDrawnNearest)
   EXPECT_EQ(DisplayTransform().nearest_drawn(picked, candidates), 0u);
   EXPECT_EQ(DisplayTransform().stretch(), 1.0);
 }
+
+TEST(DisplayTransform, CageAboutThePointIsTheBrushAsDrawn)
+{
+  const DisplayTransform shown = exaggerated(5.0);
+  const Vector3d at(7.0e5, 4.0e6, 4000.0); // world
+  const Eigen::Matrix4d about = shown.about(at);
+  const auto apply = [&about](const Vector3d& p)
+  { return (about * p.homogeneous()).hnormalized(); };
+  EXPECT_LE((apply(at) - at).norm(), 1e-9);
+  // A brush of radius 100 (data) reaches 100 across and 500 up as drawn.
+  EXPECT_LE((apply(at + Vector3d(100, 0, 0)) - (at + Vector3d(100, 0, 0))).norm(), 1e-9);
+  EXPECT_LE((apply(at + Vector3d(0, 0, 100)) - (at + Vector3d(0, 0, 500))).norm(), 1e-9);
+}

@@ -76,8 +76,10 @@ def check(mode, out):
     assert hover["cursors"] == "1", "no brush cursor over the exaggerated hill"
     cursor = vector(hover, "cursor_0")
     off = np.linalg.norm(cursor[:3] - drawn[0][1])
-    print("hover: the cursor is %.3f m from the point drawn under the mouse" % off)
+    print("hover: the cursor is %.3f m from the point drawn under the mouse, %g times taller "
+          "than wide (the brush as drawn)" % (off, cursor[5]))
     assert off <= 1e-3 * radius, off
+    assert cursor[5] == EXAGGERATION, "the cage is not the brush as drawn: %s" % cursor
 
     results, rows = snapshot(out, "stroke")
     path = [data for _, _, data in drawn[1:4]]

@@ -20,6 +20,7 @@
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkMapper.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
@@ -335,7 +336,8 @@ void pqHapticsTestScript::snapshot(const QString& name)
         out << "cursor_" << cursors++ << " = " << QString::number(c[0], 'g', 17) << " "
             << QString::number(c[1], 'g', 17) << " " << QString::number(c[2], 'g', 17) << " "
             << QString::number(sphere->GetRadius(), 'g', 17) << " "
-            << actor->GetProperty()->GetRepresentation() << "\n";
+            << actor->GetProperty()->GetRepresentation() << " "
+            << QString::number(actor->GetMatrix()->GetElement(2, 2), 'g', 17) << "\n";
       }
     }
     out << "cursors = " << cursors << "\n";

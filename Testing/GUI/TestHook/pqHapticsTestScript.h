@@ -29,7 +29,8 @@
 //   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
 //                      brush, the paint lists' sizes, the pull (Displacement, grasp,
-//                      the dock's Pull row), the shown cursors (centre, radius), the
+//                      the dock's Pull row), the shown cursors (centre, radius, representation,
+//                      stretch along z), the
 //                      deformation's display Scale and its obstacles', its grasped
 //                      vertex's pixel as drawn
 //                      and the mouse's pixel, the
