@@ -45,6 +45,18 @@ std::string scene_unit(const std::vector<std::string>& axis_units, bool has_proj
   return has_projection ? "m" : "";
 }
 
+std::string radius_about(double radius, const std::string& unit, bool is_default, bool fitted)
+{
+  if (!fitted)
+  {
+    return "Fits the surface once there is one to paint: 3 % of its diagonal";
+  }
+  std::string about = format_length(radius, unit);
+  about +=
+    is_default ? ": 3 % of the data's diagonal" : ": set for this surface (kept in the state)";
+  return unit.empty() ? about + "; the data names no unit" : about;
+}
+
 std::string format_length(double length, const std::string& unit)
 {
   std::string u = unit.empty() ? "scene units" : unit;

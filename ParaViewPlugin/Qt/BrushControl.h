@@ -26,6 +26,12 @@ std::string scene_unit(const std::vector<std::string>& axis_units, bool has_proj
 // 1,000 and more read as km), "5 m", "0.25 ft", "1.5 scene units" for an unknown unit.
 std::string format_length(double length, const std::string& unit);
 
+// What the dock says of the brush radius: its length and whether it is the default (3 %
+// of the data's diagonal) or set for this surface (kept in the state), and when the data
+// names no unit, that it does. `fitted` false (no surface to fit yet): only that the brush
+// will fit the data, without a length or unit.
+std::string radius_about(double radius, const std::string& unit, bool is_default, bool fitted);
+
 // The brush cursor's radius: the brush's, but at least `min_pixels` pixels on screen
 // (`scene_per_pixel`: the scene length of one pixel at the cursor), so a brush smaller
 // than a pixel still shows where it paints.

@@ -27,4 +27,11 @@ void append_point_dabs(const std::vector<long long>& ids, const std::vector<doub
   }
 }
 
+int redoable_steps(
+  int redoable_edits, const std::vector<std::string>& redo_labels, const std::string& stroke_label)
+{
+  return std::max(redoable_edits, 0) +
+         int(std::count(redo_labels.begin(), redo_labels.end(), stroke_label));
+}
+
 } // namespace geoshaping::interactor

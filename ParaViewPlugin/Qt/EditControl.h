@@ -1,9 +1,11 @@
 #pragma once
-// The point dabs that paint the surface the user sees, free of Qt, VTK and ParaView so that
-// they are unit tested (Testing/GUI/TestEditControl.cpp). The edit commands and their
+// The point dabs that paint the surface the user sees, and what the dock's Redo restores,
+// free of Qt, VTK and ParaView so that they are unit tested
+// (Testing/GUI/TestEditControl.cpp). The edit commands and their
 // bookkeeping are ParaViewPlugin/ServerManager/edit_commands.h.
 #include "geoshaping/paint/brush.h"
 
+#include <string>
 #include <vector>
 
 namespace geoshaping::interactor
@@ -15,5 +17,12 @@ namespace geoshaping::interactor
 // the one MalleabilityPaint applies). Points with weight 0 are left out.
 void append_point_dabs(const std::vector<long long>& ids, const std::vector<double>& distances,
   double radius, double value, double strength, Falloff falloff, std::vector<double>& triples);
+
+// What the dock's Redo restores, press after press, as its label counts it: the edits the
+// deformation's RedoEdit can re-apply (`redoable_edits`) and the paint strokes waiting on
+// ParaView's redo stack (`redo_labels`, top first: the steps labelled `stroke_label`).
+// Steps of anything else are not counted (the dock's Redo does not step them).
+int redoable_steps(
+  int redoable_edits, const std::vector<std::string>& redo_labels, const std::string& stroke_label);
 
 } // namespace geoshaping::interactor

@@ -42,6 +42,22 @@ std::optional<PullConstraint> constraint_for_key(char key, PullConstraint curren
   return asked == current ? PullConstraint::view_plane : asked;
 }
 
+std::string pull_mode_note(PullConstraint in_force, PullConstraint chosen)
+{
+  const auto name = [](PullConstraint c)
+  {
+    return std::string(c == PullConstraint::vertical ? "vertical only (z)"
+                       : c == PullConstraint::normal ? "along the surface normal"
+                                                     : "follow the cursor");
+  };
+  if (in_force == chosen)
+  {
+    return "Every pull: " + name(chosen) + ", until changed here.";
+  }
+  return "This drag: " + name(in_force) + " (by key); the release goes back to " + name(chosen) +
+         ".";
+}
+
 void PullControl::press(
   const Eigen::Vector2d& cursor, const Eigen::Vector3d& grasp, const Eigen::Vector3d& normal)
 {
@@ -49,6 +65,25 @@ void PullControl::press(
   grasp_ = grasp;
   normal_ = normal;
   base_.setZero();
+  constraint_ = chosen_;
+  pulling_ = true;
+}
+
+void PullControl::choose(PullConstraint constraint)
+{
+  chosen_ = constraint;
+  if (!pulling_)
+  {
+    constraint_ = constraint;
+  }
+}
+
+bool PullControl::release()
+{
+  pulling_ = false;
+  const bool back = constraint_ != chosen_;
+  constraint_ = chosen_;
+  return back;
 }
 
 void PullControl::constrain(

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <optional>
+#include <string>
 
 namespace geoshaping::interactor
 {
@@ -38,6 +39,11 @@ enum class PullConstraint
 // V finds data). Another key: none.
 std::optional<PullConstraint> constraint_for_key(char key, PullConstraint current);
 
+// What the dock says of the pull mode: the chosen constraint holds for every pull until
+// changed; a key's constraint (`in_force` differs from `chosen`) holds for this drag, and
+// the release goes back to the chosen one.
+std::string pull_mode_note(PullConstraint in_force, PullConstraint chosen);
+
 // One mouse pull, from the press to the release.
 //
 // Free: with W(c) the point of the plane through the grasp g parallel to the view plane
@@ -58,7 +64,9 @@ std::optional<PullConstraint> constraint_for_key(char key, PullConstraint curren
 // Precision (Shift, Blender's convention): while it is held, each cursor motion counts a
 // tenth, so pressing or releasing Shift mid-pull does not jump.
 //
-// A constraint switched mid-pull (`constrain`) does not jump either: the pull is a chain
+// The chosen constraint (`choose`, the dock's) holds for every pull; a constraint switched
+// mid-pull (`constrain`, a key) holds until the release, which goes back to the chosen one.
+// A switch does not jump either: the pull is a chain
 // of segments, each under one constraint. At the switch the displacement so far, D0 (under
 // the old constraint, through the view of that moment), is kept, the grasp is taken where
 // it now is (g + D0), and the new constraint moves it from there with the cursor's motion
@@ -83,10 +91,17 @@ public:
   void move(const Eigen::Vector2d& cursor, bool precise);
   // From now on the pull keeps to `constraint`, continuing from where the grasp is (above);
   // `view` and `up` as for displacement(). The same constraint again changes nothing.
+  // It lasts this pull (a key's switch): the release goes back to the chosen one.
   void constrain(PullConstraint constraint, const ViewProjection& view, const Eigen::Vector3d& up);
-  // Between pulls: the constraint of the next press.
-  void set_constraint(PullConstraint constraint) { constraint_ = constraint; }
+  // The constraint chosen for every pull (the dock's Pull row): in force from the next
+  // press on, and at once between pulls; a pull under way keeps its own (constrain() it).
+  void choose(PullConstraint constraint);
+  // The pull is over: the chosen constraint is in force again. True when that changed it
+  // (a key had switched the pull).
+  bool release();
+  // The constraint in force (the pull's own during a pull), and the chosen one.
   PullConstraint constraint() const { return constraint_; }
+  PullConstraint chosen() const { return chosen_; }
 
   // The displacement of the grasp (world) for the cursor so far, seen through `view`;
   // `up` is the scene's vertical in world coordinates. Zero for non-finite input or a
@@ -104,6 +119,8 @@ private:
     const ViewProjection& view, const Eigen::Vector3d& from, const Eigen::Vector3d& axis) const;
 
   PullConstraint constraint_ = PullConstraint::view_plane;
+  PullConstraint chosen_ = PullConstraint::view_plane;
+  bool pulling_ = false;
   Eigen::Vector2d press_ = Eigen::Vector2d::Zero(); // the pixel where the segment began
   Eigen::Vector2d last_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d target_ = Eigen::Vector2d::Zero();

@@ -28,6 +28,7 @@ pqHapticsBrushPanel::pqHapticsBrushPanel(pqHapticsInteractor* haptics, QWidget* 
   this->Radius->setObjectName("BrushRadius");
   this->Radius->setRange(0.0, 1e12);
   this->Radius->setDecimals(3);
+  this->Radius->setSpecialValueText("fit to the data");
   this->Radius->setToolTip("Brush radius, in the unit of the data (metres for geographic or "
                            "projected data). Until you set it, 3 % of the diagonal of the "
                            "data's bounding box; kept with the state (MalleabilityPaint's "
@@ -94,18 +95,14 @@ void pqHapticsBrushPanel::showBrush()
 {
   const interactor::Brush& brush = this->Interactor->brush();
   const std::string& unit = this->Interactor->sceneUnit();
+  const bool fitted = this->Interactor->brushFitsData();
   {
+    // Before data, 0: the spin box's special text ("fit to the data", as 0 typed means).
     const QSignalBlocker blocker(this->Radius);
     this->Radius->setSuffix(unit.empty() ? QString() : QString(" %1").arg(unit.c_str()));
-    this->Radius->setValue(brush.radius);
+    this->Radius->setValue(fitted ? brush.radius : 0.0);
   }
-  QString about = QString::fromStdString(interactor::format_length(brush.radius, unit));
-  about += this->Interactor->brushRadiusIsDefault() ? ": 3 % of the data's diagonal"
-                                                    : ": set for this surface (kept in the state)";
-  if (unit.empty())
-  {
-    about += "; the data names no unit";
-  }
-  this->About->setText(about);
+  this->About->setText(QString::fromStdString(interactor::radius_about(
+    brush.radius, unit, this->Interactor->brushRadiusIsDefault(), fitted)));
   this->Note->setText(this->Interactor->brushNote());
 }

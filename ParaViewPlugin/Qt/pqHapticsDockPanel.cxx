@@ -88,6 +88,7 @@ void pqHapticsDockPanel::build()
   layout->addWidget(this->buildHand(0));
   layout->addWidget(this->buildHand(1));
   layout->addWidget(pqHapticsPullRow(body, this->Interactor));
+  layout->addWidget(pqHapticsExaggerationRow(body, this->Interactor));
   auto* help = new QLabel("<b>Mouse</b>: left-drag the surface to pull it; <b>Ctrl</b>+left-drag "
                           "paints. <b>Stylus</b>: hold the button to use the hand's tool. "
                           "A release commits (Alt+Z undoes).",
@@ -319,12 +320,7 @@ void pqHapticsDockPanel::refreshEdits()
 
 void pqHapticsDockPanel::showEdits(const interactor::EditResult& r)
 {
-  QString text = QString("Edits: %1, redoable %2").arg(r.edits).arg(r.redoable);
-  if (!r.message.empty())
-  {
-    text += QString(" (%1)").arg(QString::fromStdString(r.message));
-  }
-  this->Edits->setText(text);
+  this->Edits->setText(QString::fromStdString(pqHapticsUndo::editsText(r)));
 }
 
 void pqHapticsDockPanel::setPaintValue(double value)

@@ -1,11 +1,16 @@
 #include "pqHapticsDockRows.h"
 
+#include "DisplayTransform.h"
 #include "pqHapticsInteractor.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLayout>
+#include <QSignalBlocker>
+
+#include <cmath>
 
 namespace
 {
@@ -64,14 +69,71 @@ QWidget* pqHapticsPullRow(QWidget* parent, pqHapticsInteractor* interactor)
   hint->setObjectName("PullHint");
   hint->setWordWrap(true);
   hint->setToolTip(constraint->toolTip());
+  auto* mode = new QLabel(box);
+  mode->setObjectName("PullMode");
+  mode->setWordWrap(true);
+  mode->setToolTip(constraint->toolTip());
+  const auto showMode = [interactor, mode](int c)
+  {
+    mode->setText(QString::fromStdString(
+      geoshaping::interactor::pull_mode_note(PullConstraint(c), interactor->pullConstraint())));
+  };
+  showMode(int(interactor->pullConstraint()));
   form->addRow("Pull", constraint);
+  form->addRow(mode);
   form->addRow(hint);
   QObject::connect(constraint, QOverload<int>::of(&QComboBox::currentIndexChanged), interactor,
     [interactor, constraint]()
     { interactor->setPullConstraint(PullConstraint(constraint->currentData().toInt())); });
-  // A key during a pull: the row shows the constraint in force.
+  // The row shows the constraint in force: a key's during its pull, then the chosen one
+  // again (not a choice: the combo's signal is held).
   QObject::connect(interactor, &pqHapticsInteractor::pullConstraintChanged, constraint,
-    [constraint](int c) { constraint->setCurrentIndex(constraint->findData(c)); });
+    [constraint, showMode](int c)
+    {
+      const QSignalBlocker quiet(constraint);
+      constraint->setCurrentIndex(constraint->findData(c));
+      showMode(c);
+    });
+  pqHapticsTipLabels(box);
+  return box;
+}
+
+QWidget* pqHapticsExaggerationRow(QWidget* parent, pqHapticsInteractor* interactor)
+{
+  namespace gi = geoshaping::interactor;
+  auto* box = new QWidget(parent);
+  auto* form = new QFormLayout(box);
+  form->setContentsMargins(0, 0, 0, 0);
+  auto* spin = new QDoubleSpinBox(box);
+  spin->setObjectName("VerticalExaggeration");
+  spin->setRange(gi::min_exaggeration, gi::max_exaggeration);
+  spin->setDecimals(1);
+  spin->setSingleStep(1.0);
+  spin->setValue(1.0);
+  spin->setSuffix(" \u00d7");
+  spin->setKeyboardTracking(false);
+  spin->setToolTip(
+    "Stretches the view of the shaped surface (and of its obstacles) along z: their display "
+    "Scale becomes (1, 1, s), as Properties > Transforming > Scale does. The hand keeps "
+    "working where the surface is drawn: hover, paint and pulls land under the cursor, and a "
+    "pull moves the data by the cursor's motion in data units (a drawn rise over s).");
+  form->addRow("Vertical exaggeration", spin);
+  QObject::connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), interactor,
+    [interactor](double s)
+    {
+      interactor->proxies().refresh();
+      interactor->proxies().setVerticalExaggeration(s);
+    });
+  QObject::connect(interactor, &pqHapticsInteractor::frameDone, spin,
+    [interactor, spin]()
+    {
+      const double s = interactor->proxies().verticalExaggeration();
+      if (!spin->hasFocus() && std::isfinite(s) && s != spin->value())
+      {
+        const QSignalBlocker quiet(spin);
+        spin->setValue(s);
+      }
+    });
   pqHapticsTipLabels(box);
   return box;
 }

@@ -1,5 +1,6 @@
 #include "pqHapticsInteractor.h"
 
+#include "DisplayTransform.h"
 #include "pqHapticsMouse.h"
 
 #include "geoshaping/haptics/contact_patch.h"
@@ -9,7 +10,11 @@
 
 #include <pqRenderView.h>
 
+#include <QCoreApplication>
+#include <QKeyEvent>
+
 #include <vtkActor.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -45,6 +50,7 @@ struct pqHapticsInteractor::Hand
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkPolyDataMapper> mapper;
   vtkNew<vtkActor> cursor;
+  vtkNew<vtkMatrix4x4> cage;         // the cursor's matrix: the brush as drawn (onFrame)
   interactor::StylusPalette palette; // device hands: shown while the second button is held
   vtkNew<vtkSphereSource> swatchSphere;
   vtkNew<vtkPolyDataMapper> swatchMapper;
@@ -145,8 +151,8 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
     auto hand = std::make_unique<Hand>();
     hand->kind = setup.device;
     hand->mouse.setConstraint(this->Pull);
-    hand->mouse.constraintKeyed = [this](interactor::PullConstraint c)
-    { this->setPullConstraint(c); };
+    hand->mouse.constraintShown = [this](interactor::PullConstraint c)
+    { Q_EMIT this->pullConstraintChanged(int(c)); };
     hand->tool = setup.tool;
     hand->controller.set_tool(setup.tool);
     if (setup.device != Mouse)
@@ -175,11 +181,36 @@ bool pqHapticsInteractor::start(const std::array<HandSetup, 2>& setups, QString&
   this->FpsSince = std::chrono::steady_clock::now();
   this->FramesSince = 0;
   this->Timer.start();
+  QCoreApplication::instance()->installEventFilter(this);
   return true;
+}
+
+bool pqHapticsInteractor::eventFilter(QObject* watched, QEvent* event)
+{
+  const bool press = event->type() == QEvent::KeyPress;
+  if (press || event->type() == QEvent::KeyRelease)
+  {
+    auto* key = static_cast<QKeyEvent*>(event);
+    if (key->key() == Qt::Key_Control && !key->isAutoRepeat())
+    {
+      for (auto& hand : this->Hands)
+      {
+        if (hand && hand->kind == Mouse)
+        {
+          hand->mouse.setControlKey(press);
+        }
+      }
+    }
+  }
+  return QObject::eventFilter(watched, event);
 }
 
 void pqHapticsInteractor::stop()
 {
+  if (QCoreApplication* application = QCoreApplication::instance())
+  {
+    application->removeEventFilter(this);
+  }
   this->Timer.stop();
   for (auto& hand : this->Hands)
   {
@@ -472,6 +503,18 @@ void pqHapticsInteractor::onFrame()
     hand.sphere->SetCenter(at.data());
     hand.sphere->SetRadius(
       painting ? this->brushCursorRadius(at, camera) : 0.004 * mapping.scale());
+    // The cage is the brush as drawn: its sphere in the data through the display
+    // transform, about where a dab lands (an ellipsoid under a vertical exaggeration).
+    const Eigen::Matrix4d cage =
+      painting ? interactor::DisplayTransform(object).about(at) : Eigen::Matrix4d::Identity();
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        hand.cage->SetElement(i, j, cage(i, j));
+      }
+    }
+    hand.cursor->SetUserMatrix(hand.cage);
     hand.cursor->GetProperty()->SetColor(color.x(), color.y(), color.z());
     // A cage while painting: the paint under the brush shows through (a translucent
     // sphere would turn on depth peeling, slower than the frame).

@@ -80,9 +80,10 @@ public:
   void setTool(int hand, geoshaping::interactor::Tool tool);
   void setBrush(const geoshaping::interactor::Brush& brush) { this->Brush = brush; }
   const geoshaping::interactor::Brush& brush() const { return this->Brush; }
-  // How a mouse pull moves the grasp (PullControl.h); can change mid-pull, from where the
-  // grasp is. A key during a pull (Z, N, C: PullControl.h) changes it too, and then
-  // pullConstraintChanged() is emitted.
+  // How every mouse pull moves the grasp (PullControl.h), the dock's choice; can change
+  // mid-pull, from where the grasp is. A key during a pull (Z, N, C: PullControl.h)
+  // changes it for that pull only; pullConstraintChanged() tells the constraint in force
+  // then, and again when the release goes back to this one.
   void setPullConstraint(geoshaping::interactor::PullConstraint c);
   geoshaping::interactor::PullConstraint pullConstraint() const { return this->Pull; }
   // The brush fitted to the data (pqHapticsInteractorBrush.cxx): the radius is the paint's
@@ -92,6 +93,8 @@ public:
   void refreshBrush();
   void setBrushRadius(double radius);
   bool brushRadiusIsDefault() const { return this->BrushRadiusIsDefault; }
+  // False until there is a surface to fit the brush to (the radius is then a placeholder).
+  bool brushFitsData() const { return this->BrushFitsData; }
   const std::string& sceneUnit() const { return this->SceneUnit; }
   // What the last stroke did: its dabs, and why some were not stored (BrushControl.h).
   const QString& brushNote() const { return this->BrushNote; }
@@ -109,10 +112,15 @@ Q_SIGNALS:
   void frameDone();
   void editsChanged();
   void brushChanged();                        // radius, unit or note
-  void pullConstraintChanged(int constraint); // a PullConstraint
+  void pullConstraintChanged(int constraint); // the PullConstraint in force
   // A device hand touched a swatch of the 3D palette (second button held): the brush
   // now paints `value`.
   void paletteValuePicked(double value);
+
+protected:
+  // Ctrl pressed or released wherever the keyboard focus is: tells the mouse hands
+  // (pqHapticsMouse::setControlKey). Installed on the application while running.
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
 private Q_SLOTS:
   void onFrame();
@@ -158,6 +166,7 @@ private:
   int OpenStrokes = 0;                                      // hands painting a stroke
   geoshaping::interactor::StrokeOutcome Outcome;            // of the open stroke
   bool BrushRadiusIsDefault = true;
+  bool BrushFitsData = false;
   std::string SceneUnit;
   QString BrushNote;
 };

@@ -1,6 +1,7 @@
 // pqHapticsInteractor: the brush fitted to the data; a stroke is one step of ParaView's
 // undo stack, which the dock's Undo and Redo step through as Edit > Undo does.
 #include "pqHapticsInteractor.h"
+#include "pqHapticsUndo.h"
 
 #include <pqApplicationCore.h>
 #include <pqPipelineSource.h>
@@ -17,11 +18,7 @@
 
 namespace interactor = geoshaping::interactor;
 
-namespace
-{
-// The label of a stroke's step on ParaView's undo stack (Edit > Undo Paint Stroke).
-const char* const StrokeLabel = "Paint Stroke";
-}
+using pqHapticsUndo::StrokeLabel;
 
 void pqHapticsInteractor::refreshBrush()
 {
@@ -30,11 +27,13 @@ void pqHapticsInteractor::refreshBrush()
   const double radius = kept > 0.0 ? kept : this->Proxies.defaultBrushRadius();
   const std::string unit = this->Proxies.sceneUnit();
   const bool changed = (radius > 0.0 && radius != this->Brush.radius) ||
-                       (kept <= 0.0) != this->BrushRadiusIsDefault || unit != this->SceneUnit;
+                       (kept <= 0.0) != this->BrushRadiusIsDefault || unit != this->SceneUnit ||
+                       (radius > 0.0) != this->BrushFitsData;
   if (radius > 0.0)
   {
     this->Brush.radius = radius;
   }
+  this->BrushFitsData = radius > 0.0;
   this->BrushRadiusIsDefault = kept <= 0.0;
   this->SceneUnit = unit;
   if (changed)
@@ -127,6 +126,9 @@ bool pqHapticsInteractor::strokeEdit(interactor::EditCommand command)
   }
   this->LastEdit.changed = true;
   this->LastEdit.edits = static_cast<std::size_t>(this->Proxies.numberOfEdits());
+  pqPipelineSource* deformation = this->Proxies.deformation();
+  this->LastEdit.redoable =
+    pqHapticsUndo::status(deformation ? deformation->getProxy() : nullptr).redoable;
   this->LastEdit.message = undo ? "paint stroke undone" : "paint stroke redone";
   return true;
 }

@@ -1,11 +1,9 @@
 #include "pqHapticsMouse.h"
 
-#include "undo_step.h"
+#include "pqHapticsDisplay.h"
 
 #include <vtkCamera.h>
-#include <vtkCellPicker.h>
 #include <vtkCommand.h>
-#include <vtkNew.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSMRenderViewProxy.h>
@@ -89,33 +87,7 @@ private:
 bool pqHapticsMouse::pointOnSurface(
   const int display[2], Eigen::Vector3d& world, Eigen::Vector3d& normal) const
 {
-  double p[3], n[3];
-  // The pick makes ParaView's selection proxies, whose changes are no undo step.
-  const geoshaping::undo::Exclude pick;
-  if (!this->View || !this->View->ConvertDisplayToPointOnSurface(display, p, n))
-  {
-    return false;
-  }
-  if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
-  {
-    // A cell was selected under the pixel but no server process intersected the ray with
-    // it (its normal would be a unit vector or NaN): on a distributed server, ParaView
-    // 5.11 answers so, with the point (0, 0, 0), for every cell of a process but the
-    // first (docs/mpi.md). The geometry the client draws itself, delivered to it, is
-    // picked instead; a server that renders remotely delivers none: no point then.
-    vtkRenderer* renderer = this->View->GetRenderer();
-    vtkNew<vtkCellPicker> picker;
-    picker->SetTolerance(0.0);
-    if (!renderer || !picker->Pick(display[0], display[1], 0.0, renderer))
-    {
-      return false;
-    }
-    picker->GetPickPosition(p);
-    picker->GetPickNormal(n);
-  }
-  world = Eigen::Vector3d(p[0], p[1], p[2]);
-  normal = Eigen::Vector3d(n[0], n[1], n[2]);
-  return world.allFinite();
+  return pqHapticsPickSurface(this->View, display, world, normal);
 }
 
 geoshaping::interactor::StylusState pqHapticsMouse::stylus(
@@ -129,6 +101,14 @@ geoshaping::interactor::StylusState pqHapticsMouse::stylus(
     s.position += this->Pull.displacement(RendererProjection(renderer), up);
   }
   return s;
+}
+
+void pqHapticsMouse::setControlKey(bool held)
+{
+  if (auto* interactor = vtkRenderWindowInteractor::SafeDownCast(this->Interactor))
+  {
+    interactor->SetControlKey(held ? 1 : 0);
+  }
 }
 
 bool pqHapticsMouse::paint() const
@@ -166,13 +146,10 @@ bool pqHapticsMouse::hover(Eigen::Vector3d& world)
 void pqHapticsMouse::setConstraint(geoshaping::interactor::PullConstraint constraint)
 {
   vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
+  this->Pull.choose(constraint);
   if (renderer && this->State.button && !this->Paint)
   {
     this->Pull.constrain(constraint, RendererProjection(renderer), this->Up);
-  }
-  else
-  {
-    this->Pull.set_constraint(constraint); // for the next press
   }
 }
 
@@ -224,6 +201,10 @@ bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
   else if (event == vtkCommand::LeftButtonReleaseEvent && this->State.button)
   {
     this->State.button = false;
+    if (this->Pull.release() && this->constraintShown)
+    {
+      this->constraintShown(this->Pull.constraint());
+    }
     consumed = true;
   }
   else if ((event == vtkCommand::KeyPressEvent || event == vtkCommand::CharEvent) &&
@@ -231,12 +212,13 @@ bool pqHapticsMouse::onEvent(vtkObject* caller, unsigned long event, void*)
   {
     const auto constraint =
       geoshaping::interactor::constraint_for_key(interactor->GetKeyCode(), this->Pull.constraint());
-    if (constraint && event == vtkCommand::KeyPressEvent)
+    vtkRenderer* renderer = this->View ? this->View->GetRenderer() : nullptr;
+    if (constraint && event == vtkCommand::KeyPressEvent && renderer)
     {
-      this->setConstraint(*constraint);
-      if (this->constraintKeyed)
+      this->Pull.constrain(*constraint, RendererProjection(renderer), this->Up);
+      if (this->constraintShown)
       {
-        this->constraintKeyed(*constraint);
+        this->constraintShown(*constraint);
       }
     }
     consumed = constraint.has_value();

@@ -6,7 +6,7 @@
 // to the screen, or along the vertical or the surface normal; Shift held: a tenth of the
 // motion); with Ctrl held at the press the hand paints instead, and the stylus follows
 // the surface. During a pull the keys of constraint_for_key (Z, N, C) switch its
-// constraint, continuing from where the grasp is.
+// constraint for that pull, continuing from where the grasp is.
 #include "HapticsControl.h"
 #include "PullControl.h"
 
@@ -29,15 +29,21 @@ public:
   // through the view's current camera; `up` is the scene's vertical. Painting: the point
   // of the surface under the cursor.
   geoshaping::interactor::StylusState stylus(bool pressSeen, const Eigen::Vector3d& up);
-  // The pull's constraint from now on, also mid-pull (without a jump: PullControl).
+  // The constraint chosen for every pull, from now on, also mid-pull (without a jump:
+  // PullControl).
   void setConstraint(geoshaping::interactor::PullConstraint constraint);
-  // Called when a key switches the constraint during a pull (after the switch).
-  std::function<void(geoshaping::interactor::PullConstraint)> constraintKeyed;
+  // Called when the constraint in force changes without being chosen: a key switched it
+  // for this pull, or the release went back to the chosen one.
+  std::function<void(geoshaping::interactor::PullConstraint)> constraintShown;
   // The grasped vertex (world): the pull's plane and lines go through it.
   void setGrasp(const Eigen::Vector3d& world) { this->Pull.set_grasp(world); }
   // True for a drag that began with Ctrl held; between drags, while Ctrl is held (the
   // next press would paint).
   bool paint() const;
+  // Ctrl pressed or released anywhere in the application (pqHapticsInteractor's key
+  // filter): the view's interactor hears of keys only while it has the keyboard focus,
+  // which hovering does not give it, and otherwise kept Ctrl held until the mouse moved.
+  void setControlKey(bool held);
   // Between drags, the point of the surface under the hovering mouse (world): false when
   // the mouse is off the surface or out of the view. A pick, made again only when the
   // mouse or the camera has moved since the last one.

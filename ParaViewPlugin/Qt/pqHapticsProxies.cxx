@@ -9,6 +9,7 @@
 #include <pqServerManagerModel.h>
 
 #include "ContactPatch.h"
+#include "pqHapticsDisplay.h"
 #include "pqHapticsUndo.h"
 #include "undo_step.h"
 #include "vtkGeoShapingAdapter.h"
@@ -159,44 +160,9 @@ vtkSMProxy* pqHapticsProxies::representation(pqPipelineSource* source) const
   return repr ? repr->getProxy() : nullptr;
 }
 
-namespace
-{
-// The matrix of a representation's Position/Orientation/Origin/Scale.
-Eigen::Matrix4d matrixOf(vtkSMProxy* repr)
-{
-  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-  if (!repr || !repr->GetProperty("Position"))
-  {
-    return m;
-  }
-  double position[3], orientation[3], origin[3], scale[3];
-  vtkSMPropertyHelper(repr, "Position").Get(position, 3);
-  vtkSMPropertyHelper(repr, "Orientation").Get(orientation, 3);
-  vtkSMPropertyHelper(repr, "Origin").Get(origin, 3);
-  vtkSMPropertyHelper(repr, "Scale").Get(scale, 3);
-  // vtkProp3D::ComputeMatrix, step by step.
-  vtkNew<vtkTransform> t;
-  t->PostMultiply();
-  t->Translate(-origin[0], -origin[1], -origin[2]);
-  t->Scale(scale);
-  t->RotateY(orientation[1]);
-  t->RotateX(orientation[0]);
-  t->RotateZ(orientation[2]);
-  t->Translate(origin[0] + position[0], origin[1] + position[1], origin[2] + position[2]);
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      m(i, j) = t->GetMatrix()->GetElement(i, j);
-    }
-  }
-  return m;
-}
-}
-
 Eigen::Matrix4d pqHapticsProxies::objectMatrix() const
 {
-  return matrixOf(this->representation(this->Deformation));
+  return pqHapticsDisplayTransform(this->representation(this->Deformation)).matrix();
 }
 
 void pqHapticsProxies::setObjectMatrix(const Eigen::Matrix4d& m)
@@ -240,7 +206,27 @@ void pqHapticsProxies::grasp(const Eigen::Vector3d& position)
   const double zero[3] = { 0.0, 0.0, 0.0 };
   vtkSMPropertyHelper(proxy, "Displacement").Set(zero, 3);
   vtkStaticPointLocator* locator = this->shownLocator();
-  const vtkIdType id = locator ? locator->FindClosestPoint(position.data()) : -1;
+  vtkIdType id = locator ? locator->FindClosestPoint(position.data()) : -1;
+  const auto shown = pqHapticsDisplayTransform(this->representation(this->Deformation));
+  if (id >= 0 && shown.stretch() > 1.0 + 1e-9)
+  {
+    // Exaggerated: the vertex drawn nearest, among those it can be (DisplayTransform.h).
+    vtkPointSet* surface = this->shownSurface();
+    Eigen::Vector3d nearest;
+    surface->GetPoint(id, nearest.data());
+    vtkNew<vtkIdList> ids;
+    locator->FindPointsWithinRadius(
+      shown.stretch() * (nearest - position).norm(), position.data(), ids);
+    std::vector<Eigen::Vector3d> candidates(std::size_t(ids->GetNumberOfIds()));
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+    {
+      surface->GetPoint(ids->GetId(i), candidates[std::size_t(i)].data());
+    }
+    if (!candidates.empty())
+    {
+      id = ids->GetId(vtkIdType(shown.nearest_drawn(position, candidates)));
+    }
+  }
   if (id >= 0)
   {
     // The vertex the user sees nearest (after committed edits it is not the nearest
@@ -324,7 +310,7 @@ void pqHapticsProxies::contactTriangles(
     {
       continue;
     }
-    const Eigen::Matrix4d m = matrixOf(repr->getProxy());
+    const Eigen::Matrix4d m = pqHapticsDisplayTransform(repr->getProxy()).matrix();
     const Eigen::Matrix4d inverse = m.inverse();
     if (!inverse.allFinite())
     {

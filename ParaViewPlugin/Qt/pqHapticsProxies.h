@@ -47,8 +47,15 @@ public:
   // representation's Position/Orientation/Origin/Scale, as vtkProp3D composes them.
   Eigen::Matrix4d objectMatrix() const;
   void setObjectMatrix(const Eigen::Matrix4d& m);
+  // The vertical exaggeration of the shaped surface: its representation's Scale z over x
+  // (NaN when x and y differ, 1 without a target). Setting it gives the deformation's and
+  // its obstacles' representations in the view the Scale (1, 1, s) (DisplayTransform.h)
+  // as one step of ParaView's undo stack, and renders (pqHapticsDisplay.cxx).
+  double verticalExaggeration() const;
+  void setVerticalExaggeration(double s);
 
-  // Grasps the vertex of the shown (deformed) surface nearest to `position`: in a builtin
+  // Grasps the vertex of the shown (deformed) surface drawn nearest to `position` (data
+  // coordinates; through the display transform: DisplayTransform::nearest_drawn): in a builtin
   // session by GraspPointId from a locator on the deformation's client-side output,
   // otherwise GraspMode = Nearest To Position (the filter's nearest *input* vertex).
   void grasp(const Eigen::Vector3d& position);
@@ -127,6 +134,8 @@ private:
   // the filter (render, an edit command, a new target): a frame reads them at most once.
   void readInformation(vtkSMProxy* proxy) const;
   vtkSMProxy* representation(pqPipelineSource* source) const;
+  // The representations in the view of the deformation and of its Obstacles inputs.
+  std::vector<vtkSMProxy*> shapedRepresentations() const;
   vtkStaticCellLocator* cellLocator(vtkDataSet* data);
 
   QPointer<pqRenderView> View;

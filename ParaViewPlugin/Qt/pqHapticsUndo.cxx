@@ -1,5 +1,6 @@
 #include "pqHapticsUndo.h"
 
+#include "EditControl.h"
 #include "undo_step.h"
 #include "vtkSMEditHistoryUndoElement.h"
 
@@ -8,12 +9,38 @@
 
 #include <vtkSMPropertyHelper.h>
 #include <vtkSMProxy.h>
+#include <vtkSMUndoStack.h>
+#include <vtkSMUndoStackBuilder.h>
 #include <vtkUndoSet.h>
 
 namespace interactor = geoshaping::interactor;
 
 namespace pqHapticsUndo
 {
+
+const char* const StrokeLabel = "Paint Stroke";
+
+std::vector<std::string> redoLabels()
+{
+  std::vector<std::string> labels;
+  pqUndoStack* stack = pqApplicationCore::instance()->getUndoStack();
+  vtkSMUndoStackBuilder* builder = stack ? stack->GetUndoStackBuilder() : nullptr;
+  vtkSMUndoStack* steps = builder ? builder->GetUndoStack() : nullptr;
+  for (unsigned int i = 0; steps && i < steps->GetNumberOfRedoSets(); ++i)
+  {
+    const char* label = steps->GetRedoSetLabel(i);
+    labels.emplace_back(label ? label : "");
+  }
+  return labels;
+}
+
+std::string editsText(const interactor::EditResult& r)
+{
+  std::string text =
+    "Edits: " + std::to_string(r.edits) + ", redoable " +
+    std::to_string(interactor::redoable_steps(r.redoable, redoLabels(), StrokeLabel));
+  return r.message.empty() ? text : text + " (" + r.message + ")";
+}
 
 bool isEditOf(vtkUndoSet* step, vtkSMProxy* deformation)
 {

@@ -7,11 +7,20 @@
 // next step is an edit of the dock's target, so Alt+Z and Ctrl+Z do the same thing.
 #include "edit_commands.h"
 
+#include <string>
+#include <vector>
+
 class vtkSMProxy;
 class vtkUndoSet;
 
 namespace pqHapticsUndo
 {
+
+// The label of a paint stroke's step on ParaView's undo stack (Edit > Undo Paint Stroke).
+extern const char* const StrokeLabel;
+
+// The labels of the steps on ParaView's redo stack, the next first (none without a GUI).
+std::vector<std::string> redoLabels();
 
 // Whether `step` holds an edit of `deformation`'s list.
 bool isEditOf(vtkUndoSet* step, vtkSMProxy* deformation);
@@ -25,5 +34,9 @@ bool stepThroughStack(vtkSMProxy* deformation, geoshaping::interactor::EditComma
 // can re-apply (information read from the server). Right after Load State, an undo from
 // the Edit menu or a panel button as after the dock's own commands.
 geoshaping::interactor::EditResult status(vtkSMProxy* deformation);
+
+// The dock's "Edits" line for `r`: the edits, and what its Redo restores
+// (geoshaping::interactor::redoable_steps: redoable edits and paint strokes).
+std::string editsText(const geoshaping::interactor::EditResult& r);
 
 } // namespace pqHapticsUndo

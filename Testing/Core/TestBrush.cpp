@@ -77,34 +77,64 @@ TEST(Brush, FalloffsAreOneAtTheCentreAndZeroAtTheRim)
     }
   }
   EXPECT_EQ(falloff_weight(Falloff::constant, 1.0), 1.0);
-  EXPECT_NEAR(falloff_weight(Falloff::linear, 0.25), 0.75, 1e-15);
-  EXPECT_NEAR(falloff_weight(Falloff::smooth, 0.5), 0.5, 1e-15);
+  // From the core (half the radius) to the rim, t = 2 r - 1.
+  EXPECT_NEAR(falloff_weight(Falloff::linear, 0.625), 0.75, 1e-15);
+  EXPECT_NEAR(falloff_weight(Falloff::smooth, 0.75), 0.5, 1e-15);
   EXPECT_NEAR(falloff_weight(Falloff::linear, 1.0), 0.0, 1e-15);
   EXPECT_NEAR(falloff_weight(Falloff::smooth, 1.0), 0.0, 1e-15);
   EXPECT_NEAR(falloff_weight(Falloff::gaussian, 1.0), 0.0, 1e-15);
-  // Smooth is flat at both ends; the Gaussian has sigma = radius / 3 before rescaling.
-  EXPECT_NEAR(falloff_weight(Falloff::smooth, 1e-4), 1.0, 1e-7);
-  EXPECT_NEAR(falloff_weight(Falloff::smooth, 1.0 - 1e-4), 0.0, 1e-7);
+  // Smooth is flat at both ends; the Gaussian has sigma = (rim - core) / 3 before rescaling.
+  EXPECT_NEAR(falloff_weight(Falloff::smooth, 0.5 + 0.5e-4), 1.0, 1e-7);
+  EXPECT_NEAR(falloff_weight(Falloff::smooth, 1.0 - 0.5e-4), 0.0, 1e-7);
   const double rim = std::exp(-4.5);
   EXPECT_NEAR(
-    falloff_weight(Falloff::gaussian, 1.0 / 3.0), (std::exp(-0.5) - rim) / (1 - rim), 1e-15);
+    falloff_weight(Falloff::gaussian, 0.5 + 1.0 / 6.0), (std::exp(-0.5) - rim) / (1 - rim), 1e-15);
+}
+
+TEST(Brush, EveryFalloffIsOneWithinTheCoreSoABlackStrokePaintsRigid)
+{
+  // The case: a default (Smooth) black stroke over a coarse surface left 0.022
+  // where a vertex was an eighth of a radius from the path.
+  for (Falloff f : all_falloffs)
+  {
+    for (double r : { 0.0, 0.125, 0.25, 0.4, brush_core })
+    {
+      EXPECT_EQ(falloff_weight(f, r), 1.0) << falloff_name(f) << " at " << r;
+    }
+    if (f != Falloff::constant)
+    {
+      EXPECT_LT(falloff_weight(f, brush_core + 0.05), 1.0) << falloff_name(f);
+    }
+  }
+  std::vector<float> m(4, 0.5f);
+  Reach reach;
+  reach.vertices = { 0, 1, 2, 3 };
+  reach.distances = { 0.0, 0.9, 1.5, 1.6 };
+  Dab black;
+  black.radius = 3.0;
+  black.value = 0.0;
+  apply_dab(black, Falloff::smooth, reach, m.data());
+  EXPECT_EQ(m[0], 0.0f);
+  EXPECT_EQ(m[1], 0.0f);
+  EXPECT_EQ(m[2], 0.0f); // on the core's edge
+  EXPECT_GT(m[3], 0.0f); // beyond it, the falloff
 }
 
 TEST(Brush, DabMovesEachValueTowardItsValueByStrengthTimesFalloff)
 {
   const Scene s = scene(geoshaping::testing::chain(11, 1.0));
-  // Centre on vertex 5, radius 4, linear: weights 1, .75, .5, .25 at distances 0..3.
+  // Centre on vertex 5, radius 8, linear: weights 1 in the core (distances 0..4), then
+  // .75, .5, .25 at distances 5..7.
   const auto m =
-    paint(s, { dab(5, 0, 0, 4, 1.0, 0.5) }, Falloff::linear, DistanceMode::euclidean, 0.2f);
-  const float expected[11] = { 0.2f, 0.2f, float(0.2 + 0.5 * 0.25 * 0.8),
-    float(0.2 + 0.5 * 0.5 * 0.8), float(0.2 + 0.5 * 0.75 * 0.8), float(0.2 + 0.5 * 0.8),
-    float(0.2 + 0.5 * 0.75 * 0.8), float(0.2 + 0.5 * 0.5 * 0.8), float(0.2 + 0.5 * 0.25 * 0.8),
-    0.2f, 0.2f };
+    paint(s, { dab(5, 0, 0, 8, 1.0, 0.5) }, Falloff::linear, DistanceMode::euclidean, 0.2f);
+  const float core = float(0.2 + 0.5 * 0.8);
+  const float expected[11] = { float(0.2 + 0.5 * 0.75 * 0.8), core, core, core, core, core, core,
+    core, core, core, float(0.2 + 0.5 * 0.75 * 0.8) };
   for (int i = 0; i < 11; ++i)
     EXPECT_FLOAT_EQ(m[i], expected[i]) << "vertex " << i;
   // Geodesic along a straight chain is the same distance.
   EXPECT_TRUE(bit_identical(
-    m, paint(s, { dab(5, 0, 0, 4, 1.0, 0.5) }, Falloff::linear, DistanceMode::geodesic, 0.2f)));
+    m, paint(s, { dab(5, 0, 0, 8, 1.0, 0.5) }, Falloff::linear, DistanceMode::geodesic, 0.2f)));
 }
 
 TEST(Brush, DabsApplyInOrderAndFullStrengthConstantSetsTheValue)

@@ -79,3 +79,13 @@ TEST(BrushControl, OutcomesAddUpWithTheNearestKnownDistance)
   EXPECT_EQ(total.unreached, 3u);
   EXPECT_EQ(total.nearest, 8.0);
 }
+
+TEST(BrushControl, RadiusAboutNamesNoSceneUnitsBeforeThereIsData)
+{
+  EXPECT_EQ(radius_about(5.0, "", true, false),
+    "Fits the surface once there is one to paint: 3 % of its diagonal");
+  EXPECT_EQ(radius_about(42426.4, "m", true, true), "42.4 km: 3 % of the data's diagonal");
+  EXPECT_EQ(radius_about(5.0, "m", false, true), "5 m: set for this surface (kept in the state)");
+  EXPECT_EQ(radius_about(1.5, "", true, true),
+    "1.5 scene units: 3 % of the data's diagonal; the data names no unit");
+}

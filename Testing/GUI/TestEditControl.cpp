@@ -308,8 +308,8 @@ TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)
   std::vector<double> triples = { 99.0, 0.1, 0.2 }; // earlier dabs are kept
   interactor::append_point_dabs(
     { 4, 8, 15 }, { 0.0, 1.0, 2.0 }, 2.0, 0.8, 0.5, geoshaping::Falloff::linear, triples);
-  // The rim (weight 0) is left out.
-  const std::vector<double> expected = { 99.0, 0.1, 0.2, 4.0, 0.8, 0.5, 8.0, 0.8, 0.25 };
+  // The core (half the radius) at full strength; the rim (weight 0) is left out.
+  const std::vector<double> expected = { 99.0, 0.1, 0.2, 4.0, 0.8, 0.5, 8.0, 0.8, 0.5 };
   EXPECT_EQ(triples, expected);
 
   std::vector<double> clamped;
@@ -328,4 +328,16 @@ TEST(PointDabs, TriplesOfTheVerticesUnderTheBrush)
   interactor::append_point_dabs(
     { -1 }, { 0.0 }, 1.0, 0.5, 0.5, geoshaping::Falloff::constant, none); // bad id
   EXPECT_TRUE(none.empty());
+}
+
+TEST(RedoableSteps, CountTheEditsAndTheStrokesRedoWillRestore)
+{
+  using geoshaping::interactor::redoable_steps;
+  // A stroke undone: Redo restores it, though the deformation has nothing to redo.
+  EXPECT_EQ(redoable_steps(0, { "Paint Stroke" }, "Paint Stroke"), 1);
+  // Then the pull before it: two presses of Redo restore something.
+  EXPECT_EQ(redoable_steps(1, { "Paint Stroke", "Edit Commit" }, "Paint Stroke"), 2);
+  // Another proxy's step is not the dock's to redo.
+  EXPECT_EQ(redoable_steps(0, { "Delete", "Paint Stroke" }, "Paint Stroke"), 1);
+  EXPECT_EQ(redoable_steps(-1, {}, "Paint Stroke"), 0);
 }

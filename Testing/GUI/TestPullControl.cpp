@@ -3,6 +3,7 @@
 // motion a tenth, and the constraints keep the pull on their line.
 #include "HapticsControl.h"
 #include "PullControl.h"
+#include "camera_projection.h"
 
 #include <gtest/gtest.h>
 
@@ -18,77 +19,8 @@ using Eigen::Vector3d;
 
 namespace
 {
-// A camera as VTK builds it (vtkCamera view transform, perspective or parallel
-// projection) on a width x height viewport; display depth in [0, 1].
-class CameraProjection : public ViewProjection
-{
-public:
-  CameraProjection(const CameraPose& c, double width, double height, double near, double far)
-  {
-    const Vector3d z = (c.position - c.focal_point).normalized();
-    const Vector3d x = c.view_up.cross(z).normalized();
-    const Vector3d y = z.cross(x);
-    Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
-    view.block<1, 3>(0, 0) = x.transpose();
-    view.block<1, 3>(1, 0) = y.transpose();
-    view.block<1, 3>(2, 0) = z.transpose();
-    view.block<3, 1>(0, 3) = -view.block<3, 3>(0, 0) * c.position;
-    const double aspect = width / height;
-    Eigen::Matrix4d projection = Eigen::Matrix4d::Zero();
-    if (c.parallel)
-    {
-      const double s = c.parallel_scale;
-      projection(0, 0) = 1.0 / (aspect * s);
-      projection(1, 1) = 1.0 / s;
-      projection(2, 2) = -2.0 / (far - near);
-      projection(2, 3) = -(far + near) / (far - near);
-      projection(3, 3) = 1.0;
-    }
-    else
-    {
-      const double f = 1.0 / std::tan(0.5 * c.view_angle_deg * 3.14159265358979323846 / 180.0);
-      projection(0, 0) = f / aspect;
-      projection(1, 1) = f;
-      projection(2, 2) = -(far + near) / (far - near);
-      projection(2, 3) = -2.0 * far * near / (far - near);
-      projection(3, 2) = -1.0;
-    }
-    Eigen::Matrix4d viewport = Eigen::Matrix4d::Identity();
-    viewport(0, 0) = 0.5 * width;
-    viewport(0, 3) = 0.5 * width;
-    viewport(1, 1) = 0.5 * height;
-    viewport(1, 3) = 0.5 * height;
-    viewport(2, 2) = 0.5;
-    viewport(2, 3) = 0.5;
-    toDisplay = viewport * projection * view;
-    toWorld = toDisplay.inverse();
-  }
-  Vector3d to_display(const Vector3d& world) const override
-  {
-    return (toDisplay * world.homogeneous()).hnormalized();
-  }
-  Vector3d to_world(const Vector3d& display) const override
-  {
-    return (toWorld * display.homogeneous()).hnormalized();
-  }
-  Vector2d pixel(const Vector3d& world) const { return to_display(world).head<2>(); }
-
-private:
-  Eigen::Matrix4d toDisplay, toWorld;
-};
-
-// An oblique camera on a scene of size `scale` centred at `centre`.
-CameraProjection oblique(double scale, const Vector3d& centre, bool parallel)
-{
-  CameraPose c;
-  c.focal_point = centre;
-  c.position = centre + scale * Vector3d(0.4, -1.6, 1.3);
-  c.view_up = Vector3d(0.0, 0.6, 0.8);
-  c.view_angle_deg = 30.0;
-  c.parallel = parallel;
-  c.parallel_scale = 0.6 * scale;
-  return CameraProjection(c, 800, 600, 0.1 * scale, 10.0 * scale);
-}
+using geoshaping::interactor::test_camera::CameraProjection;
+using geoshaping::interactor::test_camera::oblique;
 
 PullControl pressAt(const CameraProjection& view, const Vector3d& grasp, const Vector3d& normal,
   PullConstraint constraint = PullConstraint::view_plane)
@@ -392,6 +324,7 @@ TEST(PullControl, APressStartsAFreshPullUnderTheConstraintInForce)
   const CameraProjection view = oblique(1.0, Vector3d::Zero(), false);
   PullControl pull = pressAt(view, Vector3d::Zero(), Vector3d::UnitZ());
   pull.move(pull.target() + Vector2d(30, 30), false);
+  pull.choose(PullConstraint::vertical); // the dock's choice mid-pull, as pqHapticsMouse
   pull.constrain(PullConstraint::vertical, view, Vector3d::UnitZ());
   pull.move(pull.target() + Vector2d(0, 30), false);
   const Vector3d grasp(0.1, 0.1, 0.0);
@@ -403,4 +336,33 @@ TEST(PullControl, APressStartsAFreshPullUnderTheConstraintInForce)
   EXPECT_EQ(d.x(), 0.0);
   EXPECT_EQ(d.y(), 0.0);
   EXPECT_GT(d.z(), 0.0);
+}
+
+TEST(PullControl, KeyedConstraintLastsOneDragAndTheChosenOneStays)
+{
+  const CameraProjection view = oblique(1.0, Vector3d::Zero(), false);
+  const Vector3d grasp(0.1, 0.2, 0.05);
+  PullControl pull;
+  pull.choose(PullConstraint::normal); // the dock's choice, between pulls: at once
+  EXPECT_EQ(pull.constraint(), PullConstraint::normal);
+  pull.press(view.pixel(grasp), grasp, Vector3d::UnitZ());
+  EXPECT_EQ(pull.constraint(), PullConstraint::normal);
+  pull.constrain(PullConstraint::vertical, view, Vector3d::UnitZ()); // a key, mid-pull
+  EXPECT_EQ(pull.constraint(), PullConstraint::vertical);
+  EXPECT_EQ(pull.chosen(), PullConstraint::normal);
+  EXPECT_EQ(pull_mode_note(pull.constraint(), pull.chosen()),
+    "This drag: vertical only (z) (by key); the release goes back to along the surface normal.");
+  EXPECT_TRUE(pull.release()); // back to the chosen one
+  EXPECT_EQ(pull.constraint(), PullConstraint::normal);
+  EXPECT_EQ(pull_mode_note(pull.constraint(), pull.chosen()),
+    "Every pull: along the surface normal, until changed here.");
+  pull.press(view.pixel(grasp), grasp, Vector3d::UnitZ());
+  EXPECT_EQ(pull.constraint(), PullConstraint::normal);
+  EXPECT_FALSE(pull.release()); // no key: nothing to go back from
+  // Chosen mid-pull: it holds for this pull too, and after it.
+  pull.press(view.pixel(grasp), grasp, Vector3d::UnitZ());
+  pull.choose(PullConstraint::vertical);
+  pull.constrain(PullConstraint::vertical, view, Vector3d::UnitZ());
+  EXPECT_FALSE(pull.release());
+  EXPECT_EQ(pull.constraint(), PullConstraint::vertical);
 }

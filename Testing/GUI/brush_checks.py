@@ -36,16 +36,20 @@ SCRIPTS = {
                   "snapshot redo1; redo; snapshot redo2; editundo; snapshot editundo; "
                   "editredo; snapshot editredo",
     # Hovering with Ctrl held (the next press would paint): the brush cursor shows where a
-    # dab would land; not without Ctrl, off the surface, or once the mouse left the view.
+    # dab would land; not without Ctrl, off the surface, once Ctrl is released (with the
+    # keyboard focus on the dock, before the mouse moves) or once the mouse left the view.
     "brush_hover": "hover 0.45 0.5 ctrl; snapshot hover; hover 0.55 0.42 ctrl; snapshot hover2; "
                    "hover 0.45 0.5; snapshot noctrl; hover 0.02 0.02 ctrl; snapshot off; "
-                   "hover 0.5 0.5 ctrl; snapshot back; leave; snapshot left",
+                   "hover 0.5 0.5 ctrl; snapshot back; ctrlup; snapshot ctrlup; "
+                   "hover 0.5 0.5 ctrl; leave; snapshot left",
     # A free pull, then Z typed mid-drag (through Qt, as a user's key): vertical from there
-    # on; Z again frees it; seen from the south-west, so the vertical is not end-on.
+    # on; Z again frees it; Z once more, then the release: the next drag is free again (a
+    # key lasts one drag); seen from the south-west, so the vertical is not end-on.
     "pull_keys": "press 0.5 0.5; move 0.53 0.51; move 0.56 0.52; snapshot free; key Z; "
                  "snapshot switched; move 0.58 0.58; move 0.6 0.65; snapshot vertical; key Z; "
-                 "snapshot freed; move 0.55 0.7; snapshot free2; release; wait; "
-                 "snapshot released",
+                 "snapshot freed; move 0.55 0.7; snapshot free2; key Z; snapshot vertical2; "
+                 "release; wait; snapshot released; press 0.45 0.45; move 0.5 0.47; "
+                 "snapshot next; release; wait",
 }
 
 
@@ -203,6 +207,10 @@ def check_undo(out):
             name, texts["edit_history"], (rows[:, 6] != INITIAL).sum(),
             "pulled" if np.array_equal(rows[:, 3:6], pulled) else
             "rest" if np.array_equal(rows[:, 3:6], rest) else "other", texts["label_Edits"]))
+    # The dock counts what its Redo will restore: the stroke, then the pull too.
+    for name, redoable in (("undo1", 1), ("undo2", 2), ("redo1", 1), ("redo2", 0)):
+        label = steps[name][0]["label_Edits"]
+        assert ("redoable %d" % redoable) in label, (name, label)
     t, rows = steps["undo1"]
     assert np.all(rows[:, 6] == INITIAL), "the first Undo did not take the stroke off"
     assert np.array_equal(rows[:, 3:6], pulled) and t["edit_history"] == "1", "the first Undo undid the pull"
@@ -225,11 +233,12 @@ def check_hover(out):
     radius in world units, a cage; hidden without Ctrl, off the surface, out of the view.
     Hovering paints nothing."""
     steps = {name: snapshot(out, name)[0]
-             for name in ("hover", "hover2", "noctrl", "off", "back", "left")}
+             for name in ("hover", "hover2", "noctrl", "off", "back", "ctrlup", "left")}
     kinds = [kind for kind, p in picks(out)]
     at = [p for kind, p in picks(out)]
-    # Picks on the surface: hover, hover2, noctrl, back (the corner of the view is off it).
-    assert kinds == ["hover"] * 4, kinds
+    # Picks on the surface: hover, hover2, noctrl, back, and before leaving (the corner of
+    # the view is off it).
+    assert kinds == ["hover"] * 5, kinds
     for name, texts in steps.items():
         print("%-7s cursors %s %s" % (name, texts["cursors"], texts.get("cursor_0", "")))
     radius = float(steps["hover"]["brush_radius"])
@@ -241,7 +250,7 @@ def check_hover(out):
               % (name, np.linalg.norm(np.array(c[:3]) - pick), c[3], radius, c[4]))
         assert np.linalg.norm(np.array(c[:3]) - pick) <= 1e-6 * radius, (name, c, pick)
         assert abs(c[3] - radius) <= 1e-9 * radius and c[4] == 1, (name, c, radius)
-    for name in ("noctrl", "off", "left"):
+    for name in ("noctrl", "off", "ctrlup", "left"):
         assert steps[name]["cursors"] == "0", (name, steps[name])
     assert all(t["dab_values"] == "0" and t["point_dab_values"] == "0" for t in steps.values())
     cage = changed_pixels(out + "-hover.png", out + "-noctrl.png")
@@ -283,6 +292,17 @@ def check_pull_keys(out):
         assert np.linalg.norm(moved - d[name]) <= 1e-6 * np.linalg.norm(d[name]), (name, moved)
     released, _ = steps["released"]
     assert released["edit_history"] == "1" and released["GraspPointId"] == "-1", released
+    # The key's vertical lasted its drag: the dock shows the chosen mode again, and the next
+    # drag follows the cursor (x and y move).
+    keyed, _ = snapshot(out, "vertical2")
+    nxt, _ = snapshot(out, "next")
+    print("Z before the release: Pull row %s, %r; after it: %s, %r; next drag %s" % (
+        keyed["pull_constraint"], keyed["label_PullMode"], released["pull_constraint"],
+        released["label_PullMode"], vector(nxt, "Displacement")))
+    assert keyed["pull_constraint"] == "1" and keyed["label_PullMode"].startswith("This drag"), keyed
+    assert released["pull_constraint"] == "0", "the key's mode outlived its drag"
+    assert released["label_PullMode"].startswith("Every pull: follow the cursor"), released
+    assert np.linalg.norm(vector(nxt, "Displacement")[:2]) > 1e-3 * size, "the next drag is not free"
     print("keyed pull: dz %.1f m after Z, dx = dy = 0; at the keys |jump| = %g and %g m" % (
         vertical[2] - switched[2], np.linalg.norm(switched - free),
         np.linalg.norm(d["freed"] - vertical)))

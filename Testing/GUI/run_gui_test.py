@@ -320,10 +320,13 @@ def main():
         (hands.run_paint if mode == "pvserver_paint" else hands.run_stylus)(out, read_results)
         return
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
-    scripted = mode.startswith("brush_") or mode == "pull_keys"  # brush_checks.SCRIPTS
+    scripted = None  # a module with the mode's script: prepare(), check()
+    if mode.startswith("dem_"):
+        import dem_checks as scripted
+    elif mode.startswith("brush_") or mode == "pull_keys":  # brush_checks.SCRIPTS
+        import brush_checks as scripted
     if scripted:
-        import brush_checks
-        brush_checks.prepare(mode, out, env)
+        scripted.prepare(mode, out, env)
     if mode == "touch":
         env["GEOSHAPING_HAPTICS_REPLAY"] = out + ".trace"
         env["GEOSHAPING_HAPTICS_STALL"] = "%g,%g" % TOUCH_STALL
@@ -356,7 +359,7 @@ def main():
     assert results["dock_visible"] == "1" and results["dock_title"] == "Haptics", results
     assert int(results["frames"]) >= 5, "too few interactor frames"
     if scripted:
-        brush_checks.check(mode, out)
+        scripted.check(mode, out)
         print("GUI %s test passed; screenshots:" % mode, out + "-*.png")
         return
     if mode == "openhaptics":

@@ -113,3 +113,14 @@ load(ns=globals())
 LoadState(state)  # noqa: F405
 loaded = [s for s in GetSources().values() if s.GetXMLName() == "MalleabilityPaint"]  # noqa: F405
 check(len(loaded) == 1 and loaded[0].BrushRadius == 40000.0, "LoadState gives BrushRadius back")
+
+# Sources > GeoShaping lists the plugin's sources and filters (the Jacksboro sample too),
+# as ParaView builds its menus from the proxies' ShowInMenu hints.
+manager = servermanager.ProxyManager()  # noqa: F405
+for group, name in (("sources", "FaultStepHorizon"), ("sources", "LayeredFaultScene"),
+                    ("sources", "JacksboroFaultDEM"), ("filters", "DEMSurface"),
+                    ("filters", "MalleabilityPaint"), ("filters", "ChainMailDeformation")):
+    hints = manager.GetPrototypeProxy(group, name).GetHints()
+    menu = hints.FindNestedElementByName("ShowInMenu") if hints else None
+    check(menu is not None and menu.GetAttribute("category") == "GeoShaping",
+          "%s is under %s > GeoShaping" % (name, "Sources" if group == "sources" else "Filters"))

@@ -5,7 +5,9 @@ GetProperty returns None: a typo or an undeclared property (LastGraspPointId onc
 unnoticed. This scans the plugin's C++ and Python (ParaViewPlugin/) for the names passed
 to vtkSMPropertyHelper(proxy, "Name") and GetProperty("Name") and checks each on the
 proxies they are used on: a display (`repr`, `display`) -> the ChainMailDeformation's
-representation in a render view; any other proxy -> one of the plugin's own proxies."""
+representation in a render view; ParaView's picking helper (`helper`, the mouse's pick:
+pqHapticsDisplay.cxx) -> a PickingHelper; any other proxy -> one of the plugin's own
+proxies."""
 import glob
 import os
 import re
@@ -37,17 +39,19 @@ pins = MalleabilityPaint(Input=plane, PaintPins=1)  # noqa: F405
 view = CreateRenderView()
 display = Show(chain, view)
 filters = [chain, paint, pins]
+picking = servermanager.ProxyManager().NewProxy("misc", "PickingHelper")  # noqa: F405
 
 
 def declared(proxies, name):
-    return any(p.SMProxy.GetProperty(name) is not None for p in proxies)
+    return any(getattr(p, "SMProxy", p).GetProperty(name) is not None for p in proxies)
 
 
 for where, expression, name in uses:
     on_display = re.search(r"\b(repr|display)\b", expression) is not None
-    proxies = [display] if on_display else filters
-    check(declared(proxies, name), "%s: %s on %s is declared" %
-          (where, name, "the display" if on_display else "a GeoShaping proxy"))
+    on_helper = re.search(r"\bhelper\b", expression) is not None
+    proxies = [display] if on_display else [picking] if on_helper else filters
+    on = "the display" if on_display else "the PickingHelper" if on_helper else "a GeoShaping proxy"
+    check(declared(proxies, name), "%s: %s on %s is declared" % (where, name, on))
 
 # The one that was missing, and what it reads: -1 until the filter has grasped.
 chain.UpdatePropertyInformation()

@@ -1,5 +1,7 @@
 #include "pqHapticsTestScript.h"
 
+#include "pqHapticsTestDrawn.h"
+
 #include "pqHapticsDockPanel.h"
 #include "pqHapticsProxies.h"
 
@@ -14,9 +16,12 @@
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
 #include <vtkAlgorithm.h>
+#include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkMapper.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
 #include <vtkProperty.h>
@@ -33,8 +38,10 @@
 #include <QVTKOpenGLWindow.h>
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QPixmap>
 #include <QPushButton>
@@ -88,11 +95,22 @@ bool pqHapticsTestScript::step(std::chrono::steady_clock::time_point since)
   {
     this->key(words[1]);
   }
+  else if (verb == "ctrlup")
+  {
+    this->key("ctrlup");
+  }
   else if (verb == "swatch" && words.size() > 1)
   {
     if (auto* swatch = this->Dock->findChild<QToolButton*>("Swatch" + words[1]))
     {
       swatch->click();
+    }
+  }
+  else if (verb == "exaggeration" && words.size() > 1)
+  {
+    if (auto* spin = this->Dock->findChild<QDoubleSpinBox*>("VerticalExaggeration"))
+    {
+      spin->setValue(words[1].toDouble());
     }
   }
   else if (verb == "radius" && words.size() > 1)
@@ -155,16 +173,30 @@ void pqHapticsTestScript::mouse(const QStringList& words)
   interactor->SetEventInformation(display[0], display[1], ctrl ? 1 : 0, 0);
   interactor->InvokeEvent(
     words[0] == "press" ? vtkCommand::LeftButtonPressEvent : vtkCommand::MouseMoveEvent);
-  // The point the mouse hand took (the same pick, in the same render, as pqHapticsMouse).
+  // The point the mouse hand took (the same pick, in the same render, as pqHapticsMouse),
+  // then the point drawn there as VTK's own picker finds it on the geometry the client
+  // draws (through each actor's matrix: a display Scale included), or nan.
   double p[3], normal[3];
   const pqScopedUndoExclude pick; // the test's pick is no step of the undo stack
   QFile file(this->Output + ".picks");
   if (proxy->ConvertDisplayToPointOnSurface(display, p, normal) &&
       file.open(QIODevice::Append | QIODevice::Text))
   {
-    QTextStream(&file) << words[0] << " " << QString::number(p[0], 'g', 17) << " "
-                       << QString::number(p[1], 'g', 17) << " " << QString::number(p[2], 'g', 17)
-                       << "\n";
+    QTextStream line(&file);
+    line << words[0];
+    for (double v : p)
+    {
+      line << " " << QString::number(v, 'g', 17);
+    }
+    vtkNew<vtkCellPicker> picker;
+    picker->SetTolerance(0.0);
+    const bool drawn = picker->Pick(display[0], display[1], 0.0, proxy->GetRenderer()) != 0;
+    const double* q = picker->GetPickPosition();
+    for (int k = 0; k < 3; ++k)
+    {
+      line << " " << (drawn ? QString::number(q[k], 'g', 17) : QString("nan"));
+    }
+    line << "\n";
   }
 }
 
@@ -176,6 +208,15 @@ void pqHapticsTestScript::key(const QString& key)
   pqView* view = pqActiveObjects::instance().activeView();
   QWidget* widget = view ? view->widget() : nullptr;
   const QKeySequence sequence(key);
+  if (key == "ctrlup")
+  {
+    // Ctrl let go while the keyboard focus is outside the view (hovering does not give it
+    // the focus): the key goes to the focused widget, here the dock, with the modifiers
+    // as X11 reports them, Ctrl still on.
+    QKeyEvent release(QEvent::KeyRelease, Qt::Key_Control, Qt::ControlModifier);
+    QCoreApplication::sendEvent(this->Dock, &release);
+    return;
+  }
   if (!widget || sequence.count() != 1)
   {
     return;
@@ -274,6 +315,7 @@ void pqHapticsTestScript::snapshot(const QString& name)
           << QString::number(d[1], 'g', 17) << " " << QString::number(d[2], 'g', 17) << "\n";
       out << "GraspPointId = " << vtkSMPropertyHelper(proxy, "GraspPointId").GetAsIdType() << "\n";
     }
+    pqHapticsWriteDrawnGrasp(out, deformation, shown);
     // The cursors shown: the view's visible sphere actors other than the data.
     int cursors = 0;
     vtkRenderer* renderer = view ? view->getRenderViewProxy()->GetRenderer() : nullptr;
@@ -294,7 +336,8 @@ void pqHapticsTestScript::snapshot(const QString& name)
         out << "cursor_" << cursors++ << " = " << QString::number(c[0], 'g', 17) << " "
             << QString::number(c[1], 'g', 17) << " " << QString::number(c[2], 'g', 17) << " "
             << QString::number(sphere->GetRadius(), 'g', 17) << " "
-            << actor->GetProperty()->GetRepresentation() << "\n";
+            << actor->GetProperty()->GetRepresentation() << " "
+            << QString::number(actor->GetMatrix()->GetElement(2, 2), 'g', 17) << "\n";
       }
     }
     out << "cursors = " << cursors << "\n";
@@ -302,7 +345,8 @@ void pqHapticsTestScript::snapshot(const QString& name)
     {
       out << "pull_constraint = " << pull->currentData().toInt() << "\n";
     }
-    for (const char* label : { "BrushRadius", "BrushRadiusAbout", "BrushNote", "Edits" })
+    for (const char* label :
+      { "BrushRadius", "BrushRadiusAbout", "BrushNote", "Edits", "PullMode" })
     {
       out << "label_" << label << " = " << text(this->Dock, label) << "\n";
     }

@@ -4,14 +4,17 @@
 // trace it runs beside the replayed stylus (until, dump). Steps separated by ';', one
 // per poll of the hook, positions as fractions of the render view (x right, y up):
 //   press X Y [ctrl]   left button down (with Ctrl: paint), the pick written to <out>.picks
+//                      (the verb, ParaView's point on the surface, VTK's picker's point)
 //   move X Y           the mouse moves there (button held), the pick written too
 //   release            left button up
 //   hover X Y [ctrl]   the mouse moves there, no button (with Ctrl held), the pick written
 //   leave              the mouse leaves the view
 //   key K              the key K pressed and released on the render view's window, as the
 //                      window system delivers it (Qt's shortcuts first, then the view)
+//   ctrlup             Ctrl released while the keyboard focus is on the dock, not the view
 //   swatch I           clicks the dock's malleability swatch I (0 ... 10)
 //   radius R           types R into the dock's brush radius
+//   exaggeration S     types S into the dock's vertical exaggeration
 //   undo | redo        clicks the dock's Undo / Redo
 //   editundo | editredo  Edit > Undo / Redo (ParaView's undo stack, Ctrl+Z / Ctrl+Y)
 //   until T            waits until T s have passed since the dock started (`since` of
@@ -26,7 +29,11 @@
 //   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
 //                      brush, the paint lists' sizes, the pull (Displacement, grasp,
-//                      the dock's Pull row), the shown cursors (centre, radius), the
+//                      the dock's Pull row), the shown cursors (centre, radius, representation,
+//                      stretch along z), the
+//                      deformation's display Scale and its obstacles', its grasped
+//                      vertex's pixel as drawn
+//                      and the mouse's pixel, the
 //                      dock's texts) and <out>-NAME.png
 //                      (the render view)
 //   wait               nothing this poll

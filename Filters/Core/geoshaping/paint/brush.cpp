@@ -53,6 +53,9 @@ double falloff_weight(Falloff f, double r)
     r = 0.0;
   if (r > 1.0)
     return 0.0;
+  if (r <= brush_core)
+    return 1.0;
+  r = (r - brush_core) / (1.0 - brush_core);
   switch (f)
   {
     case Falloff::constant:

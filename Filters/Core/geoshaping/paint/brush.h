@@ -28,15 +28,19 @@ inline double brush_edge_length(const double* xyz, index_t a, index_t b)
   return brush_distance(xyz, b, Eigen::Vector3d(p[0], p[1], p[2]));
 }
 
-// Weight of a dab at normalised distance r = distance / radius, 1 at the centre and 0
-// at and beyond r = 1 (except `constant`, which is 1 up to and including r = 1):
+// Weight of a dab at normalised distance r = distance / radius: 1 within the brush's
+// core, r <= brush_core, so that a dab of strength 1 paints its value itself there (a
+// black stroke makes what its core covers rigid, 0, whatever the falloff); from the core
+// to the rim the falloff's shape over t = (r - brush_core) / (1 - brush_core), 0 at and
+// beyond r = 1 (except `constant`, which is 1 up to and including r = 1):
 //
 //   constant  1
-//   linear    1 - r
-//   smooth    1 - (3 r^2 - 2 r^3)                   (smoothstep, flat at both ends)
-//   gaussian  (exp(-r^2 / 2s^2) - exp(-1 / 2s^2)) / (1 - exp(-1 / 2s^2)),  s = 1/3
-//             (a Gaussian of sigma radius/3, shifted and rescaled so it reaches 0 at
-//             the rim instead of being cut off there)
+//   linear    1 - t
+//   smooth    1 - (3 t^2 - 2 t^3)                   (smoothstep, flat at both ends)
+//   gaussian  (exp(-t^2 / 2s^2) - exp(-1 / 2s^2)) / (1 - exp(-1 / 2s^2)),  s = 1/3
+//             (a Gaussian of sigma (rim - core)/3, shifted and rescaled so it reaches 0
+//             at the rim instead of being cut off there)
+constexpr double brush_core = 0.5;
 enum class Falloff
 {
   constant,

@@ -1,0 +1,192 @@
+#include "pqHapticsDisplay.h"
+
+#include "pqHapticsProxies.h"
+#include "undo_step.h"
+
+#include <pqApplicationCore.h>
+#include <pqDataRepresentation.h>
+#include <pqOutputPort.h>
+#include <pqPipelineSource.h>
+#include <pqRenderView.h>
+#include <pqServerManagerModel.h>
+#include <pqUndoStack.h>
+
+#include <vtkCamera.h>
+#include <vtkCellPicker.h>
+#include <vtkCollection.h>
+#include <vtkNew.h>
+#include <vtkRenderer.h>
+#include <vtkSMPropertyHelper.h>
+#include <vtkSMRenderViewProxy.h>
+#include <vtkSMSessionProxyManager.h>
+#include <vtkSMSourceProxy.h>
+#include <vtkSmartPointer.h>
+
+namespace interactor = geoshaping::interactor;
+
+interactor::DisplayTransform pqHapticsDisplayTransform(vtkSMProxy* repr)
+{
+  if (!repr || !repr->GetProperty("Position") || !repr->GetProperty("Scale"))
+  {
+    return interactor::DisplayTransform();
+  }
+  double position[3], orientation[3], origin[3], scale[3];
+  vtkSMPropertyHelper(repr, "Position").Get(position, 3);
+  vtkSMPropertyHelper(repr, "Orientation").Get(orientation, 3);
+  vtkSMPropertyHelper(repr, "Origin").Get(origin, 3);
+  vtkSMPropertyHelper(repr, "Scale").Get(scale, 3);
+  return interactor::DisplayTransform::of_prop(position, orientation, origin, scale);
+}
+
+namespace
+{
+Eigen::Vector3d displayToWorld(vtkRenderer* renderer, double x, double y, double depth)
+{
+  renderer->SetDisplayPoint(x, y, depth);
+  renderer->DisplayToWorld();
+  const double* w = renderer->GetWorldPoint();
+  return Eigen::Vector3d(w[0], w[1], w[2]) / w[3];
+}
+
+// The geometry the client draws itself, picked by VTK (which applies each actor's
+// matrix): on a distributed server no process may have met the ray with the selected cell
+// (ParaView 5.11 then answers a zero normal for every process's cell but the first,
+// docs/mpi.md); a server that renders remotely delivers no geometry: no point then.
+bool clientPick(vtkRenderer* renderer, const int display[2], double p[3], double n[3])
+{
+  vtkNew<vtkCellPicker> picker;
+  picker->SetTolerance(0.0);
+  if (!picker->Pick(display[0], display[1], 0.0, renderer))
+  {
+    return false;
+  }
+  picker->GetPickPosition(p);
+  picker->GetPickNormal(n);
+  return true;
+}
+}
+
+bool pqHapticsPickSurface(
+  vtkSMRenderViewProxy* view, const int display[2], Eigen::Vector3d& world, Eigen::Vector3d& normal)
+{
+  vtkRenderer* renderer = view ? view->GetRenderer() : nullptr;
+  if (!renderer)
+  {
+    return false;
+  }
+  // The pick makes ParaView's selection proxies, whose changes are no undo step.
+  const geoshaping::undo::Exclude pick;
+  int region[4] = { display[0], display[1], display[0], display[1] };
+  vtkNew<vtkCollection> representations;
+  vtkNew<vtkCollection> sources;
+  if (!view->SelectSurfaceCells(region, representations, sources, false) ||
+      representations->GetNumberOfItems() == 0 || sources->GetNumberOfItems() == 0)
+  {
+    return false;
+  }
+  auto* repr = vtkSMProxy::SafeDownCast(representations->GetItemAsObject(0));
+  auto* selection = vtkSMSourceProxy::SafeDownCast(sources->GetItemAsObject(0));
+  const interactor::DisplayTransform shown = pqHapticsDisplayTransform(repr);
+  if (!repr || !selection || !shown.invertible())
+  {
+    return false;
+  }
+  const Eigen::Vector3d nearEnd =
+    shown.to_data(displayToWorld(renderer, display[0], display[1], 0.0));
+  const Eigen::Vector3d farEnd =
+    shown.to_data(displayToWorld(renderer, display[0], display[1], 1.0));
+  vtkSmartPointer<vtkSMProxy> helper;
+  helper.TakeReference(view->GetSessionProxyManager()->NewProxy("misc", "PickingHelper"));
+  if (!helper)
+  {
+    return false;
+  }
+  vtkSMPropertyHelper(helper, "Input").Set(vtkSMPropertyHelper(repr, "Input").GetAsProxy(0));
+  vtkSMPropertyHelper(helper, "Selection").Set(selection);
+  vtkSMPropertyHelper(helper, "PointA").Set(nearEnd.data(), 3);
+  vtkSMPropertyHelper(helper, "PointB").Set(farEnd.data(), 3);
+  vtkSMPropertyHelper(helper, "SnapOnMeshPoint").Set(0);
+  helper->UpdateVTKObjects();
+  helper->UpdateProperty("Update", 1);
+  double p[3], n[3];
+  vtkSMPropertyHelper(helper, "Intersection").UpdateValueFromServer();
+  vtkSMPropertyHelper(helper, "Intersection").Get(p, 3);
+  vtkSMPropertyHelper(helper, "IntersectionNormal").UpdateValueFromServer();
+  vtkSMPropertyHelper(helper, "IntersectionNormal").Get(n, 3);
+  double towardViewer[3];
+  renderer->GetActiveCamera()->GetViewPlaneNormal(towardViewer);
+  const Eigen::Vector3d toward(towardViewer[0], towardViewer[1], towardViewer[2]);
+  if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
+  {
+    if (!clientPick(renderer, display, p, n))
+    {
+      return false;
+    }
+    world = Eigen::Vector3d(p[0], p[1], p[2]);
+    normal = Eigen::Vector3d(n[0], n[1], n[2]);
+    normal = normal.dot(toward) < 0.0 ? Eigen::Vector3d(-normal) : normal;
+  }
+  else
+  {
+    world = shown.to_world(Eigen::Vector3d(p[0], p[1], p[2]));
+    normal = shown.normal_to_world(Eigen::Vector3d(n[0], n[1], n[2]), toward);
+  }
+  return world.allFinite();
+}
+
+std::vector<vtkSMProxy*> pqHapticsProxies::shapedRepresentations() const
+{
+  std::vector<vtkSMProxy*> shaped;
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (vtkSMProxy* repr = this->representation(this->Deformation))
+  {
+    shaped.push_back(repr);
+  }
+  if (!proxy || !proxy->GetProperty("Obstacles") || !this->View)
+  {
+    return shaped;
+  }
+  auto* model = pqApplicationCore::instance()->getServerManagerModel();
+  vtkSMPropertyHelper obstacles(proxy, "Obstacles");
+  for (unsigned int i = 0; i < obstacles.GetNumberOfElements(); ++i)
+  {
+    auto* source = model->findItem<pqPipelineSource*>(obstacles.GetAsProxy(i));
+    pqOutputPort* port = source ? source->getOutputPort(obstacles.GetOutputPort(i)) : nullptr;
+    pqDataRepresentation* repr = port ? port->getRepresentation(this->View) : nullptr;
+    if (repr)
+    {
+      shaped.push_back(repr->getProxy());
+    }
+  }
+  return shaped;
+}
+
+double pqHapticsProxies::verticalExaggeration() const
+{
+  vtkSMProxy* repr = this->representation(this->Deformation);
+  double scale[3] = { 1.0, 1.0, 1.0 };
+  if (repr && repr->GetProperty("Scale"))
+  {
+    vtkSMPropertyHelper(repr, "Scale").Get(scale, 3);
+  }
+  return interactor::exaggeration_of(scale);
+}
+
+void pqHapticsProxies::setVerticalExaggeration(double s)
+{
+  const Eigen::Vector3d scale = interactor::exaggeration_scale(s);
+  BEGIN_UNDO_SET(QString("Vertical Exaggeration"));
+  for (vtkSMProxy* repr : this->shapedRepresentations())
+  {
+    if (repr->GetProperty("Scale"))
+    {
+      vtkSMPropertyHelper(repr, "Scale").Set(scale.data(), 3);
+      repr->UpdateVTKObjects();
+    }
+  }
+  END_UNDO_SET();
+  if (this->View)
+  {
+    this->View->render();
+  }
+}
