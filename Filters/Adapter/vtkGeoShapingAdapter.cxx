@@ -131,23 +131,13 @@ geoshaping::Adjacency vtkGeoShapingAdapter::BuildAdjacency(vtkDataSet* input, vt
   return adjacency;
 }
 
-vtkIdType vtkGeoShapingAdapter::PointsAsDouble(
-  vtkPoints* points, std::vector<double>& xyz, vtkIdType& firstBad)
+namespace
 {
-  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
-  xyz.resize(std::size_t(3 * n));
+// The number of non-finite coordinates of n points, firstBad the first point with one.
+vtkIdType CountNonFinite(const double* xyz, vtkIdType n, vtkIdType& firstBad)
+{
   vtkIdType bad = 0;
   firstBad = -1;
-  if (n == 0)
-    return 0;
-  vtkDataArray* data = points->GetData();
-  if (data->GetNumberOfComponents() != 3 ||
-      !vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
-        data, PointsWorker(), xyz.data()))
-  {
-    for (vtkIdType i = 0; i < n; ++i)
-      points->GetPoint(i, xyz.data() + 3 * i);
-  }
   for (vtkIdType i = 0; i < n; ++i)
   {
     const int finite =
@@ -159,6 +149,37 @@ vtkIdType vtkGeoShapingAdapter::PointsAsDouble(
     }
   }
   return bad;
+}
+} // namespace
+
+vtkIdType vtkGeoShapingAdapter::PointsAsDouble(
+  vtkPoints* points, std::vector<double>& xyz, vtkIdType& firstBad)
+{
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  xyz.resize(std::size_t(3 * n));
+  if (n > 0 && (points->GetData()->GetNumberOfComponents() != 3 ||
+                 !vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
+                   points->GetData(), PointsWorker(), xyz.data())))
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+      points->GetPoint(i, xyz.data() + 3 * i);
+  }
+  return CountNonFinite(xyz.data(), n, firstBad);
+}
+
+const double* vtkGeoShapingAdapter::PointsView(
+  vtkPoints* points, std::vector<double>& storage, vtkIdType& bad, vtkIdType& firstBad)
+{
+  auto* doubles = points ? vtkDoubleArray::FastDownCast(points->GetData()) : nullptr;
+  if (!doubles || doubles->GetNumberOfComponents() != 3)
+  {
+    bad = PointsAsDouble(points, storage, firstBad);
+    return storage.data();
+  }
+  storage.clear();
+  const double* xyz = doubles->GetPointer(0);
+  bad = CountNonFinite(xyz, doubles->GetNumberOfTuples(), firstBad);
+  return xyz;
 }
 
 vtkSmartPointer<vtkPoints> vtkGeoShapingAdapter::MakePoints(const std::vector<double>& xyz)
