@@ -1,10 +1,12 @@
 #include "vtkGeoShapingAdapter.h"
 
+#include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellIterator.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -23,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 using geoshaping::CellKind;
 
@@ -62,65 +65,121 @@ CellKind vtkGeoShapingAdapter::CellKindOf(int type)
   }
 }
 
+namespace
+{
+// Visits the cells of one cell array through its own offsets and connectivity (32- or
+// 64-bit): visit(kind, ids, count) with no copy and no virtual call per cell.
+template<class Visit>
+struct CellArrayVisitor
+{
+  template<class State>
+  void operator()(State& state, CellKind kind, const Visit& visit) const
+  {
+    const auto* offsets = state.GetOffsets()->GetPointer(0);
+    const auto* ids = state.GetConnectivity()->GetPointer(0);
+    const vtkIdType cells = state.GetNumberOfCells();
+    for (vtkIdType c = 0; c < cells; ++c)
+      visit(kind, ids + offsets[c], std::int64_t(offsets[c + 1] - offsets[c]));
+  }
+};
+
+// out = points as doubles, through the array's own value type.
+struct PointsWorker
+{
+  template<class Array>
+  void operator()(Array* array, double* out) const
+  {
+    const auto values = vtk::DataArrayValueRange<3>(array);
+    std::copy(values.begin(), values.end(), out);
+  }
+};
+} // namespace
+
 geoshaping::Adjacency vtkGeoShapingAdapter::BuildAdjacency(vtkDataSet* input, vtkIdType& skipped)
 {
-  skipped = 0;
-  geoshaping::AdjacencyBuilder builder(geoshaping::index_t(input->GetNumberOfPoints()));
-  std::vector<std::int64_t> ids;
-  auto add = [&](int type, vtkIdType npts, const vtkIdType* pts)
-  {
-    ids.assign(pts, pts + npts);
-    if (!builder.add_cell(CellKindOf(type), ids.data(), npts))
-      ++skipped;
-  };
+  const auto n = geoshaping::index_t(input->GetNumberOfPoints());
+  std::int64_t refused = 0;
+  geoshaping::Adjacency adjacency;
   if (auto* pd = vtkPolyData::SafeDownCast(input))
   {
-    // Walk the four cell arrays directly: no per-cell virtual dispatch on large surfaces.
-    const int types[4] = { VTK_POLY_VERTEX, VTK_POLY_LINE, VTK_POLYGON, VTK_TRIANGLE_STRIP };
-    vtkCellArray* arrays[4] = { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() };
-    for (int a = 0; a < 4; ++a)
+    // The four cell arrays walked directly: no per-cell dispatch on large surfaces.
+    const auto cells = [pd](const auto& visit)
     {
-      if (!arrays[a])
-        continue;
-      vtkIdType npts;
-      const vtkIdType* pts;
-      for (vtkIdType c = 0; c < arrays[a]->GetNumberOfCells(); ++c)
-      {
-        arrays[a]->GetCellAtId(c, npts, pts);
-        add(types[a], npts, pts);
-      }
-    }
-    return builder.build();
+      const CellKind kinds[4] = { CellKind::poly_vertex, CellKind::poly_line, CellKind::polygon,
+        CellKind::triangle_strip };
+      vtkCellArray* arrays[4] = { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() };
+      for (int a = 0; a < 4; ++a)
+        if (arrays[a])
+          arrays[a]->Visit(CellArrayVisitor<std::decay_t<decltype(visit)>>(), kinds[a], visit);
+    };
+    adjacency = geoshaping::adjacency_of_cells(n, cells, &refused);
   }
-  vtkSmartPointer<vtkCellIterator> it = vtk::TakeSmartPointer(input->NewCellIterator());
-  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  else
   {
-    vtkIdList* cellIds = it->GetPointIds();
-    add(it->GetCellType(), cellIds->GetNumberOfIds(), cellIds->GetPointer(0));
+    const auto cells = [input](const auto& visit)
+    {
+      vtkSmartPointer<vtkCellIterator> it = vtk::TakeSmartPointer(input->NewCellIterator());
+      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+      {
+        vtkIdList* ids = it->GetPointIds();
+        visit(CellKindOf(it->GetCellType()), ids->GetPointer(0), ids->GetNumberOfIds());
+      }
+    };
+    adjacency = geoshaping::adjacency_of_cells(n, cells, &refused);
   }
-  return builder.build();
+  skipped = vtkIdType(refused);
+  return adjacency;
 }
+
+namespace
+{
+// The number of non-finite coordinates of n points, firstBad the first point with one.
+vtkIdType CountNonFinite(const double* xyz, vtkIdType n, vtkIdType& firstBad)
+{
+  vtkIdType bad = 0;
+  firstBad = -1;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const int finite =
+      std::isfinite(xyz[3 * i]) + std::isfinite(xyz[3 * i + 1]) + std::isfinite(xyz[3 * i + 2]);
+    if (finite < 3)
+    {
+      bad += 3 - finite;
+      firstBad = firstBad < 0 ? i : firstBad;
+    }
+  }
+  return bad;
+}
+} // namespace
 
 vtkIdType vtkGeoShapingAdapter::PointsAsDouble(
   vtkPoints* points, std::vector<double>& xyz, vtkIdType& firstBad)
 {
   const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
   xyz.resize(std::size_t(3 * n));
-  vtkIdType bad = 0;
-  firstBad = -1;
-  for (vtkIdType i = 0; i < n; ++i)
+  if (n > 0 && (points->GetData()->GetNumberOfComponents() != 3 ||
+                 !vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
+                   points->GetData(), PointsWorker(), xyz.data())))
   {
-    points->GetPoint(i, xyz.data() + 3 * i);
-    for (int c = 0; c < 3; ++c)
-    {
-      if (!std::isfinite(xyz[3 * i + c]))
-      {
-        ++bad;
-        firstBad = firstBad < 0 ? i : firstBad;
-      }
-    }
+    for (vtkIdType i = 0; i < n; ++i)
+      points->GetPoint(i, xyz.data() + 3 * i);
   }
-  return bad;
+  return CountNonFinite(xyz.data(), n, firstBad);
+}
+
+const double* vtkGeoShapingAdapter::PointsView(
+  vtkPoints* points, std::vector<double>& storage, vtkIdType& bad, vtkIdType& firstBad)
+{
+  auto* doubles = points ? vtkDoubleArray::FastDownCast(points->GetData()) : nullptr;
+  if (!doubles || doubles->GetNumberOfComponents() != 3)
+  {
+    bad = PointsAsDouble(points, storage, firstBad);
+    return storage.data();
+  }
+  storage.clear();
+  const double* xyz = doubles->GetPointer(0);
+  bad = CountNonFinite(xyz, doubles->GetNumberOfTuples(), firstBad);
+  return xyz;
 }
 
 vtkSmartPointer<vtkPoints> vtkGeoShapingAdapter::MakePoints(const std::vector<double>& xyz)

@@ -45,6 +45,12 @@ public:
   /// coordinates; `firstBad` is the id of the first point holding one (or -1).
   static vtkIdType PointsAsDouble(vtkPoints* points, std::vector<double>& xyz, vtkIdType& firstBad);
 
+  /// The points as 3 doubles each, read in place when they are doubles already (valid
+  /// while `points` is), else copied into `storage` (as PointsAsDouble). `bad` receives
+  /// the number of non-finite coordinates, `firstBad` as above.
+  static const double* PointsView(
+    vtkPoints* points, std::vector<double>& storage, vtkIdType& bad, vtkIdType& firstBad);
+
   /// Double-precision points from xyz (3 doubles each) and a cell array of cells of
   /// `cellSize` ids each, for the sample scenes of the core.
   static vtkSmartPointer<vtkPoints> MakePoints(const std::vector<double>& xyz);

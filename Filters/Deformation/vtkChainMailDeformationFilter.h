@@ -510,9 +510,9 @@ private:
   bool UpdateGeometry(vtkPointSet* input);
   // The deformer over this process's piece of a new geometry, its points numbered by
   // `gids` or, when no process has any, by coordinates (Parallel.cxx).
-  bool SetUpPiece(vtkPointSet* input, const std::vector<double>& xyz,
-    geoshaping::Adjacency adjacency, vtkDataArray* gids);
-  void BuildOutputCaches(vtkPointSet* input, const std::vector<double>& xyz);
+  bool SetUpPiece(
+    vtkPointSet* input, const double* xyz, geoshaping::Adjacency adjacency, vtkDataArray* gids);
+  void BuildOutputCaches(vtkPointSet* input, const double* xyz);
   // The grasped point's name (GraspPointId's naming), -1 for none: GraspPointId, or the
   // point nearest GraspPosition over every process.
   std::int64_t ResolveGrasp(vtkPointSet* input);

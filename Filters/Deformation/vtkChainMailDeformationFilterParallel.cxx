@@ -114,8 +114,8 @@ bool vtkChainMailDeformationFilter::SelectInput(vtkPointSet*& input, vtkPointSet
   return true;
 }
 
-bool vtkChainMailDeformationFilter::SetUpPiece(vtkPointSet* input, const std::vector<double>& xyz,
-  geoshaping::Adjacency adjacency, vtkDataArray* gids)
+bool vtkChainMailDeformationFilter::SetUpPiece(
+  vtkPointSet* input, const double* xyz, geoshaping::Adjacency adjacency, vtkDataArray* gids)
 {
   vtkInternals& state = *this->Internals;
   geoshaping::Exchange& ex = *state.Processes;
@@ -140,7 +140,7 @@ bool vtkChainMailDeformationFilter::SetUpPiece(vtkPointSet* input, const std::ve
     const std::vector<std::uint8_t> claimed = std::move(owned);
     geoshaping::index_t coincident = 0;
     gid = geoshaping::coordinate_ids(
-      xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
+      xyz, geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
     const std::string split = geoshaping::coincident_points_refusal(coincident, ex);
     if (!split.empty())
     {
@@ -157,7 +157,7 @@ bool vtkChainMailDeformationFilter::SetUpPiece(vtkPointSet* input, const std::ve
   state.Envelope.reset(); // set up again on the next refinement
   state.EditExchange = vtkChainMailDeformationFilterDetail::ProcessExchange();
   const std::string error = state.Partition->set_piece(
-    xyz.data(), geoshaping::index_t(n), std::move(adjacency), gid.data(), owned.data(), ex);
+    xyz, geoshaping::index_t(n), std::move(adjacency), gid.data(), owned.data(), ex);
   if (!error.empty())
   {
     vtkErrorMacro("Refused partition: " << error << "; output is the undeformed input.");

@@ -11,6 +11,7 @@
 #include "geoshaping/parallel/coordinate_ids.h"
 
 #include <cmath>
+#include <future>
 
 using namespace vtkChainMailDeformationFilterDetail;
 
@@ -109,9 +110,10 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   }
 
   state.Invalidate(vtkInternals::Stale::Geometry);
-  std::vector<double> xyz;
-  vtkIdType firstBad = -1;
-  const vtkIdType bad = n == 0 ? 0 : vtkGeoShapingAdapter::PointsAsDouble(inPoints, xyz, firstBad);
+  std::vector<double> storage;
+  vtkIdType bad = 0, firstBad = -1;
+  const double* xyz =
+    n == 0 ? nullptr : vtkGeoShapingAdapter::PointsView(inPoints, storage, bad, firstBad);
   if (bad > 0)
   {
     vtkErrorMacro(<< state.Where() << bad << " non-finite point coordinates (first at point "
@@ -126,6 +128,17 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   state.GeometrySize = n;
   state.GeometryTime = geometryTime;
   state.GeometryPrecision = this->OutputPointsPrecision;
+  // Point GlobalIds decide the propagation order and name the grasp (docs/mpi.md), so
+  // one process gives the same result as several. Without them the order comes from
+  // the coordinates, as on several processes (coordinate_ids.h), and the grasp and the
+  // edit records keep naming point indices: numbered on a second thread meanwhile (they
+  // need neither the adjacency nor the deformer's layout).
+  const bool pointIds =
+    gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1;
+  std::future<std::vector<std::int64_t>> coordinateIds;
+  if (!several && !pointIds)
+    coordinateIds = std::async(std::launch::async,
+      [xyz, n] { return geoshaping::coordinate_ids(xyz, geoshaping::index_t(n)); });
   vtkIdType skipped = 0;
   geoshaping::Adjacency adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
   if (skipped > 0)
@@ -149,12 +162,8 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   {
     return this->SetUpPiece(input, xyz, std::move(adjacency), withIds ? gids : nullptr);
   }
-  state.Deformer.set_mesh(xyz.data(), geoshaping::index_t(n), std::move(adjacency));
-  // Point GlobalIds decide the propagation order and name the grasp (docs/mpi.md), so
-  // one process gives the same result as several. Without them the order comes from
-  // the coordinates, as on several processes (coordinate_ids.h), and the grasp and the
-  // edit records keep naming point indices.
-  if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
+  state.Deformer.set_mesh(xyz, geoshaping::index_t(n), std::move(adjacency));
+  if (pointIds)
   {
     std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
     for (vtkIdType i = 0; i < n; ++i)
@@ -164,15 +173,13 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   }
   else
   {
-    state.Deformer.set_global_ids(
-      geoshaping::coordinate_ids(xyz.data(), geoshaping::index_t(n)).data());
+    state.Deformer.set_global_ids(coordinateIds.get().data());
   }
   state.GeometryValid = true;
   return true;
 }
 
-void vtkChainMailDeformationFilter::BuildOutputCaches(
-  vtkPointSet* input, const std::vector<double>& xyz)
+void vtkChainMailDeformationFilter::BuildOutputCaches(vtkPointSet* input, const double* xyz)
 {
   // The output's points (and normals) of a new geometry, kept between updates.
   vtkInternals& state = *this->Internals;
@@ -191,7 +198,7 @@ void vtkChainMailDeformationFilter::BuildOutputCaches(
     converted->SetDataType(precision);
     converted->SetNumberOfPoints(n);
     for (vtkIdType i = 0; i < n; ++i)
-      converted->SetPoint(i, xyz.data() + 3 * i);
+      converted->SetPoint(i, xyz + 3 * i);
     state.OutputPoints = converted;
   }
   std::vector<std::int64_t> faceOffsets;
@@ -203,7 +210,7 @@ void vtkChainMailDeformationFilter::BuildOutputCaches(
       vtkGeoShapingAdapter::BuildFaces(input, faceOffsets, faceVertices))
   {
     state.Normals.set_mesh(std::move(faceOffsets), std::move(faceVertices), geoshaping::index_t(n));
-    const double* rest = xyz.data();
+    const double* rest = xyz;
     state.Normals.set_positions(
       [rest](geoshaping::index_t v) { return Eigen::Vector3d(rest + 3 * v); });
     state.OutputNormals = vtk::TakeSmartPointer(normals->NewInstance());

@@ -171,6 +171,23 @@ void BM_ReleaseAndUndoOnLargeSurface(benchmark::State& state)
   benchmark::DoNotOptimize(sink);
   state.counters["rebuilds"] = double(filter->GetNumberOfRebuilds());
 }
+
+// A new filter's first update on an n x n double grid, no grasp yet (a DEM surface as
+// DEMSurface gives it): the adjacency, the deformer's layout, the coordinate ids and the
+// output's points (docs/benchmarks.md, "The first grasp on a big DEM").
+void BM_FirstUpdateOnLargeSurface(benchmark::State& state)
+{
+  const int n = int(state.range(0));
+  auto grid = geoshaping::testing::TriangleGridPolyData(n, n, 1.0, nullptr, VTK_DOUBLE);
+  for (auto _ : state)
+  {
+    vtkNew<vtkChainMailDeformationFilter> filter;
+    filter->SetInputData(grid);
+    filter->Update();
+    benchmark::DoNotOptimize(filter->GetOutput()->GetPoints());
+  }
+  state.counters["mesh_vertices"] = double(n) * n;
+}
 } // namespace
 
 void BM_RealDemVsTextbook(benchmark::State& state)
@@ -220,6 +237,7 @@ void BM_RealDemVsTextbook(benchmark::State& state)
     state, s->core, *s->naive, s->grasp, s->pull, "Jacksboro DEM, brush paint");
 }
 
+BENCHMARK(BM_FirstUpdateOnLargeSurface)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_ReleaseAndUndoOnLargeSurface)
   ->Arg(0)
   ->Arg(1)

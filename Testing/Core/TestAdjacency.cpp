@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 using namespace geoshaping;
 
 namespace
@@ -93,4 +95,55 @@ TEST(Adjacency, BadIdsAndDegenerateEdgesAreRejectedOrMerged)
   EXPECT_FALSE(b.add_cell(CellKind::unsupported, degenerate, 3));
   const Adjacency a = b.build();
   EXPECT_EQ(a.neighbors.size(), 2u); // only 0-1 survives
+}
+
+TEST(Adjacency, CellsListedTwiceGiveTheBuildersAdjacencyWithoutAnEdgeList)
+{
+  // Mixed kinds, 32-bit ids, repeated edges, degenerate and refused cells.
+  struct Cell
+  {
+    CellKind kind;
+    std::vector<std::int32_t> ids;
+  };
+  std::mt19937 rng(7);
+  const index_t n = 300;
+  std::uniform_int_distribution<int> id(0, n - 1);
+  const std::pair<CellKind, int> kinds[] = { { CellKind::triangle, 3 }, { CellKind::polygon, 5 },
+    { CellKind::tetra, 4 }, { CellKind::hexahedron, 8 }, { CellKind::triangle_strip, 6 },
+    { CellKind::poly_line, 4 }, { CellKind::vertex, 1 }, { CellKind::pixel, 4 },
+    { CellKind::wedge, 5 }, { CellKind::unsupported, 3 } };
+  std::vector<Cell> cells;
+  for (int c = 0; c < 2000; ++c)
+  {
+    const auto& [kind, count] = kinds[std::size_t(c) % std::size(kinds)];
+    Cell cell{ kind, {} };
+    for (int i = 0; i < count; ++i)
+      cell.ids.push_back(c % 97 == 0 ? n + i : id(rng) % (c % 5 == 0 ? 3 : n));
+    cells.push_back(cell);
+  }
+  AdjacencyBuilder builder(n);
+  std::int64_t refused = 0;
+  for (const Cell& cell : cells)
+  {
+    const std::vector<std::int64_t> ids(cell.ids.begin(), cell.ids.end());
+    refused += !builder.add_cell(cell.kind, ids.data(), std::int64_t(ids.size()));
+  }
+  const Adjacency expected = builder.build();
+  int visits = 0;
+  std::int64_t skipped = -1;
+  const Adjacency a = adjacency_of_cells(
+    n,
+    [&](const auto& visit)
+    {
+      ++visits;
+      for (const Cell& cell : cells)
+        visit(cell.kind, cell.ids.data(), std::int64_t(cell.ids.size()));
+    },
+    &skipped);
+  EXPECT_EQ(visits, 2);
+  EXPECT_EQ(skipped, refused);
+  EXPECT_GT(refused, 0);
+  EXPECT_EQ(a.offsets, expected.offsets);
+  EXPECT_EQ(a.neighbors, expected.neighbors);
+  EXPECT_EQ(a.neighbors.capacity(), a.neighbors.size());
 }

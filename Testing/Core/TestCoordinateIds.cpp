@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 #include <thread>
@@ -205,4 +206,43 @@ TEST(CoordinateIds, PiecesCountTheirOwnCoincidentPoints)
     t.join();
   EXPECT_EQ(counted[0], 1);
   EXPECT_EQ(counted[1], 0);
+}
+
+TEST(CoordinateIds, OnePieceIdsAreTheRanksOfCoordinatesThenPointIds)
+{
+  // Magnitudes from 1e-300 to 1e300 of both signs, zeros of both signs, repeats.
+  std::mt19937 rng(21);
+  std::uniform_int_distribution<int> pick(0, 40), exponent(-300, 300);
+  std::vector<double> values;
+  for (int i = 0; i < 40; ++i)
+    values.push_back((i % 2 ? -1.0 : 1.0) * std::ldexp(1.0 + i / 64.0, exponent(rng)));
+  values.insert(values.end(), { 0.0, -0.0 });
+  std::vector<double> xyz;
+  for (int i = 0; i < 3 * 5000; ++i)
+    xyz.push_back(values[std::size_t(pick(rng))]);
+  const index_t n = 5000;
+  std::vector<index_t> order(static_cast<std::size_t>(n));
+  for (index_t v = 0; v < n; ++v)
+    order[std::size_t(v)] = v;
+  const auto point = [&xyz](index_t v)
+  {
+    // -0 == +0 as numbers: both compare as +0.
+    const auto c = [&](int k) { return xyz[3 * std::size_t(v) + std::size_t(k)] + 0.0; };
+    return std::make_tuple(c(0), c(1), c(2), v);
+  };
+  std::sort(order.begin(), order.end(), [&](index_t a, index_t b) { return point(a) < point(b); });
+  index_t coincident = -1;
+  const std::vector<std::int64_t> ids = coordinate_ids(xyz.data(), n, &coincident);
+  index_t repeated = 0;
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    ASSERT_EQ(ids[std::size_t(order[i])], std::int64_t(i));
+    if (i > 0)
+    {
+      const auto a = point(order[i - 1]), b = point(order[i]);
+      repeated += std::get<0>(a) == std::get<0>(b) && std::get<1>(a) == std::get<1>(b) &&
+                  std::get<2>(a) == std::get<2>(b);
+    }
+  }
+  EXPECT_EQ(coincident, repeated);
 }

@@ -3,6 +3,7 @@
 #include "geoshaping/deform/valid_region.h"
 #include "geoshaping/mesh/morton.h"
 #include "geoshaping/mesh/prefetch.h"
+#include "geoshaping/mesh/radix_sort.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,7 +74,11 @@ void ChainMailDeformer::set_mesh(
     const Eigen::Vector3d p(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
     order[std::size_t(v)] = { morton_code(p, lo, extent), v };
   }
-  std::sort(order.begin(), order.end());
+  {
+    // Stable from the caller's order: the order of the (code, id) pairs.
+    std::vector<std::pair<std::uint64_t, index_t>> scratch;
+    radix_sort(order, scratch, [](const std::pair<std::uint64_t, index_t>& r) { return r.first; });
+  }
   inner_of_.resize(un);
   outer_of_.resize(un);
   for (std::size_t i = 0; i < un; ++i)

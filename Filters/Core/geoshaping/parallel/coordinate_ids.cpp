@@ -1,6 +1,7 @@
 #include "geoshaping/parallel/coordinate_ids.h"
 
 #include "geoshaping/mesh/bit_cast.h"
+#include "geoshaping/mesh/radix_sort.h"
 
 #include <algorithm>
 #include <array>
@@ -54,22 +55,39 @@ std::vector<Key> keys_of(const double* xyz, index_t n)
 
 std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, index_t* coincident)
 {
-  const std::vector<Key> keys = keys_of(xyz, n);
-  std::vector<index_t> order(static_cast<std::size_t>(n));
+  // The order of (x, y, z, v): stable sorts by z, then y, then x, from the order of v.
+  // The key of a coordinate as unsigned: ordered_bits with its sign bit flipped.
+  struct Record
+  {
+    std::uint64_t key;
+    index_t v;
+  };
+  const auto key = [xyz](index_t v, int axis)
+  {
+    return std::uint64_t(ordered_bits(xyz[3 * std::size_t(v) + std::size_t(axis)])) ^
+           (std::uint64_t(1) << 63);
+  };
+  std::vector<Record> order(static_cast<std::size_t>(n)), scratch;
   for (index_t v = 0; v < n; ++v)
-    order[std::size_t(v)] = v;
-  std::sort(order.begin(), order.end(),
-    [&keys](index_t a, index_t b)
-    {
-      return keys[std::size_t(a)] < keys[std::size_t(b)] ||
-             (keys[std::size_t(a)] == keys[std::size_t(b)] && a < b);
-    });
+    order[std::size_t(v)].v = v;
+  for (int axis = 2; axis >= 0; --axis)
+  {
+    for (Record& r : order)
+      r.key = key(r.v, axis);
+    radix_sort(order, scratch, [](const Record& r) { return r.key; });
+  }
+  std::vector<Record>().swap(scratch);
   std::vector<std::int64_t> ids(static_cast<std::size_t>(n));
   index_t repeated = 0;
   for (std::size_t i = 0; i < order.size(); ++i)
   {
-    ids[std::size_t(order[i])] = std::int64_t(i);
-    repeated += i > 0 && keys[std::size_t(order[i])] == keys[std::size_t(order[i - 1])];
+    const index_t v = order[i].v;
+    ids[std::size_t(v)] = std::int64_t(i);
+    if (i > 0)
+    {
+      const index_t u = order[i - 1].v;
+      repeated += key(u, 0) == key(v, 0) && key(u, 1) == key(v, 1) && key(u, 2) == key(v, 2);
+    }
   }
   if (coincident)
     *coincident = repeated;
