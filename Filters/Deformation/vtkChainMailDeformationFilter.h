@@ -334,11 +334,10 @@ public:
   ///@}
 
   ///@{
-  /// Figures of the last relaxation pass: sweeps run, vertices it moved, and its time in
-  /// milliseconds (all 0 without relaxation).
+  /// Figures of the last relaxation pass: sweeps run and vertices it moved (both 0
+  /// without relaxation).
   int GetNumberOfRelaxationSweeps() { return this->Statistics.NumberOfRelaxationSweeps; }
   vtkIdType GetNumberOfRelaxedPoints() { return this->Statistics.NumberOfRelaxedPoints; }
-  double GetLastRelaxationMilliseconds() { return this->Statistics.LastRelaxationMilliseconds; }
   ///@}
 
   ///@{
@@ -473,7 +472,6 @@ protected:
     double LastRefinementMilliseconds = 0.0;
     int NumberOfRelaxationSweeps = 0;
     vtkIdType NumberOfRelaxedPoints = 0;
-    double LastRelaxationMilliseconds = 0.0;
     vtkIdType NumberOfBytesExchanged = 0;
     vtkIdType NumberOfSupersteps = 0;
     vtkIdType NumberOfRounds = 0;
