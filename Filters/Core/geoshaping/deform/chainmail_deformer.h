@@ -360,8 +360,8 @@ private:
   };
   // A SuperstepRoot without default values, so that resizing leaves it uninitialised.
   // Built in place from a root (move()): a copy made on the stack first, two narrow
-  // stores read back by one 16-byte load, stalled store forwarding on every move (~40 %
-  // of examine's samples, the one-thread FIFO frame ~13 % slower at 1,000 displaced).
+  // stores read back by one 16-byte load, stalled store forwarding on every move
+  // (docs/benchmarks.md, "Threaded frame").
   struct StoredRoot
   {
     std::uint32_t generation;
