@@ -2,7 +2,7 @@
  * @class   vtkGeoShapingAdapter
  * @brief   Converts VTK data into the plain data of the GeoShaping core.
  *
- * Shared by the GeoShaping filters so each stays a thin adapter: cell edges to a CSR
+ * Shared by the GeoShaping filters so each converts its data one way: cell edges to a CSR
  * adjacency, points to doubles, and the modification times that tell a filter whether
  * its cached core state is still valid. Not wrapped.
  */

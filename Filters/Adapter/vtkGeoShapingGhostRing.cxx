@@ -16,7 +16,6 @@
 #include "geoshaping/parallel/coordinate_ids.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -47,8 +46,6 @@ struct vtkGeoShapingGhostRing::vtkInternals
   std::vector<std::uintptr_t> Source; // what the copy was made from (Signature)
   bool Generated = false;             // Ensure's last decision, kept with the copy
   vtkSmartPointer<vtkPointSet> Copy;
-  int Generations = 0;
-  double Milliseconds = 0.0;
 };
 
 vtkGeoShapingGhostRing::vtkGeoShapingGhostRing()
@@ -57,16 +54,6 @@ vtkGeoShapingGhostRing::vtkGeoShapingGhostRing()
 }
 
 vtkGeoShapingGhostRing::~vtkGeoShapingGhostRing() = default;
-
-int vtkGeoShapingGhostRing::GetNumberOfGenerations() const
-{
-  return this->Internals->Generations;
-}
-
-double vtkGeoShapingGhostRing::GetLastMilliseconds() const
-{
-  return this->Internals->Milliseconds;
-}
 
 vtkPointSet* vtkGeoShapingGhostRing::Ensure(
   vtkPointSet* input, vtkMultiProcessController* controller, std::string& error)
@@ -120,7 +107,6 @@ vtkPointSet* vtkGeoShapingGhostRing::Ensure(
     return nullptr;
   }
 
-  const auto start = std::chrono::steady_clock::now();
   auto shallow = vtk::TakeSmartPointer(input->NewInstance());
   shallow->ShallowCopy(input);
   if (!anyIds)
@@ -160,8 +146,5 @@ vtkPointSet* vtkGeoShapingGhostRing::Ensure(
   in.Copy->ShallowCopy(made);
   in.Source = Signature(input);
   in.Generated = true;
-  ++in.Generations;
-  in.Milliseconds =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return in.Copy;
 }

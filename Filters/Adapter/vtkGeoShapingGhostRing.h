@@ -43,10 +43,6 @@ public:
   vtkPointSet* Ensure(
     vtkPointSet* input, vtkMultiProcessController* controller, std::string& error);
 
-  /// How often the ring was made, and the wall time of the last making (this process).
-  int GetNumberOfGenerations() const;
-  double GetLastMilliseconds() const;
-
 private:
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -22,8 +22,9 @@
  * an obstacle and slide on it (see Obstacles below).
  *
  * `RefinementIterations` (default 0, off) adds a pass after ChainMail that pulls the
- * result toward satisfying every link (the core's refine_links: Dykstra sweeps over the
- * displaced region, grasp and pins fixed), so a user can buy a lower E_link with time.
+ * result toward satisfying every link (the core's refine_links over the displaced region,
+ * grasp and pins fixed; by default the Envelope solver, see RefinementSolver), so a user
+ * can buy a lower E_link with time.
  * Its cost follows the displaced region (plus any rigid region it touches), never the
  * mesh; the per-vertex link data is rebuilt (O(points)) only when the geometry, the
  * malleability, the pins or the transfer curves change. `RelaxationIterations` (default
@@ -230,10 +231,10 @@ public:
   ///@{
   /// Sweeps of the refinement pass after ChainMail (0, the default: none, the plain
   /// ChainMail result), at most MAX_REFINEMENT_ITERATIONS (64, the plugin's range; larger
-  /// values are clamped). Each sweep projects every link of the displaced region onto its
-  /// valid region (in the filter's ValidRegionFrame) once (the core's refine_links,
-  /// Dykstra); the pass stops earlier once converged to RefinementTolerance, or when the
-  /// pipeline asks the filter to abort (checked after every sweep).
+  /// values are clamped); the pass runs the RefinementSolver (Envelope by default: one
+  /// exact pass with the Axes region) over the displaced region (the core's refine_links)
+  /// and stops earlier once converged to RefinementTolerance, or when the pipeline asks
+  /// the filter to abort (checked after every sweep).
   vtkSetClampMacro(RefinementIterations, int, 0, MAX_REFINEMENT_ITERATIONS);
   vtkGetMacro(RefinementIterations, int);
   ///@}
@@ -334,11 +335,10 @@ public:
   ///@}
 
   ///@{
-  /// Figures of the last relaxation pass: sweeps run, vertices it moved, and its time in
-  /// milliseconds (all 0 without relaxation).
+  /// Figures of the last relaxation pass: sweeps run and vertices it moved (both 0
+  /// without relaxation).
   int GetNumberOfRelaxationSweeps() { return this->Statistics.NumberOfRelaxationSweeps; }
   vtkIdType GetNumberOfRelaxedPoints() { return this->Statistics.NumberOfRelaxedPoints; }
-  double GetLastRelaxationMilliseconds() { return this->Statistics.LastRelaxationMilliseconds; }
   ///@}
 
   ///@{
@@ -473,7 +473,6 @@ protected:
     double LastRefinementMilliseconds = 0.0;
     int NumberOfRelaxationSweeps = 0;
     vtkIdType NumberOfRelaxedPoints = 0;
-    double LastRelaxationMilliseconds = 0.0;
     vtkIdType NumberOfBytesExchanged = 0;
     vtkIdType NumberOfSupersteps = 0;
     vtkIdType NumberOfRounds = 0;

@@ -68,7 +68,6 @@ void vtkChainMailDeformationFilter::Refine(std::int64_t grasp)
 void vtkChainMailDeformationFilter::Relax(std::int64_t grasp)
 {
   vtkInternals& state = *this->Internals;
-  const auto start = std::chrono::steady_clock::now();
   int sweeps = 0;
   bool aborted = false;
   geoshaping::RelaxationOptions options;
@@ -80,8 +79,6 @@ void vtkChainMailDeformationFilter::Relax(std::int64_t grasp)
   {
     this->KeepAbortedPass("Relaxation", report.iterations, this->RelaxationIterations);
   }
-  this->Statistics.LastRelaxationMilliseconds =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->Statistics.NumberOfRelaxationSweeps = report.iterations;
   this->Statistics.NumberOfRelaxedPoints = vtkIdType(state.Passes.relaxed_count());
 }

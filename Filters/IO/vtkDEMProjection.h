@@ -53,8 +53,6 @@ public:
   /// or Prepare() was not called; a point PROJ cannot project comes back infinite.
   bool operator()(std::size_t count, double* x, double* y) const;
 
-  int GetZone() const { return this->Zone; }
-  bool GetSouth() const { return this->South; }
   /// The output's coordinates: "UTM zone 16N (WGS84, PROJ 9.1.1: +proj=utm +zone=16
   /// +ellps=WGS84)", or "the raster's projected CRS, kept (metre)", or with "x and y
   /// times 0.3048006096 (US survey foot) to metres".

@@ -77,7 +77,7 @@ inline bool ParseNumber(const std::string& token, T& value)
 
 // Hash of vertex ids: the standard library's std::hash<int64_t> is the identity, so ids
 // that are multiples of the table's bucket count (a file can choose them) all land in one
-// bucket and the parse becomes quadratic (100,000 VRTX lines: 4.5 s instead of 0.2 s).
+// bucket and the parse becomes quadratic (docs/readers.md, "GOCAD TSurf").
 // The ids are mixed with a seed (splitmix64's finalizer; the parser draws the seed at
 // random) so that no file can aim at a bucket. Only the speed depends on the seed.
 struct VertexIdHash

@@ -116,7 +116,6 @@ public:
   // Forget the press without any action (an undo during a drag): a button still held
   // counts as a new press at the next update.
   void cancel() { held_ = false; }
-  const Eigen::Vector3d& press_position() const { return press_position_; }
 
 private:
   HandActions finish();

@@ -329,13 +329,6 @@ void pqHapticsProxies::contactTriangles(
   }
 }
 
-vtkPointSet* pqHapticsProxies::restSurface() const
-{
-  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
-  auto* filter = proxy ? vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject()) : nullptr;
-  return filter ? vtkPointSet::SafeDownCast(filter->GetInputDataObject(0, 0)) : nullptr;
-}
-
 vtkStaticPointLocator* pqHapticsProxies::shownLocator()
 {
   vtkPointSet* shown = this->shownSurface();

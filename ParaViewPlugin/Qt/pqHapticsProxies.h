@@ -39,7 +39,6 @@ public:
   pqRenderView* view() const { return this->View; }
   bool hasDeformation() const { return this->Deformation != nullptr; }
   pqPipelineSource* deformation() const { return this->Deformation; }
-  bool hasPaint() const { return this->Paint != nullptr; }
 
   geoshaping::interactor::CameraPose camera() const;
 
@@ -89,8 +88,6 @@ public:
   int numberOfEdits() const;
   // The deformation's client-side output (builtin sessions), else nullptr.
   vtkPointSet* shownSurface() const;
-  // The deformation's client-side input (builtin sessions), else nullptr.
-  vtkPointSet* restSurface() const;
   // Pushes the changed properties (UpdateVTKObjects) and renders the view.
   void render();
 

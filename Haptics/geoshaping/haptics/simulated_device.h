@@ -31,7 +31,6 @@ public:
   // Time source: 0 = real time since open(); > 0 = `step` seconds per read() (replays
   // identically whatever the load). Takes effect at the next open().
   void set_time_step(double step) { step_ = step; }
-  void set_limits(const DeviceLimits& limits) { limits_ = limits; }
   // Puts the device into its error state as a failing driver would; reads fail until
   // clear_error().
   void inject_error(const std::string& message) { set_error(message); }

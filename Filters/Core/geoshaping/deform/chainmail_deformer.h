@@ -255,8 +255,9 @@ public:
   // frame's shape the rest shape of the vertices it moved (x0 += u, u = 0), in
   // O(moved). Besides its rest position each vertex keeps its offset from the mesh
   // given to set_mesh (zero until an edit moves it), accumulated by the same additions,
-  // so a caller writes `input + offset_from_input(v)`: never-edited vertices stay
-  // bit-identical to the input, and restoring both values undoes an edit exactly.
+  // so a caller writes `input + committed_offset(v) + displacement(v)`: never-edited
+  // vertices stay bit-identical to the input, and restoring both values undoes an edit
+  // exactly.
   void commit();
   // Sets v's rest position (local) and its offset from the input; u[v] must be zero
   // (call between frames or after reset()).
@@ -264,12 +265,6 @@ public:
   const Eigen::Vector3d& committed_offset(index_t v) const
   {
     return committed_.empty() ? zero_ : committed_[std::size_t(v)];
-  }
-  // committed_offset(v) + displacement(v): where v is now relative to its input point.
-  Eigen::Vector3d offset_from_input(index_t v) const
-  {
-    return committed_.empty() ? displacement(v)
-                              : Eigen::Vector3d(committed_[std::size_t(v)] + displacement(v));
   }
 
   // Vertices displaced by the last frame, in the order they moved (grasp first).
@@ -365,8 +360,8 @@ private:
   };
   // A SuperstepRoot without default values, so that resizing leaves it uninitialised.
   // Built in place from a root (move()): a copy made on the stack first, two narrow
-  // stores read back by one 16-byte load, stalled store forwarding on every move (~40 %
-  // of examine's samples, the one-thread FIFO frame ~13 % slower at 1,000 displaced).
+  // stores read back by one 16-byte load, stalled store forwarding on every move
+  // (docs/benchmarks.md, "Threaded frame").
   struct StoredRoot
   {
     std::uint32_t generation;

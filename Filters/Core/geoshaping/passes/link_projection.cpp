@@ -620,9 +620,8 @@ void LinkProjector::fill_links_ahead(const std::vector<index_t>& list, std::size
 // significand: labels within a relative 2^-16 of each other share a key and pop in any
 // order among themselves (the result does not depend on the order, link_projection.h),
 // and an entry moves at most 28 times. Fewer bits move entries less but pop more labels
-// out of order: 20 bits cost 3 % fewer instructions per call at the paper's scale, but
-// once a cone's labels are large against its slabs it pops in any order (a pull of 2^20
-// mesh units took twice the time).
+// out of order: once a cone's labels are large against its slabs it pops in any order
+// (docs/benchmarks.md, "The envelope refinement").
 namespace
 {
 // Order-preserving map of a double onto its 28 leading bits (-0 taken as +0; no NaN

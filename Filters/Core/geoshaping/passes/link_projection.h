@@ -65,10 +65,11 @@ namespace geoshaping
 //   Cholesky factorisation of the region's link-graph Laplacian (below): converges where
 //   Dykstra stalls (a large rigid set moved by its links).
 // - dykstra: the Gauss-Seidel Dykstra/Hildreth sweeps above. One sweep is cheaper than
-//   one ADMM iteration and needs no factorisation, so a handful of sweeps is the
-//   cheapest way to take the worst links down (the filter's refinement).
+//   one ADMM iteration and needs no factorisation, so a handful of sweeps is a cheap way
+//   to take the worst links down.
 // - envelope: not the nearest point but a feasible one, exactly and in one pass (below);
-//   the Axes region only (with the Link region it runs Dykstra).
+//   the Axes region only (with the Link region it runs Dykstra). The filter's refinement
+//   uses it by default (vtkChainMailDeformationFilter::RefinementSolver).
 enum class ProjectionSolver
 {
   admm = 0,
@@ -105,8 +106,8 @@ const char* solver_name(ProjectionSolver solver);
 // the greatest y <= its start with y_a <= fl(y_b + ub(a, b)) for every link out of a seed
 // or a lowered vertex b (by induction over the assignments, any order's labels stay
 // above every such y, and the end state is one), so Dijkstra's order is only a matter
-// of speed (a FIFO order popped 4x and 10.6x more vertices in the two large passes at the
-// paper's scale, and was slower).
+// of speed (a FIFO order pops more vertices: docs/error-metrics.md, "Where the
+// envelope's time goes").
 // Each link's slab on each axis that runs is computed once, when a pass first reaches the
 // link's vertex (axis_slab, cached per vertex in flat arrays and kept across calls: the
 // mesh is constant for the projector's life). The cache holds only the axes its calls
@@ -119,12 +120,10 @@ const char* solver_name(ProjectionSolver solver);
 // It is not the projection (E_ref measures how far it lies from it, docs/report.md); with
 // inconsistent fixed values (F empty) the conflicting links stay violated and
 // `converged` is false.
-// Measured (docs/error-metrics.md, "Where the envelope's time goes"): at the paper's scale
-// (29,236 displaced, ChainMail's E_link 16.4 L) E_link 0; thread CPU time, interleaved,
-// load 5-9: the first implementation 55-66 ms (frame + envelope 20-22x the frame); now
-// (frame + envelope) / frame 7.8x in a drag, 9.5x on a grasp's first frame (medians of
-// interleaved runs, load 3-4). Dykstra and ADMM stall at ~0.9 L there because their grown
-// region is smaller than the feasible configurations' support (47,439 vertices).
+// At the paper's scale the envelope reaches E_link 0 where Dykstra and ADMM stall, their
+// grown region being smaller than the feasible configurations' support; figures and cost
+// in docs/error-metrics.md ("Where the envelope's time goes") and docs/benchmarks.md
+// ("The envelope refinement").
 // A Link-region envelope: a difference constraint bounds u_a - u_b on one world axis, so
 // the only inner approximations of a link's cylinder that keep the lattice are boxes
 // aligned with the world axes (the largest cube around 0: half-side
@@ -165,8 +164,8 @@ const char* solver_name(ProjectionSolver solver);
 // (fault step: 1e-4 L in ~1,000 iterations against Dykstra's 0.05 L after 20,000 sweeps)
 // but its tail is linear and slow: alone it does not reach 1e-6 L on every scene within
 // the report's cap of 5,000 (reference_configuration's finish does, below; all eight report
-// references converge), and an ADMM iteration costs several Dykstra sweeps, so the filter keeps
-// Dykstra for its (interactive) refinement and ADMM computes the references. Polishing
+// references converge), and an ADMM iteration costs several Dykstra sweeps, so ADMM computes
+// the references and the filter refines with the envelope (Dykstra on request). Polishing
 // (an exact solve on the guessed active set, as OSQP does) was tried and rejected: the
 // guessed sets gave inconsistent or wrong-signed multipliers on the test and report scenes.
 struct ProjectionOptions
