@@ -29,33 +29,28 @@ NaiveChainMail::NaiveChainMail(const double* xyz, const Adjacency& adjacency,
   sponsor_.assign(n, -1);
 }
 
-void NaiveChainMail::move(index_t v, const Eigen::Vector3d& u, index_t sponsor, bool banded)
+void NaiveChainMail::move(index_t v, const Eigen::Vector3d& u, index_t sponsor, Order order)
 {
   stamp_[std::size_t(v)] = frame_;
   disp_[std::size_t(v)] = u;
   sponsor_[std::size_t(v)] = sponsor;
   moved_.push_back(v);
   for (const index_t* c = adj_.begin(v); c != adj_.end(v); ++c)
-    if (stamp_[std::size_t(*c)] != frame_)
+  {
+    if (stamp_[std::size_t(*c)] == frame_)
+      continue;
+    if (order == Order::textbook)
     {
-      const std::size_t q = banded ? band_[std::size_t(*c)] : 0;
-      queues_[q].push_back({ *c, v });
-      lowest_ = std::min(lowest_, q);
-    }
-}
-
-void NaiveChainMail::move_textbook(index_t v, const Eigen::Vector3d& u, index_t sponsor)
-{
-  stamp_[std::size_t(v)] = frame_;
-  disp_[std::size_t(v)] = u;
-  sponsor_[std::size_t(v)] = sponsor;
-  moved_.push_back(v);
-  for (const index_t* c = adj_.begin(v); c != adj_.end(v); ++c)
-    if (stamp_[std::size_t(*c)] != frame_)
       heap_.push({ malleability_[std::size_t(*c)], counter_++, { *c, v } });
+      continue;
+    }
+    const std::size_t q = order == Order::banded ? band_[std::size_t(*c)] : 0;
+    queues_[q].push_back({ *c, v });
+    lowest_ = std::min(lowest_, q);
+  }
 }
 
-void NaiveChainMail::examine(const Entry& e, bool banded, bool textbook)
+void NaiveChainMail::examine(const Entry& e, Order order)
 {
   if (stamp_[std::size_t(e.candidate)] == frame_)
     return;
@@ -63,12 +58,8 @@ void NaiveChainMail::examine(const Entry& e, bool banded, bool textbook)
     Eigen::Vector3d(xyz_ + 3 * e.candidate) - Eigen::Vector3d(xyz_ + 3 * e.sponsor);
   const Eigen::Vector3d u = required_displacement<ValidRegionFrame::axes>(
     o, params_[std::size_t(e.candidate)], disp_[std::size_t(e.sponsor)]);
-  if (u.isZero(0.0))
-    return;
-  if (textbook)
-    move_textbook(e.candidate, u, e.sponsor);
-  else
-    move(e.candidate, u, e.sponsor, banded);
+  if (!u.isZero(0.0))
+    move(e.candidate, u, e.sponsor, order);
 }
 
 std::size_t NaiveChainMail::deform(index_t grasp, const Eigen::Vector3d& d, bool banded)
@@ -76,7 +67,8 @@ std::size_t NaiveChainMail::deform(index_t grasp, const Eigen::Vector3d& d, bool
   ++frame_;
   moved_.clear();
   lowest_ = 0;
-  move(grasp, d, -1, banded);
+  const Order order = banded ? Order::banded : Order::fifo;
+  move(grasp, d, -1, order);
   for (;;)
   {
     while (lowest_ < queues_.size() && queues_[lowest_].empty())
@@ -85,7 +77,7 @@ std::size_t NaiveChainMail::deform(index_t grasp, const Eigen::Vector3d& d, bool
       break;
     const Entry e = queues_[lowest_].front();
     queues_[lowest_].pop_front();
-    examine(e, banded, false);
+    examine(e, order);
   }
   return moved_.size();
 }
@@ -95,12 +87,12 @@ std::size_t NaiveChainMail::deform_textbook(index_t grasp, const Eigen::Vector3d
   ++frame_;
   moved_.clear();
   counter_ = 0;
-  move_textbook(grasp, d, -1);
+  move(grasp, d, -1, Order::textbook);
   while (!heap_.empty())
   {
     const Entry e = heap_.top().entry;
     heap_.pop();
-    examine(e, false, true);
+    examine(e, Order::textbook);
   }
   return moved_.size();
 }

@@ -56,9 +56,14 @@ private:
       return malleability != o.malleability ? malleability > o.malleability : counter > o.counter;
     }
   };
-  void move(index_t v, const Eigen::Vector3d& u, index_t sponsor, bool banded);
-  void move_textbook(index_t v, const Eigen::Vector3d& u, index_t sponsor);
-  void examine(const Entry& e, bool banded, bool textbook);
+  enum class Order
+  {
+    fifo,    // one deque
+    banded,  // a deque per distinct value, the lowest first
+    textbook // heap_ on (malleability, insertion counter)
+  };
+  void move(index_t v, const Eigen::Vector3d& u, index_t sponsor, Order order);
+  void examine(const Entry& e, Order order);
   const double* xyz_;
   const Adjacency& adj_;
   std::vector<RegionParams> params_; // per vertex
