@@ -174,10 +174,7 @@ TEST(ThreadedSuperstep, AutomaticThreadsEqualOneThreadHoweverBusyTheMachine)
     expect_threaded_equals_one_thread(s, true, q, ValidRegionFrame::axes, 0, frames, 8);
   ChainMailDeformer d;
   d.set_threads(0);
-  EXPECT_TRUE(d.automatic_threads());
-  EXPECT_GE(d.threads(), 1);
-  d.set_threads(2);
-  EXPECT_FALSE(d.automatic_threads());
+  EXPECT_GE(d.threads(), 1); // the hardware's concurrency
 }
 
 TEST(ThreadedSuperstep, CallerIdsAndLinkRegionEqualOneThread)

@@ -179,7 +179,6 @@ public:
   // machine is busy (a stall). Neither changes any result.
   void set_threads(int threads);
   int threads() const { return threads_; }
-  bool automatic_threads() const { return automatic_threads_; }
   void set_threaded_threshold(std::size_t entries) { threaded_threshold_ = entries; }
   std::size_t threaded_threshold() const { return threaded_threshold_; }
   // Shape of the valid region (valid_region.h): axes (default) or link.
