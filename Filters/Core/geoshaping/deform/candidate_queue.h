@@ -257,7 +257,6 @@ private:
     std::uint32_t find(const ChainKey& k) const;      // nil when absent
     void insert(const ChainKey& k, std::uint32_t id); // k must be absent
     void clear();
-    bool empty() const { return size_ == 0; }
     std::size_t size() const { return size_; }
     std::size_t memory_bytes() const { return slots_.capacity() * sizeof(Slot); }
 

@@ -45,8 +45,6 @@ public:
   // Whether a thread of the last run waited at a barrier inside the job for longer than it
   // had worked since its previous barrier, and longer than stall_floor (see above).
   bool stalled() const { return stalled_.load(std::memory_order_relaxed); }
-  static constexpr std::chrono::microseconds stall_floor{ 100 };
-  static constexpr std::chrono::microseconds yield_after{ 50 };
 
 private:
   void run_erased(void (*call)(void*, int), void* job);
@@ -54,6 +52,8 @@ private:
   // in_job: a barrier inside a run (a long wait there is a stall), not the one that starts
   // a run (workers wait there between runs).
   void barrier(bool in_job);
+  static constexpr std::chrono::microseconds stall_floor{ 100 };
+  static constexpr std::chrono::microseconds yield_after{ 50 };
 
   int threads_;
   std::vector<std::thread> workers_;
