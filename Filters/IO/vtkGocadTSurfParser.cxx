@@ -27,6 +27,12 @@ constexpr int MaxComponents = 1024;
 // giving its values always fits (each value takes at least 2 bytes of its line).
 constexpr std::uint64_t PaddingPerPoint = 64;
 
+// GOCAD's point-set objects: VSet, and PointSet as some exports name it.
+bool IsPointSet(const std::string& type)
+{
+  return type == "VSet" || type == "PointSet";
+}
+
 struct ParseFailure
 {
   std::string Message;
@@ -54,16 +60,18 @@ public:
       if (IsComment(t))
         continue;
       if (t[0] != "GOCAD")
-        this->Fail("expected 'GOCAD TSurf', found " + Quote(t[0]));
+        this->Fail("expected 'GOCAD TSurf' or 'GOCAD VSet', found " + Quote(t[0]));
       if (t.size() >= 2 && t[1] == "TSurf")
-        this->ReadSurface();
+        this->ReadSurface(false);
+      else if (t.size() >= 2 && IsPointSet(t[1]))
+        this->ReadSurface(true);
       else
         this->SkipObject(t.size() >= 2 ? t[1] : std::string("(unnamed)"));
     }
     if (this->LineNumber == 0)
       throw ParseFailure{ "line 1: the file is empty" };
     if (this->Data.Surfaces.empty())
-      this->Fail("no 'GOCAD TSurf' object in the file");
+      this->Fail("no 'GOCAD TSurf' or 'GOCAD VSet' object in the file");
   }
 
   // The line being read or handled.
@@ -75,6 +83,7 @@ private:
   {
     std::unordered_map<std::int64_t, std::int64_t, VertexIdHash> IdToPoint;
     std::size_t FirstPoint = 0;
+    bool PointSet = false; // a VSet (or PointSet): its points are vertex cells, no TRGL
     int TFace = 0;
     bool TFaceSeen = false;
     std::size_t NumberOfTriangles = 0;
@@ -123,9 +132,10 @@ private:
 
   vtkGocadTSurfSurfaceInfo& Info() { return this->Data.Surfaces.back(); }
 
-  void ReadSurface()
+  void ReadSurface(bool pointSet)
   {
     this->S = SurfaceState();
+    this->S.PointSet = pointSet;
     this->S.IdToPoint = decltype(this->S.IdToPoint)(0, VertexIdHash{ this->IdSeed });
     this->S.FirstPoint = this->Data.GetNumberOfPoints();
     this->Data.Surfaces.emplace_back();
@@ -149,7 +159,8 @@ private:
   void SkipObject(const std::string& type)
   {
     this->Data.Warnings.push_back("line " + std::to_string(this->LineNumber) +
-                                  ": skipped a GOCAD " + type + " object (only TSurf is read)");
+                                  ": skipped a GOCAD " + type +
+                                  " object (only TSurf and VSet are read)");
     while (this->NextLine())
     {
       const Tokens t = Tokenize(this->Line);
@@ -161,6 +172,12 @@ private:
 
   void EndSurface()
   {
+    if (this->S.PointSet)
+      for (std::size_t i = this->S.FirstPoint; i < this->Data.GetNumberOfPoints(); ++i)
+      {
+        this->Data.Vertices.push_back(static_cast<std::int64_t>(i));
+        this->Data.VertexSurface.push_back(static_cast<int>(this->Data.Surfaces.size() - 1));
+      }
     if (!EqualsNoCase(this->Info().ZPositive, "depth"))
       return;
     for (std::size_t i = this->S.FirstPoint; i < this->Data.GetNumberOfPoints(); ++i)
@@ -405,6 +422,8 @@ private:
 
   void AddTriangle(const Tokens& t)
   {
+    if (this->S.PointSet)
+      this->Fail("TRGL in a GOCAD VSet: a point set has no triangles");
     if (t.size() != 4)
       this->Fail("TRGL needs exactly three vertex ids");
     for (int c = 1; c <= 3; ++c)
@@ -490,7 +509,7 @@ bool vtkGocadTSurfLooksLikeTSurf(std::istream& input)
     const Tokens t = Tokenize(line.substr(0, 256));
     if (IsComment(t))
       continue;
-    return t.size() >= 2 && t[0] == "GOCAD" && t[1] == "TSurf";
+    return t.size() >= 2 && t[0] == "GOCAD" && (t[1] == "TSurf" || IsPointSet(t[1]));
   }
   return false;
 }

@@ -80,8 +80,24 @@ void Fill(vtkPolyData* output, const vtkGocadTSurfData& data)
   polys->SetData(offsets, MakeArray<vtkIdTypeArray>("Connectivity", data.Triangles, 1));
   output->SetPolys(polys);
 
-  output->GetCellData()->AddArray(MakeArray<vtkIntArray>("Surface", data.Surface, 1));
-  output->GetCellData()->AddArray(MakeArray<vtkIntArray>("TFace", data.TFace, 1));
+  // A VSet's points are vertex cells, which a vtkPolyData numbers before its polygons.
+  if (!data.Vertices.empty())
+  {
+    vtkNew<vtkCellArray> verts;
+    verts->AllocateExact(
+      static_cast<vtkIdType>(data.Vertices.size()), static_cast<vtkIdType>(data.Vertices.size()));
+    for (const std::int64_t v : data.Vertices)
+    {
+      const vtkIdType id = static_cast<vtkIdType>(v);
+      verts->InsertNextCell(1, &id);
+    }
+    output->SetVerts(verts);
+  }
+  std::vector<int> surface = data.VertexSurface, tface(data.Vertices.size(), 0);
+  surface.insert(surface.end(), data.Surface.begin(), data.Surface.end());
+  tface.insert(tface.end(), data.TFace.begin(), data.TFace.end());
+  output->GetCellData()->AddArray(MakeArray<vtkIntArray>("Surface", surface, 1));
+  output->GetCellData()->AddArray(MakeArray<vtkIntArray>("TFace", tface, 1));
   for (const auto& p : data.Properties)
     output->GetPointData()->AddArray(
       MakeArray<vtkDoubleArray>(p.Name.c_str(), p.Values, p.NumberOfComponents));

@@ -1,16 +1,19 @@
 /**
  * @class   vtkGocadTSurfReader
- * @brief   Read GOCAD TSurf (`.ts`) triangulated surfaces into vtkPolyData.
+ * @brief   Read GOCAD TSurf (`.ts`) triangulated surfaces, and VSet (`.vs`) point sets
+ *          such as well markers, into vtkPolyData.
  *
- * Reads every `GOCAD TSurf ... END` object of the file: `VRTX` and `PVRTX` vertices,
+ * Reads every `GOCAD TSurf ... END` and `GOCAD VSet ... END` object of the file (a VSet's
+ * points become vertex cells, numbered before the triangles as vtkPolyData orders them;
+ * a TRGL inside a VSet is an error): `VRTX` and `PVRTX` vertices,
  * `ATOM`/`PATOM` (another id for an earlier vertex: it shares that point, so the
  * surface stays connected across TFACE borders), `TRGL` triangles and `TFACE` parts.
  * `PROPERTIES` (with `ESIZES`) become double point arrays; values equal to
  * `NO_DATA_VALUES` become NaN. Output:
  *
  * - points in double precision, always (UTM-sized coordinates);
- * - cell arrays `Surface` (index of the TSurf object in the file) and `TFace` (index
- *   of the TFACE within its surface), both int;
+ * - cell arrays `Surface` (index of the TSurf or VSet object in the file) and `TFace`
+ *   (index of the TFACE within its surface; 0 for a VSet's vertices), both int;
  * - field data `Name` (HEADER `name:`, one string per surface) and, from the first
  *   surface that has them, `AxisName`, `AxisUnit` (3 strings), `CoordinateSystemName`;
  *   `ZPositive` (one string per surface, as written in the file).
@@ -35,7 +38,7 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The `.ts` file to read.
+  /// The `.ts` (or `.vs`) file to read.
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
   ///@}

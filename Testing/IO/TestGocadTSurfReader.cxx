@@ -2,6 +2,7 @@
 #include "GocadTestUtilities.h"
 
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -227,4 +228,55 @@ TEST(GocadTSurfReader, CanReadFileRecognisesTSurfOnly)
   EXPECT_EQ(reader->CanReadFile(WriteText("can.ts", Triangle).c_str()), 1);
   EXPECT_EQ(reader->CanReadFile(WriteText("cannot.ts", "hello\n").c_str()), 0);
   EXPECT_EQ(reader->CanReadFile(gocadtest::WorkPath("absent.ts").c_str()), 0);
+}
+
+// Well markers: a GOCAD VSet's points (with their properties) become vertex cells.
+TEST(GocadTSurfReader, ReadsVSetPointsAsVerticesWithTheirProperties)
+{
+  const auto r = Read(WriteText("markers.vs",
+    "GOCAD VSet 1\nHEADER {\nname:tops\n}\nPROPERTIES well depth\n"
+    "PVRTX 1 10 20 -30 7 30\nPVRTX 2 11 21 -31.5 8 31.5\nVRTX 3 12 22 -32\nEND\n"));
+  ASSERT_EQ(r.Errors, "");
+  ASSERT_EQ(r.Output->GetNumberOfPoints(), 3);
+  EXPECT_EQ(r.Output->GetNumberOfVerts(), 3);
+  EXPECT_EQ(r.Output->GetNumberOfPolys(), 0);
+  EXPECT_EQ(r.Output->GetPoint(1)[2], -31.5);
+  vtkDataArray* depth = r.Output->GetPointData()->GetArray("depth");
+  ASSERT_TRUE(depth);
+  EXPECT_EQ(depth->GetTuple1(0), 30);
+  EXPECT_TRUE(std::isnan(depth->GetTuple1(2))); // a VRTX gives no value
+  EXPECT_EQ(FieldString(r.Output, "Name"), "tops");
+  vtkNew<vtkGocadTSurfReader> reader;
+  EXPECT_EQ(
+    reader->CanReadFile(WriteText("can.vs", "GOCAD VSet 1\nVRTX 1 0 0 0\nEND\n").c_str()), 1);
+}
+
+// A file with both: vertices first (vtkPolyData's cell order), the cell arrays in step.
+TEST(GocadTSurfReader, VSetAndTSurfInOneFileKeepTheirCellArraysInStep)
+{
+  const auto r = Read(WriteText(
+    "both.ts", std::string(Triangle) + "GOCAD VSet 1\nVRTX 1 5 5 5\nVRTX 2 6 6 6\nEND\n"));
+  ASSERT_EQ(r.Errors, "");
+  EXPECT_EQ(r.Output->GetNumberOfPoints(), 5);
+  ASSERT_EQ(r.Output->GetNumberOfCells(), 3);
+  EXPECT_EQ(r.Output->GetCellType(0), VTK_VERTEX);
+  EXPECT_EQ(r.Output->GetCellType(2), VTK_TRIANGLE);
+  vtkDataArray* surface = r.Output->GetCellData()->GetArray("Surface");
+  ASSERT_TRUE(surface);
+  EXPECT_EQ(surface->GetNumberOfTuples(), 3);
+  EXPECT_EQ(surface->GetTuple1(0), 1); // the VSet is the file's second object
+  EXPECT_EQ(surface->GetTuple1(2), 0);
+  vtkIdType npts = 0;
+  const vtkIdType* pts = nullptr;
+  r.Output->GetCellPoints(0, npts, pts);
+  EXPECT_EQ(pts[0], 3);
+}
+
+TEST(GocadTSurfReader, RefusesATriangleInsideAVSet)
+{
+  const auto r =
+    Read(WriteText("vset_trgl.vs", "GOCAD VSet 1\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\n"
+                                   "TRGL 1 2 3\nEND\n"));
+  EXPECT_NE(r.Errors.find("line 5: TRGL in a GOCAD VSet"), std::string::npos) << r.Errors;
+  EXPECT_EQ(r.Output->GetNumberOfPoints(), 0);
 }

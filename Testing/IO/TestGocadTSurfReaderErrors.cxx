@@ -114,7 +114,7 @@ std::vector<BadFile> BadFiles()
     { "NextObjectBeforeEnd", "GOCAD TSurf 1\nVRTX 1 0 0 0\nGOCAD TSurf 1\nEND\n",
       "line 3: new GOCAD object before the END" },
     { "EmptyFile", "", "line 1: the file is empty" },
-    { "OnlyComments", "# nothing here\n\n", "line 2: no 'GOCAD TSurf' object" },
+    { "OnlyComments", "# nothing here\n\n", "line 2: no 'GOCAD TSurf' or 'GOCAD VSet' object" },
     { "NotATSurf", "solid cube\nfacet normal 0 0 1\n", "line 1: expected 'GOCAD TSurf'" },
     { "BinaryJunk", BinaryJunk(), "binary data" },
     { "NulInsideAValidFile", WithVertex(std::string("VRTX 3 0 1 0\0", 13)), "line 5: binary" },
