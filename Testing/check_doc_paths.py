@@ -33,6 +33,20 @@ def tree_files():
     return files
 
 
+def backticked_words():
+    """(page, line number, word) for every backticked word without a space of README.md and
+    docs/*.md, outside code blocks (commands, not names)."""
+    pages = ["README.md"] + sorted(
+        os.path.join("docs", n) for n in os.listdir(os.path.join(ROOT, "docs")) if n.endswith(".md"))
+    for page in pages:
+        text = open(os.path.join(ROOT, page), encoding="utf-8").read()
+        # Blank the code blocks' lines, so that line numbers stay the page's own.
+        text = re.sub(r"```.*?```", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+        for number, line in enumerate(text.splitlines(), 1):
+            for word in re.findall(r"`([^`\s]+)`", line):
+                yield page, number, word
+
+
 def main():
     files = [f.replace(os.sep, "/") for f in tree_files()]
     folders = {"/".join(f.split("/")[:i]) for f in files for i in range(1, f.count("/") + 1)}
@@ -53,26 +67,20 @@ def main():
             return True
         return any(e.endswith("/" + path) for e in entries | stems)
 
-    pages = ["README.md"] + sorted(
-        os.path.join("docs", n) for n in os.listdir(os.path.join(ROOT, "docs")) if n.endswith(".md"))
     broken = []
-    for page in pages:
-        text = open(os.path.join(ROOT, page), encoding="utf-8").read()
-        text = re.sub(r"```.*?```", "", text, flags=re.S)  # code blocks: commands, not names
-        for number, line in enumerate(text.splitlines(), 1):
-            for word in re.findall(r"`([^`\s]+)`", line):
-                word = word.split("#")[0]
-                if not word or NOT_IN_TREE.search(word):
-                    continue
-                if word.startswith(".") and "/" not in word:
-                    continue  # an extension: `.npz`
-                if not word.endswith(EXTENSIONS):
-                    # Without an extension, a path only if it starts in a folder of the
-                    # tree (`Testing/GUI/TestHook`; not `workspace_min/max`).
-                    if "/" not in word or word.split("/")[0] not in folder_names:
-                        continue
-                if not resolves(word, os.path.dirname(page)):
-                    broken.append("%s:%d: `%s`" % (page, number, word))
+    for page, number, word in backticked_words():
+        word = word.split("#")[0]
+        if not word or NOT_IN_TREE.search(word):
+            continue
+        if word.startswith(".") and "/" not in word:
+            continue  # an extension: `.npz`
+        if not word.endswith(EXTENSIONS):
+            # Without an extension, a path only if it starts in a folder of the
+            # tree (`Testing/GUI/TestHook`; not `workspace_min/max`).
+            if "/" not in word or word.split("/")[0] not in folder_names:
+                continue
+        if not resolves(word, os.path.dirname(page)):
+            broken.append("%s:%d: `%s`" % (page, number, word))
     for b in broken:
         print(b)
     print("%d backticked path(s) that name nothing in the tree" % len(broken))
