@@ -130,7 +130,6 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShearRange: " << this->ShearRange[0] << " " << this->ShearRange[1] << "\n";
   os << indent << "TransferCurveShape: " << this->TransferCurveShape << "\n";
   os << indent << "StepThreshold: " << this->StepThreshold << "\n";
-  os << indent << "ExactRigidAtZero: " << this->ExactRigidAtZero << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "GenerateDiagnostics: " << this->GenerateDiagnostics << "\n";
   os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";

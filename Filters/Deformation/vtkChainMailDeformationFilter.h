@@ -271,12 +271,6 @@ public:
   vtkGetMacro(RelaxationIterations, int);
   ///@}
 
-  ///@{
-  /// When on (default), malleability 0 gives exactly (1, 1, 0), rigid, whatever the curves.
-  vtkSetMacro(ExactRigidAtZero, bool);
-  vtkGetMacro(ExactRigidAtZero, bool);
-  vtkBooleanMacro(ExactRigidAtZero, bool);
-  ///@}
 
   ///@{
   /// vtkAlgorithm::SINGLE_PRECISION, DOUBLE_PRECISION or DEFAULT_PRECISION (same as
@@ -447,7 +441,6 @@ protected:
   double ShearRange[2] = { 0.0, 0.5 };
   int TransferCurveShape = LINEAR;
   double StepThreshold = 0.5;
-  bool ExactRigidAtZero = true;
   int OutputPointsPrecision = vtkAlgorithm::DEFAULT_PRECISION;
   bool GenerateDiagnostics = false;
   int RefinementIterations = 0;

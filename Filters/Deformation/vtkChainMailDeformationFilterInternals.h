@@ -279,7 +279,6 @@ inline geoshaping::TransferFunction Transfer(vtkChainMailDeformationFilter* self
   tf.stretch = MakeCurve(self->GetStretchRange(), shape, threshold, stretch);
   tf.compression = MakeCurve(self->GetCompressionRange(), shape, threshold, compression);
   tf.shear = MakeCurve(self->GetShearRange(), shape, threshold, shear);
-  tf.exact_rigid_at_zero = self->GetExactRigidAtZero();
   return tf;
 }
 // The boundary triangles of one obstacle (its polygons, or its surface when it is not

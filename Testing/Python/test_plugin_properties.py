@@ -20,6 +20,23 @@ check(chain.DefaultMalleability == 0.5, "default malleability 0.5")
 check(chain.NumberOfThreads == 0 and
       chain.SMProxy.GetProperty("NumberOfThreads").GetPanelVisibility() == "advanced",
       "threads automatic by default, an advanced property")
+# The panel's default view: what a geologist shapes with (issue 37: at most 14).
+shown = []
+it = chain.SMProxy.NewPropertyIterator()
+it.Begin()
+while not it.IsAtEnd():
+    prop = it.GetProperty()
+    if not prop.GetInformationOnly() and prop.GetPanelVisibility() == "default":
+        shown.append(it.GetKey())
+    it.Next()
+check(sorted(shown) == sorted(["Input", "Obstacles", "MalleabilityArray", "ValidRegionFrame",
+                               "StretchRange", "CompressionRange", "ShearRange", "PinnedArray",
+                               "CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"]),
+      "the panel's default view shows the 12 shaping properties (%s)" % sorted(shown))
+check(all(chain.SMProxy.GetProperty(n).GetPanelVisibility() == "never"
+          for n in ["StretchCurve", "CompressionCurve", "ShearCurve"]),
+      "one way to give the transfer curve in the panel: the ranges (curves from Python)")
+check("ExactRigidAtZero" not in names, "malleability 0 is always rigid: no switch")
 # ParaView 5.11's properties panel draws no widget for an IdTypeVectorProperty.
 check(chain.SMProxy.GetProperty("GraspPointId").IsA("vtkSMIntVectorProperty"),
       "GraspPointId is an IntVectorProperty, so the properties panel draws it")

@@ -40,7 +40,7 @@ TransferFunction::TransferFunction() = default;
 ChainMailParams TransferFunction::operator()(double m) const
 {
   m = std::clamp(m, 0.0, 1.0);
-  if (m == 0.0 && exact_rigid_at_zero)
+  if (m == 0.0)
     return {};
   ChainMailParams p;
   p.stretch = std::max(1.0, stretch(m));

@@ -54,8 +54,8 @@ inline bool operator==(const Curve& a, const Curve& b)
 }
 
 // Defaults (the deformation contract, docs/design.md): stretch 1 -> 2, compression 1 -> 0.5, shear
-// 0 -> 0.5. Malleability 0 yields exactly (1, 1, 0) unless `exact_rigid_at_zero` is false: whatever
-// the curves, m == 0 means rigid, the paper's black "frozen" paint.
+// 0 -> 0.5. Malleability 0 yields exactly (1, 1, 0) whatever the curves: m == 0 means rigid, the
+// paper's black "frozen" paint.
 class TransferFunction
 {
 public:
@@ -64,7 +64,6 @@ public:
   Curve stretch{ 1.0, 2.0 };
   Curve compression{ 1.0, 0.5 };
   Curve shear{ 0.0, 0.5 };
-  bool exact_rigid_at_zero = true;
 
   // `m` is clamped to [0, 1]. Results are clamped to the valid parameter domain
   // (stretch >= 1, compression in [0, 1], shear >= 0) so no curve can produce an
@@ -77,8 +76,7 @@ public:
 
 inline bool operator==(const TransferFunction& a, const TransferFunction& b)
 {
-  return a.stretch == b.stretch && a.compression == b.compression && a.shear == b.shear &&
-         a.exact_rigid_at_zero == b.exact_rigid_at_zero;
+  return a.stretch == b.stretch && a.compression == b.compression && a.shear == b.shear;
 }
 
 } // namespace geoshaping
