@@ -271,7 +271,6 @@ public:
   vtkGetMacro(RelaxationIterations, int);
   ///@}
 
-
   ///@{
   /// vtkAlgorithm::SINGLE_PRECISION, DOUBLE_PRECISION or DEFAULT_PRECISION (same as
   /// the input, the default).

@@ -4,6 +4,7 @@
 #include "pqHapticsMouse.h"
 
 #include "geoshaping/haptics/contact_patch.h"
+#include "geoshaping/haptics/device_factory.h"
 #include "geoshaping/haptics/servo_loop.h"
 #include "geoshaping/haptics/trace.h"
 #include "geoshaping/paint/brush.h"

@@ -1,4 +1,4 @@
-// A representation's display transform (ParaViewPlugin/Qt/DisplayTransform.h): its matrix
+// A representation's display transform (ParaViewPlugin/Controls/DisplayTransform.h): its matrix
 // is vtkProp3D's, and under a vertical exaggeration the pick rule finds the data point
 // drawn under the cursor, so the pull that follows keeps it there and moves the data by
 // the cursor's motion in data units.

@@ -1,6 +1,6 @@
 // The client side of the edit history (ParaViewPlugin/ServerManager/edit_commands.h)
 // against the filter's own command semantics (geoshaping::EditSession, docs/editing.md), and the
-// point dabs (ParaViewPlugin/Qt/EditControl.h).
+// point dabs (ParaViewPlugin/Controls/EditControl.h).
 #include "EditControl.h"
 #include "edit_commands.h"
 

@@ -1,5 +1,5 @@
 // The haptic interactor's Qt-free logic: workspace -> scene mapping and the per-hand
-// tool state machine (ParaViewPlugin/Qt/HapticsControl.h).
+// tool state machine (ParaViewPlugin/Controls/HapticsControl.h).
 #include "HapticsControl.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The mouse pull's math (ParaViewPlugin/Qt/PullControl.h) through a camera's projection
+// The mouse pull's math (ParaViewPlugin/Controls/PullControl.h) through a camera's projection
 // matrix: the grasp stays under the cursor at any data scale and camera, Shift makes the
 // motion a tenth, and the constraints keep the pull on their line.
 #include "HapticsControl.h"

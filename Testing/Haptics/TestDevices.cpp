@@ -1,3 +1,4 @@
+#include "geoshaping/haptics/device_factory.h"
 #include "geoshaping/haptics/null_device.h"
 #include "geoshaping/haptics/openhaptics_device.h"
 #include "recording_device.h"

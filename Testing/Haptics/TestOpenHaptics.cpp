@@ -4,6 +4,7 @@
 // the machine's speed; the ServoLoop test waits for conditions, never for a time.
 #include "fake_hd.h"
 
+#include "geoshaping/haptics/device_factory.h"
 #include "geoshaping/haptics/openhaptics_device.h"
 #include "geoshaping/haptics/servo_loop.h"
 

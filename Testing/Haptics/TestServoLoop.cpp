@@ -1,3 +1,4 @@
+#include "geoshaping/haptics/device_factory.h"
 #include "geoshaping/haptics/servo_loop.h"
 #include "recording_device.h"
 

@@ -102,12 +102,4 @@ private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// Builds a backend by name (not opened):
-//   "null"                             NullDevice
-//   "simulated" [keyframe trace path]  SimulatedDevice (default motion without a path)
-//   "replay"    trace path             ReplayDevice
-//   "openhaptics" [HD device name]     OpenHapticsDevice
-// An unknown kind gives a NullDevice whose open() fails and names the known kinds.
-std::unique_ptr<HapticDevice> make_device(const std::string& kind, const std::string& arg = {});
-
 } // namespace geoshaping::haptics
