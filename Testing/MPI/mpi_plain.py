@@ -4,7 +4,9 @@ builds, with nothing added for MPI: a file reader, optionally RedistributeDataSe
 ChainMailDeformation grasping the point nearest a position. No GhostCellsGenerator: the
 filters make the ghost ring they need. Writes every owned point's (rest x, y, z,
 deformed x, y, z, malleability) to OUT/result.npy on rank 0 (one row per position on several
-ranks: the copies of a seam point that D3 leaves unflagged on every rank must agree). Arguments: CASE FILE OUT (CASE: reader, redistribute, d3, ids, paint)."""
+ranks: the copies of a seam point that D3 leaves unflagged on every rank must agree). Arguments: CASE FILE OUT (CASE: reader, redistribute, d3, ids, paint,
+unsplitpaint; FILE a .vtp, .vtu, .ts or, into
+DEMSurface, a GeoTIFF)."""
 import os
 import sys
 
@@ -22,6 +24,8 @@ from mpi_pipeline import POINT_INDEX_IDS  # noqa: E402
 
 if path.endswith(".ts"):
     reader = GOCADTSurfReader(FileName=path)  # noqa: F405
+elif path.endswith(".tif"):  # the raster on rank 0 alone: an empty one on the others
+    reader = DEMSurface(Input=GDALRasterReader(FileName=path))  # noqa: F405
 else:
     reader = (XMLPolyDataReader if path.endswith(".vtp") else XMLUnstructuredGridReader)(  # noqa: F405
         FileName=[path])
@@ -33,7 +37,7 @@ if case in ("redistribute", "ids", "paint"):
     upstream = RedistributeDataSet(Input=upstream)  # noqa: F405
 elif case == "d3":
     upstream = D3(Input=upstream)  # noqa: F405
-if case == "paint":
+if case in ("paint", "unsplitpaint"):  # unsplit: the ranks but the reading one have nothing
     upstream = MalleabilityPaint(Input=upstream)  # noqa: F405
     upstream.InitialMalleability = 0.6
     upstream.Falloff = "Smooth"

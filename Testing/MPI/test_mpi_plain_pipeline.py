@@ -11,8 +11,15 @@ Usage: test_mpi_plain_pipeline.py CASE, CASE one of
   split (a surface whose fault has split nodes, no GlobalIds: 1 rank deforms it, 2 and 3
   ranks refuse it on every rank with an error naming GlobalIds),
   cascadia-redistribute (the CRESCENT Cascadia interface, a TSurf file, pulled 80 km;
-  skipped when ../shared/data/crescent-cfm is absent)."""
+  skipped when ../shared/data/crescent-cfm is absent),
+  dem-paint (a GeoTIFF written by gdal_translate, read by GDALRasterReader into DEMSurface:
+  the reader gives the raster to rank 0 alone, so DEMSurface has an empty raster on the
+  other ranks, which is a piece and no error: issue 39, item 5),
+  dem-unsplitpaint (the same without RedistributeDataSet: MalleabilityPaint and
+  ChainMailDeformation get an empty piece on every rank but the first).
+A run that hangs is killed after 280 s and fails the test."""
 import os
+import subprocess
 import sys
 import tempfile
 
@@ -33,9 +40,26 @@ def write_scene(path):
         box = Tetrahedralize(Input=Wavelet(WholeExtent=[0, 16, 0, 16, 0, 10]))  # noqa: F405
         source = Calculator(Input=box, ResultArrayName="Malleability")  # noqa: F405
         source.Function = "0.25*floor(3.999*abs(sin(0.3*coordsX+0.2*coordsY+0.5*coordsZ)))"
+    elif scene == "dem":
+        write_dem(path)
+        return
     else:
         source = LayeredFaultScene()  # noqa: F405 (horizons cut by a fault: split nodes)
     SaveData(path, proxy=source)  # noqa: F405
+
+
+def write_dem(path):
+    """A 41 x 31 UTM (EPSG:32616) elevation GeoTIFF with a fault scarp, 30 m pixels:
+    an Esri ASCII grid turned into a GeoTIFF by gdal_translate."""
+    y, x = np.mgrid[0:31, 0:41].astype(float)
+    z = 200.0 + 3.0 * np.sin(0.3 * x) * np.cos(0.2 * y) + 25.0 / (1.0 + np.exp(-(x - 0.4 * y - 15.0)))
+    grid = path[:-4] + ".asc"
+    with open(grid, "w") as f:
+        f.write("ncols 41\nnrows 31\nxllcorner 500000\nyllcorner 3600000\ncellsize 30\n")
+        for row in z:
+            f.write(" ".join("%.17g" % v for v in row) + "\n")
+    subprocess.run(["gdal_translate", "-q", "-a_srs", "EPSG:32616", "-ot", "Float64", grid, path],
+                   check=True)
 
 
 def run(n, path, out):
@@ -51,10 +75,12 @@ with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as t
     if scene == "cascadia":
         path = cascadia
     else:
-        path = os.path.join(tmp, scene + (".vtu" if scene == "volume" else ".vtp"))
+        path = os.path.join(tmp, scene + {"volume": ".vtu", "dem": ".tif"}.get(scene, ".vtp"))
         write_scene(path)
     # Parameters from the scene (to the ranks through the environment)'s bounds: grasp at the top middle, pull up by 8 % of the size.
     scene_file = OpenDataFile(path)  # noqa: F405
+    if scene == "dem":
+        scene_file = DEMSurface(Input=scene_file)  # noqa: F405
     scene_file.UpdatePipeline()
     lo_hi = scene_file.GetDataInformation().GetBounds()
     lo, hi = np.array(lo_hi[0::2]), np.array(lo_hi[1::2])
