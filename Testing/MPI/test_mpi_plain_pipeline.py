@@ -19,12 +19,11 @@ Usage: test_mpi_plain_pipeline.py CASE, CASE one of
   ChainMailDeformation get an empty piece on every rank but the first).
 A run that hangs is killed after 280 s and fails the test."""
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
-from mpi_driver import ENV, HERE, expect_same, fail, run_ranks, show
+from mpi_driver import ENV, HERE, expect_same, fail, plain_parameters, run_ranks, show, write_dem
 from paraview.simple import *  # noqa: F401,F403
 
 case = sys.argv[1]
@@ -41,25 +40,11 @@ def write_scene(path):
         source = Calculator(Input=box, ResultArrayName="Malleability")  # noqa: F405
         source.Function = "0.25*floor(3.999*abs(sin(0.3*coordsX+0.2*coordsY+0.5*coordsZ)))"
     elif scene == "dem":
-        write_dem(path)
+        write_dem(path)  # GDAL's gdal_translate
         return
     else:
         source = LayeredFaultScene()  # noqa: F405 (horizons cut by a fault: split nodes)
     SaveData(path, proxy=source)  # noqa: F405
-
-
-def write_dem(path):
-    """A 41 x 31 UTM (EPSG:32616) elevation GeoTIFF with a fault scarp, 30 m pixels:
-    an Esri ASCII grid turned into a GeoTIFF by gdal_translate."""
-    y, x = np.mgrid[0:31, 0:41].astype(float)
-    z = 200.0 + 3.0 * np.sin(0.3 * x) * np.cos(0.2 * y) + 25.0 / (1.0 + np.exp(-(x - 0.4 * y - 15.0)))
-    grid = path[:-4] + ".asc"
-    with open(grid, "w") as f:
-        f.write("ncols 41\nnrows 31\nxllcorner 500000\nyllcorner 3600000\ncellsize 30\n")
-        for row in z:
-            f.write(" ".join("%.17g" % v for v in row) + "\n")
-    subprocess.run(["gdal_translate", "-q", "-a_srs", "EPSG:32616", "-ot", "Float64", grid, path],
-                   check=True)
 
 
 def run(n, path, out):
@@ -82,15 +67,8 @@ with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as t
     if scene == "dem":
         scene_file = DEMSurface(Input=scene_file)  # noqa: F405
     scene_file.UpdatePipeline()
-    lo_hi = scene_file.GetDataInformation().GetBounds()
-    lo, hi = np.array(lo_hi[0::2]), np.array(lo_hi[1::2])
-    ENV["PLAIN_GRASP"] = " ".join(repr(x) for x in lo + np.array([0.5, 0.5, 1.0]) * (hi - lo))
-    pull = 80000.0 if scene == "cascadia" else 0.08 * float((hi - lo).max())  # UTM metres
-    ENV["PLAIN_PULL"] = " ".join(repr(x) for x in [0.0, 0.0, pull])
-    # Geodesic dabs: one across the middle (rank borders), one rigid spot off it.
-    c, r = lo + 0.5 * (hi - lo), float((hi - lo).max())
-    ENV["PLAIN_DABS"] = " ".join(repr(float(x)) for x in
-                                 list(c) + [0.3 * r, 1.0, 0.7] + list(lo + 0.3 * (hi - lo)) + [0.15 * r, 0.0, 1.0])
+    plain_parameters(scene_file.GetDataInformation().GetBounds(),
+                     80000.0 if scene == "cascadia" else None)  # UTM metres
     results, grasped = {}, {}
     for n in (1, 2, 3):
         out = os.path.join(tmp, "n%d" % n)
