@@ -63,6 +63,15 @@ Eigen::Vector3d faded(const Eigen::Vector3d& f, double g, double f_max)
   return n > f_max ? Eigen::Vector3d(f * (g * f_max / n)) : Eigen::Vector3d(g * f);
 }
 
+// The energy of a spring of stiffness k stretched by d whose force is clamped to f_max:
+// k d^2 / 2 up to d = f_max / k, then f_max d - f_max^2 / (2 k).
+double spring_energy(double k, double d, double f_max)
+{
+  if (!(k > 0.0))
+    return 0.0;
+  return k * d <= f_max ? 0.5 * k * d * d : f_max * d - f_max * f_max / (2.0 * k);
+}
+
 } // namespace
 
 ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
@@ -111,8 +120,11 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
     fade->contact = gain.contact = toward(std::clamp(fade->contact, 0.0, 1.0), gain.contact);
   }
 
+  const Eigen::Vector3d uncarried = proxy.position();
+  const bool was_in_contact = proxy.in_contact();
   proxy.carry_over(
     scene.sequence, scene.contact_triangles, params.proxy_reach, params.proxy_clearance);
+  const Eigen::Vector3d carried = proxy.position();
   proxy.update(in.position, scene.contact_triangles, params.proxy_clearance, params.proxy_reach);
   const bool contact = proxy.in_contact();
   const bool coupled = scene.grasping && gain.coupling > 0.0;
@@ -135,10 +147,24 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   }
 
   ForceResult r;
+  const double f_max = std::max(0.0, limits.max_force);
+  if (contact && was_in_contact && carried != uncarried)
+  {
+    // The spring's energy before and after the scene carried the proxy, at this stylus
+    // position.
+    r.scene_work =
+      std::max(0.0, gain.contact * (spring_energy(k_c, (carried - in.position).norm(), f_max) -
+                                     spring_energy(k_c, (uncarried - in.position).norm(), f_max)));
+  }
+  if (contact)
+    r.stored_energy +=
+      gain.contact * spring_energy(k_c, (proxy.position() - in.position).norm(), f_max);
+  if (coupled)
+    r.stored_energy +=
+      gain.coupling * spring_energy(k_g, (scene.grasp_anchor - in.position).norm(), f_max);
   r.status = stale ? ForceStatus::stale_scene : ForceStatus::ok;
   r.in_contact = contact;
   r.proxy = proxy.position();
-  const double f_max = std::max(0.0, limits.max_force);
   if (coupled)
     r.force +=
       faded(k_g * (scene.grasp_anchor - in.position) - b_g * in.velocity, gain.coupling, f_max);

@@ -13,6 +13,7 @@ void ServoTick::reset()
 {
   this->proxy_.reset();
   this->fade_ = ForceFade();
+  this->passivity_.reset();
   this->velocity_.setZero();
   this->have_last_ = false;
 }
@@ -46,7 +47,13 @@ ForceResult ServoTick::tick(const DeviceSample& sample, bool device_ok, Clock::t
   in.velocity = this->velocity_;
   in.device_ok = device_ok;
   in.now = now;
-  return compute_force(in, scene, this->params_, limits, this->proxy_, &this->fade_);
+  const ForceFade before = this->fade_;
+  ForceResult r = compute_force(in, scene, this->params_, limits, this->proxy_, &this->fade_);
+  const bool fault = r.status == ForceStatus::device_error || r.status == ForceStatus::non_finite;
+  const bool faded =
+    this->fade_.coupling != before.coupling || this->fade_.contact != before.contact;
+  r.force = this->passivity_.control(sample.position, !fault, r, faded, this->params_, limits);
+  return r;
 }
 
 } // namespace geoshaping::haptics

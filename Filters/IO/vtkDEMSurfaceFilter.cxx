@@ -16,6 +16,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -146,6 +147,17 @@ int vtkDEMSurfaceFilter::RequestData(
                   << (input ? input->GetClassName() : "nothing") << ".");
     return 0;
   }
+  // Several pieces: an empty raster is this process's piece, and a failure must not stop
+  // the pipeline here while the other processes go on into the collectives below.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const bool parallel =
+    outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
+  if (parallel && image->GetNumberOfPoints() == 0)
+  {
+    output->Initialize();
+    return 1;
+  }
   // Every failure, std::bad_alloc included, is an error and an empty output.
   try
   {
@@ -175,7 +187,7 @@ int vtkDEMSurfaceFilter::RequestData(
   {
     output->Initialize();
     vtkErrorMacro("DEMSurface: " << e.what() << ".");
-    return 0;
+    return parallel ? 1 : 0;
   }
   return 1;
 }

@@ -25,6 +25,11 @@
  * Bad input (not image data, several arrays or components, no CRS, a CRS PROJ cannot
  * use, an unreadable NO_DATA_VALUE, an empty image as a failed reader leaves, fewer than
  * 2 x 2 samples, out of memory): one vtkErrorMacro naming the problem, an empty output.
+ * In parallel (several pieces requested: an MPI server or pvbatch) an empty image is a
+ * piece like any other (GDALRasterReader gives the raster to one process): an empty
+ * output, no error. There a bad raster is an error and an empty output too, but not a
+ * failed request, so that the filters below it run on every process and none waits for
+ * ever in a collective the others never reach (docs/mpi.md, "Empty pieces").
  * Memory and time: docs/readers.md, "Elevation rasters".
  */
 #ifndef vtkDEMSurfaceFilter_h

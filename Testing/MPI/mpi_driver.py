@@ -61,3 +61,30 @@ def expect_same(rows, one, n, what="1 rank"):
         diff = np.abs(rows - one).max() if rows.shape == one.shape else (
             "shape %s vs %s" % (rows.shape, one.shape))
         fail("%d ranks differ from %s (max difference %s)" % (n, what, diff))
+
+
+def write_dem(path):
+    """A 41 x 31 UTM (EPSG:32616) elevation GeoTIFF with a fault scarp, 30 m pixels, at
+    `path`: an Esri ASCII grid turned into a GeoTIFF by gdal_translate."""
+    y, x = np.mgrid[0:31, 0:41].astype(float)
+    z = 200.0 + 3.0 * np.sin(0.3 * x) * np.cos(0.2 * y) + 25.0 / (1.0 + np.exp(-(x - 0.4 * y - 15.0)))
+    grid = path[:-4] + ".asc"
+    with open(grid, "w") as f:
+        f.write("ncols 41\nnrows 31\nxllcorner 500000\nyllcorner 3600000\ncellsize 30\n")
+        for row in z:
+            f.write(" ".join("%.17g" % v for v in row) + "\n")
+    subprocess.run(["gdal_translate", "-q", "-a_srs", "EPSG:32616", "-ot", "Float64", grid, path],
+                   check=True)
+
+
+def plain_parameters(bounds, pull=None):
+    """The plain pipeline's parameters (mpi_pipeline.plain_pipeline) from the scene's
+    `bounds` (xmin, xmax, ...) into ENV: grasp at the top middle, pull up by `pull` or 8 %
+    of the size, geodesic dabs: one across the middle (rank borders), one rigid spot off it."""
+    lo, hi = np.array(bounds[0::2]), np.array(bounds[1::2])
+    ENV["PLAIN_GRASP"] = " ".join(repr(x) for x in lo + np.array([0.5, 0.5, 1.0]) * (hi - lo))
+    pull = 0.08 * float((hi - lo).max()) if pull is None else pull
+    ENV["PLAIN_PULL"] = " ".join(repr(x) for x in [0.0, 0.0, pull])
+    c, r = lo + 0.5 * (hi - lo), float((hi - lo).max())
+    ENV["PLAIN_DABS"] = " ".join(repr(float(x)) for x in
+                                 list(c) + [0.3 * r, 1.0, 0.7] + list(lo + 0.3 * (hi - lo)) + [0.15 * r, 0.0, 1.0])

@@ -1,6 +1,8 @@
 """What the MPI test scripts (mpi_*.py) share: the undistributed data's point ids as
 GlobalIds, then ParaView's own distribution (RedistributeDataSet + one ghost level), as a
 user's pipeline on an MPI server gives it to the GeoShaping filters."""
+import os
+
 from paraview.simple import GhostCellsGenerator, ProgrammableFilter, RedistributeDataSet
 
 # A ProgrammableFilter script: point GlobalIds = the point ids of its input.
@@ -65,3 +67,42 @@ def owned_rows(output, rest, nranks, extra=()):
     columns += [vtk_to_numpy(rest.GetPointData().GetArray(name)).astype(float)[owned]
                 for name in extra]
     return np.column_stack(columns)
+
+
+def plain_pipeline(case, path, simple):
+    """(upstream, chain): the pipeline of mpi_plain.py (CASE: reader, redistribute, d3,
+    ids, paint, unsplitpaint) on the file `path` (.vtp, .vtu, .ts, or a GeoTIFF into
+    DEMSurface), its parameters from the environment (PLAIN_GRASP, PLAIN_PULL,
+    PLAIN_DABS: mpi_driver.plain_parameters). `simple`: the namespace holding
+    paraview.simple and the plugin's proxies (the caller's globals() after LoadPlugin)."""
+    def floats(name):
+        return [float(x) for x in os.environ[name].split()]
+
+    if path.endswith(".ts"):
+        reader = simple["GOCADTSurfReader"](FileName=path)
+    elif path.endswith(".tif"):  # the raster on rank 0 alone: an empty one on the others
+        reader = simple["DEMSurface"](Input=simple["GDALRasterReader"](FileName=path))
+    else:
+        reader = simple["XMLPolyDataReader" if path.endswith(".vtp") else "XMLUnstructuredGridReader"](
+            FileName=[path])
+    upstream = reader
+    if case == "ids":  # point GlobalIds (the file's point ids), then distributed
+        upstream = ProgrammableFilter(Input=reader)
+        upstream.Script = POINT_INDEX_IDS
+    if case in ("redistribute", "ids", "paint"):
+        upstream = RedistributeDataSet(Input=upstream)
+    elif case == "d3":
+        upstream = simple["D3"](Input=upstream)
+    if case in ("paint", "unsplitpaint"):  # unsplit: the ranks but the reading one have nothing
+        upstream = simple["MalleabilityPaint"](Input=upstream)
+        upstream.InitialMalleability = 0.6
+        upstream.Falloff = "Smooth"
+        upstream.DistanceMode = "Geodesic"
+        upstream.Dabs = floats("PLAIN_DABS")
+    chain = simple["ChainMailDeformation"](Input=upstream)
+    chain.CandidateQueue = "FIFO Priority"
+    chain.OutputPointsPrecision = "Double"
+    chain.GraspMode = "Nearest To Position"
+    chain.GraspPosition = floats("PLAIN_GRASP")
+    chain.Displacement = floats("PLAIN_PULL")
+    return upstream, chain

@@ -4,7 +4,9 @@ builds, with nothing added for MPI: a file reader, optionally RedistributeDataSe
 ChainMailDeformation grasping the point nearest a position. No GhostCellsGenerator: the
 filters make the ghost ring they need. Writes every owned point's (rest x, y, z,
 deformed x, y, z, malleability) to OUT/result.npy on rank 0 (one row per position on several
-ranks: the copies of a seam point that D3 leaves unflagged on every rank must agree). Arguments: CASE FILE OUT (CASE: reader, redistribute, d3, ids, paint)."""
+ranks: the copies of a seam point that D3 leaves unflagged on every rank must agree). Arguments: CASE FILE OUT (CASE: reader, redistribute, d3, ids, paint,
+unsplitpaint; FILE a .vtp, .vtu, .ts or, into
+DEMSurface, a GeoTIFF)."""
 import os
 import sys
 
@@ -18,33 +20,9 @@ controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pipeline import POINT_INDEX_IDS  # noqa: E402
+from mpi_pipeline import plain_pipeline  # noqa: E402
 
-if path.endswith(".ts"):
-    reader = GOCADTSurfReader(FileName=path)  # noqa: F405
-else:
-    reader = (XMLPolyDataReader if path.endswith(".vtp") else XMLUnstructuredGridReader)(  # noqa: F405
-        FileName=[path])
-upstream = reader
-if case == "ids":  # point GlobalIds (the file's point ids), then distributed
-    upstream = ProgrammableFilter(Input=reader)  # noqa: F405
-    upstream.Script = POINT_INDEX_IDS
-if case in ("redistribute", "ids", "paint"):
-    upstream = RedistributeDataSet(Input=upstream)  # noqa: F405
-elif case == "d3":
-    upstream = D3(Input=upstream)  # noqa: F405
-if case == "paint":
-    upstream = MalleabilityPaint(Input=upstream)  # noqa: F405
-    upstream.InitialMalleability = 0.6
-    upstream.Falloff = "Smooth"
-    upstream.DistanceMode = "Geodesic"
-    upstream.Dabs = [float(x) for x in os.environ["PLAIN_DABS"].split()]
-chain = ChainMailDeformation(Input=upstream)  # noqa: F405
-chain.CandidateQueue = "FIFO Priority"
-chain.OutputPointsPrecision = "Double"
-chain.GraspMode = "Nearest To Position"
-chain.GraspPosition = [float(x) for x in os.environ["PLAIN_GRASP"].split()]
-chain.Displacement = [float(x) for x in os.environ["PLAIN_PULL"].split()]
+upstream, chain = plain_pipeline(case, path, globals())
 chain.UpdatePipeline()
 
 # Owned points: not flagged DUPLICATEPOINT (all of them without vtkGhostType).

@@ -44,6 +44,16 @@ struct ForceParams
   // s for a force to fade from full to zero or back (ForceFade): 1 / 100 of it a tick at
   // 1 kHz, at most 0.033 N a tick at 3.3 N max force.
   double fade_time = 0.1;
+
+  // ServoTick's passivity observer and controller (passivity.h): the rendered force's work
+  // on the stylus kept from being positive by a variable damper, so that a display is
+  // passive without the device's own damping. Off: the force compute_force gives, as is.
+  bool passivity_control = true;
+  // J the controller keeps the observed work below zero by: the observer reads quantised
+  // positions, and the true work differs from the observed by the force times the
+  // quantisation error; 50 uJ covers it in every run of the hand simulator
+  // (docs/haptics.md, "Passivity").
+  double passivity_margin = 50e-6;
 };
 
 // What compute_force keeps from tick to tick beside the proxy: the fraction (0 to 1) of
@@ -91,6 +101,13 @@ struct ForceResult
   ForceStatus status = ForceStatus::ok;
   bool in_contact = false;
   Eigen::Vector3d proxy = Eigen::Vector3d::Zero(); // the proxy after this tick
+  // J: the energy the scene's own motion put into the contact spring this tick (carry_over
+  // moving the proxy with a surface that moved, at this tick's stylus position; 0 when it
+  // took energy out): work the passivity controller lets the rendering pass on.
+  double scene_work = 0.0;
+  // J: the energy the springs acting hold (each clamped at max force, times its fade): what
+  // they give back to a stylus that lets go (the passivity controller's reserve).
+  double stored_energy = 0.0;
 };
 
 // With x the stylus position, v its velocity, p the proxy after proxy.update(x) on the

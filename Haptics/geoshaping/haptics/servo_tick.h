@@ -4,6 +4,7 @@
 // the hand simulator (hand_sim.h) runs the very same code against a simulated device.
 // No allocation, no lock.
 #include "geoshaping/haptics/force_model.h"
+#include "geoshaping/haptics/passivity.h"
 
 namespace geoshaping::haptics
 {
@@ -21,13 +22,15 @@ public:
   void reset();
 
   // One tick: updates the velocity from `sample` (a failed read or a non-finite position
-  // zeroes it), then compute_force with the proxy and the fades kept here.
+  // zeroes it), then compute_force with the proxy and the fades kept here, then the
+  // passivity controller (passivity.h) on its force.
   ForceResult tick(const DeviceSample& sample, bool device_ok, Clock::time_point now,
     const SceneSnapshot& scene, const DeviceLimits& limits);
 
   const Eigen::Vector3d& velocity() const { return this->velocity_; }
   const ContactProxy& proxy() const { return this->proxy_; }
   const ForceFade& fade() const { return this->fade_; }
+  const PassivityController& passivity() const { return this->passivity_; }
   const ForceParams& params() const { return this->params_; }
 
 private:
@@ -35,6 +38,7 @@ private:
   double velocity_filter_s_;
   ContactProxy proxy_;
   ForceFade fade_;
+  PassivityController passivity_;
   Eigen::Vector3d last_position_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
   double last_t_ = 0.0;

@@ -116,7 +116,7 @@ bool DeviceModel::named(const std::string& name, DeviceModel& model)
 
 std::vector<TrajectoryRow> simulate_hand(const SceneAt& scene, const std::vector<HandKey>& hand,
   const Eigen::Vector3d& start, const DeviceModel& model, const HandSimOptions& options,
-  double* injected)
+  double* injected, double* rendered_work)
 {
   std::vector<TrajectoryRow> rows;
   const double T = model.period;
@@ -193,6 +193,8 @@ std::vector<TrajectoryRow> simulate_hand(const SceneAt& scene, const std::vector
   }
   if (injected && !rows.empty())
     *injected = work + stored(rows.back()) - stored(rows.front()) - damped;
+  if (rendered_work)
+    *rendered_work = work;
   return rows;
 }
 

@@ -95,9 +95,13 @@ using SceneAt = std::function<void(double t, std::vector<Eigen::Vector3d>& soup)
 // k_g |anchor - x|^2 / 2; "in contact" counts the grasp's ticks too. An ideal continuous
 // spring gives sum F . dx = -dU; the zero-order hold gives more (about K T / 2 per unit
 // of v^2 dt), which a passive display (b > K T / 2) dissipates: E <= 0.
+// `rendered_work` (if not null) gets the first term alone, the work of the rendered force
+// on the stylus over the run (true positions), sum F_render . dx: what the passivity
+// controller (passivity.h) keeps from being positive on its own, without the device's
+// damping.
 std::vector<TrajectoryRow> simulate_hand(const SceneAt& scene, const std::vector<HandKey>& hand,
   const Eigen::Vector3d& start, const DeviceModel& model, const HandSimOptions& options,
-  double* injected = nullptr);
+  double* injected = nullptr, double* rendered_work = nullptr);
 
 // TRAJECTORY.csv: a header `t,x,y,z,fx,fy,fz,px,py,pz,contact`, one row per tick, 17
 // significant digits, contact 0/1.
