@@ -22,6 +22,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnstructuredGrid.h"
 
+#include "geoshaping/mesh/triangle_grid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -83,6 +85,18 @@ struct CellArrayVisitor
   }
 };
 
+// Whether a cell array is a triangulated grid (geoshaping/mesh/triangle_grid.h).
+struct TriangleGridWorker
+{
+  template<class State>
+  void operator()(
+    State& state, geoshaping::index_t n, geoshaping::TriangleGrid* grid, bool* found) const
+  {
+    *found = geoshaping::triangle_grid_of(state.GetOffsets()->GetPointer(0),
+      state.GetConnectivity()->GetPointer(0), state.GetNumberOfCells(), n, grid);
+  }
+};
+
 // out = points as doubles, through the array's own value type.
 struct PointsWorker
 {
@@ -100,7 +114,18 @@ geoshaping::Adjacency vtkGeoShapingAdapter::BuildAdjacency(vtkDataSet* input, vt
   const auto n = geoshaping::index_t(input->GetNumberOfPoints());
   std::int64_t refused = 0;
   geoshaping::Adjacency adjacency;
-  if (auto* pd = vtkPolyData::SafeDownCast(input))
+  auto* pd = vtkPolyData::SafeDownCast(input);
+  geoshaping::TriangleGrid grid;
+  bool found = false;
+  if (pd && pd->GetNumberOfVerts() == 0 && pd->GetNumberOfLines() == 0 &&
+      pd->GetNumberOfStrips() == 0 && pd->GetNumberOfPolys() > 0)
+    pd->GetPolys()->Visit(TriangleGridWorker(), n, &grid, &found);
+  if (found)
+  {
+    // A DEM's grid: the rows from the rows and columns, no cell walked twice.
+    adjacency = geoshaping::grid_adjacency(grid);
+  }
+  else if (pd)
   {
     // The four cell arrays walked directly: no per-cell dispatch on large surfaces.
     const auto cells = [pd](const auto& visit)

@@ -8,6 +8,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "geoshaping/mesh/bit_cast.h"
+#include "geoshaping/mesh/huge_pages.h"
 #include "geoshaping/parallel/coordinate_ids.h"
 
 #include <cmath>
@@ -191,6 +192,11 @@ void vtkChainMailDeformationFilter::BuildOutputCaches(vtkPointSet* input, const 
                           ? VTK_DOUBLE
                           : inPoints->GetDataType();
   state.OutputPoints->SetDataType(precision);
+  // Sized first, in fresh storage advised for huge pages, for the copy to fill (page
+  // faults are most of a big copy's cost: geoshaping/mesh/huge_pages.h).
+  state.OutputPoints->SetNumberOfPoints(n);
+  geoshaping::advise_huge_pages(state.OutputPoints->GetVoidPointer(0),
+    std::size_t(3 * n) * std::size_t(state.OutputPoints->GetData()->GetDataTypeSize()));
   state.OutputPoints->DeepCopy(inPoints);
   if (state.OutputPoints->GetDataType() != precision)
   {

@@ -208,19 +208,13 @@ TEST(CoordinateIds, PiecesCountTheirOwnCoincidentPoints)
   EXPECT_EQ(counted[1], 0);
 }
 
-TEST(CoordinateIds, OnePieceIdsAreTheRanksOfCoordinatesThenPointIds)
+namespace
 {
-  // Magnitudes from 1e-300 to 1e300 of both signs, zeros of both signs, repeats.
-  std::mt19937 rng(21);
-  std::uniform_int_distribution<int> pick(0, 40), exponent(-300, 300);
-  std::vector<double> values;
-  for (int i = 0; i < 40; ++i)
-    values.push_back((i % 2 ? -1.0 : 1.0) * std::ldexp(1.0 + i / 64.0, exponent(rng)));
-  values.insert(values.end(), { 0.0, -0.0 });
-  std::vector<double> xyz;
-  for (int i = 0; i < 3 * 5000; ++i)
-    xyz.push_back(values[std::size_t(pick(rng))]);
-  const index_t n = 5000;
+// coordinate_ids on one piece against std::sort of (x, y, z, point id), and its count of
+// points coincident with an earlier one.
+void expect_ranks_of_coordinates_then_point_ids(const std::vector<double>& xyz)
+{
+  const index_t n = index_t(xyz.size() / 3);
   std::vector<index_t> order(static_cast<std::size_t>(n));
   for (index_t v = 0; v < n; ++v)
     order[std::size_t(v)] = v;
@@ -245,4 +239,40 @@ TEST(CoordinateIds, OnePieceIdsAreTheRanksOfCoordinatesThenPointIds)
     }
   }
   EXPECT_EQ(coincident, repeated);
+}
+} // namespace
+
+TEST(CoordinateIds, OnePieceIdsAreTheRanksOfCoordinatesThenPointIds)
+{
+  // Magnitudes from 1e-300 to 1e300 of both signs, zeros of both signs, repeats.
+  std::mt19937 rng(21);
+  std::uniform_int_distribution<int> pick(0, 40), exponent(-300, 300);
+  std::vector<double> values;
+  for (int i = 0; i < 40; ++i)
+    values.push_back((i % 2 ? -1.0 : 1.0) * std::ldexp(1.0 + i / 64.0, exponent(rng)));
+  values.insert(values.end(), { 0.0, -0.0 });
+  std::vector<double> xyz;
+  for (int i = 0; i < 3 * 5000; ++i)
+    xyz.push_back(values[std::size_t(pick(rng))]);
+  expect_ranks_of_coordinates_then_point_ids(xyz);
+}
+
+TEST(CoordinateIds, OnePieceNumbersGridColumnsInEitherRowOrder)
+{
+  // A DEM's grid (equal x down each column): rows north to south (each column's run in
+  // decreasing y, reversed), south to north (already in order), and with a column that
+  // is neither (a repeated point, a point out of place, -0 against +0).
+  for (const bool north_first : { true, false })
+  {
+    std::vector<double> xyz;
+    for (int r = 0; r < 30; ++r)
+      for (int c = 0; c < 20; ++c)
+        xyz.insert(xyz.end(), { 500000.0 + 10.0 * c, 4000000.0 + 10.0 * (north_first ? 29 - r : r),
+                                300.0 + std::sin(0.7 * r + 0.3 * c) });
+    expect_ranks_of_coordinates_then_point_ids(xyz);
+    xyz.insert(
+      xyz.end(), { 500000.0, 4000100.0, 300.0, 500000.0, 4000100.0, 300.0, 500000.0, 4000100.0,
+                   299.0, 500000.0, 3999000.0, 0.0, 500000.0, 3999000.0, -0.0 });
+    expect_ranks_of_coordinates_then_point_ids(xyz);
+  }
 }

@@ -1,6 +1,7 @@
 #include "geoshaping/deform/chainmail_deformer.h"
 
 #include "geoshaping/deform/valid_region.h"
+#include "geoshaping/mesh/huge_pages.h"
 #include "geoshaping/mesh/morton.h"
 #include "geoshaping/mesh/prefetch.h"
 #include "geoshaping/mesh/radix_sort.h"
@@ -22,6 +23,7 @@ namespace
 template<class T, class S, class F>
 void to_inner(std::vector<T>& out, const S* values, const std::vector<index_t>& outer_of, F f)
 {
+  fresh_huge(out, outer_of.size());
   out.resize(outer_of.size());
   for (std::size_t i = 0; i < outer_of.size(); ++i)
     out[i] = f(values[std::size_t(outer_of[i])]);
@@ -55,7 +57,7 @@ void ChainMailDeformer::set_mesh(const double* xyz, index_t n, Adjacency adjacen
 void ChainMailDeformer::set_mesh(
   const double* xyz, index_t n, Adjacency adjacency, const Eigen::Vector3d& origin)
 {
-  const Adjacency adj = std::move(adjacency); // the internal copy replaces it below
+  Adjacency adj = std::move(adjacency); // the internal copy replaces it below
   {
     std::lock_guard<std::mutex> lock(caller_adjacency_mutex());
     caller_adjacency_.reset();
@@ -67,7 +69,9 @@ void ChainMailDeformer::set_mesh(
   // Internal order: Morton code of the rest position on a 2^21 lattice over the bounding
   // box (ties and non-finite positions by caller id, the latter last).
   const std::size_t un = std::size_t(std::max<index_t>(n, 0));
-  std::vector<std::pair<std::uint64_t, index_t>> order(un);
+  std::vector<std::pair<std::uint64_t, index_t>> order;
+  fresh_huge(order, un);
+  order.resize(un);
   const Eigen::Vector3d extent = hi - lo;
   for (index_t v = 0; v < n; ++v)
   {
@@ -79,7 +83,9 @@ void ChainMailDeformer::set_mesh(
     std::vector<std::pair<std::uint64_t, index_t>> scratch;
     radix_sort(order, scratch, [](const std::pair<std::uint64_t, index_t>& r) { return r.first; });
   }
+  fresh_huge(inner_of_, un);
   inner_of_.resize(un);
+  fresh_huge(outer_of_, un);
   outer_of_.resize(un);
   for (std::size_t i = 0; i < un; ++i)
   {
@@ -94,7 +100,9 @@ void ChainMailDeformer::set_mesh(
   // in memory next to them (checked).
   if (adj.neighbors.size() > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("ChainMailDeformer: more than 2^32 adjacency entries");
+  fresh_huge(offsets_, un + 1);
   offsets_.assign(un + 1, 0);
+  fresh_huge(neighbors_, adj.neighbors.size());
   neighbors_.resize(adj.neighbors.size());
   const bool has_adjacency = adj.size() == n;
   for (std::size_t i = 0; i < un; ++i)
@@ -107,7 +115,9 @@ void ChainMailDeformer::set_mesh(
     offsets_[i + 1] = k;
   }
   neighbors_.resize(offsets_[un]);
+  adj = Adjacency(); // freed before the nodes are made: a big mesh's peak is lower
 
+  fresh_huge(nodes_, un);
   nodes_.resize(un);
   for (std::size_t i = 0; i < un; ++i)
   {
@@ -116,6 +126,7 @@ void ChainMailDeformer::set_mesh(
     nodes_[i].stamp = 0;
     nodes_[i].rank = 0;
   }
+  fresh_huge(slot_, un);
   slot_.assign(un, 0);
   pinned_.clear();
   pinned_inner_.clear();

@@ -55,8 +55,10 @@ void merge_rows(Adjacency& rows)
         neighbors[kept++] = *it;
   }
   rows.offsets.back() = kept;
-  rows.neighbors.resize(std::size_t(kept));
-  rows.neighbors.shrink_to_fit();
+  std::vector<index_t> merged; // shrink_to_fit's copy, in fresh pages
+  fresh_huge(merged, std::size_t(kept));
+  merged.assign(neighbors, neighbors + kept);
+  rows.neighbors.swap(merged);
 }
 
 } // namespace geoshaping

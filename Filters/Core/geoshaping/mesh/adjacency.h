@@ -1,5 +1,7 @@
 #pragma once
 // Vertex adjacency (vertices that share a cell edge) in compressed sparse row form.
+#include "geoshaping/mesh/huge_pages.h"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -159,6 +161,7 @@ Adjacency adjacency_of_cells(
   index_t num_points, const ForEachCell& for_each_cell, std::int64_t* skipped)
 {
   Adjacency rows;
+  fresh_huge(rows.offsets, std::size_t(num_points > 0 ? num_points : 0) + 1);
   rows.offsets.assign(std::size_t(num_points > 0 ? num_points : 0) + 1, 0);
   std::int64_t* const offsets = rows.offsets.data();
   std::int64_t refused = 0;
@@ -180,6 +183,7 @@ Adjacency adjacency_of_cells(
     offsets[v] = start;
     start += degree;
   }
+  fresh_huge(rows.neighbors, std::size_t(start));
   rows.neighbors.resize(std::size_t(start));
   index_t* const neighbors = rows.neighbors.data();
   for_each_cell(

@@ -4,6 +4,8 @@
 // pass, and a pass whose digit is the same in every record is skipped (coordinates of one
 // magnitude share their exponent bits, float elevations their low mantissa). O(n) a pass,
 // one scratch copy of the records.
+#include "geoshaping/mesh/huge_pages.h"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -27,6 +29,8 @@ void radix_sort(std::vector<Record>& records, std::vector<Record>& scratch, cons
     for (int p = 0; p < passes; ++p)
       ++count[std::size_t(p)][(k >> (bits * p)) & (buckets - 1)];
   }
+  if (scratch.capacity() < records.size())
+    fresh_huge(scratch, records.size());
   scratch.resize(records.size());
   for (int p = 0; p < passes; ++p)
   {

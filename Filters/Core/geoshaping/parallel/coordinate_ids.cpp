@@ -1,11 +1,13 @@
 #include "geoshaping/parallel/coordinate_ids.h"
 
 #include "geoshaping/mesh/bit_cast.h"
+#include "geoshaping/mesh/huge_pages.h"
 #include "geoshaping/mesh/radix_sort.h"
 
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <utility>
 
 namespace geoshaping
 {
@@ -55,8 +57,11 @@ std::vector<Key> keys_of(const double* xyz, index_t n)
 
 std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, index_t* coincident)
 {
-  // The order of (x, y, z, v): stable sorts by z, then y, then x, from the order of v.
-  // The key of a coordinate as unsigned: ordered_bits with its sign bit flipped.
+  // The order of (x, y, z, v): a stable sort by x from the order of v, then each run of
+  // equal x put in (y, z) order, stably. A run already in order stays; one in strictly
+  // decreasing order is reversed (a DEM's columns, whose rows run north to south); any
+  // other is sorted stably by z, then by y. The key of a coordinate as unsigned:
+  // ordered_bits with its sign bit flipped.
   struct Record
   {
     std::uint64_t key;
@@ -67,27 +72,54 @@ std::vector<std::int64_t> coordinate_ids(const double* xyz, index_t n, index_t* 
     return std::uint64_t(ordered_bits(xyz[3 * std::size_t(v) + std::size_t(axis)])) ^
            (std::uint64_t(1) << 63);
   };
-  std::vector<Record> order(static_cast<std::size_t>(n)), scratch;
+  const auto by_key = [](const Record& r) { return r.key; };
+  std::vector<Record> order, scratch;
+  fresh_huge(order, std::size_t(n));
+  order.resize(std::size_t(n));
   for (index_t v = 0; v < n; ++v)
-    order[std::size_t(v)].v = v;
-  for (int axis = 2; axis >= 0; --axis)
-  {
-    for (Record& r : order)
-      r.key = key(r.v, axis);
-    radix_sort(order, scratch, [](const Record& r) { return r.key; });
-  }
+    order[std::size_t(v)] = { key(v, 0), v };
+  radix_sort(order, scratch, by_key);
   std::vector<Record>().swap(scratch);
-  std::vector<std::int64_t> ids(static_cast<std::size_t>(n));
+  std::vector<Record> run;
+  const auto yz = [&key](index_t v) { return std::make_pair(key(v, 1), key(v, 2)); };
+  for (std::size_t first = 0, last = 0; first < order.size(); first = last)
+  {
+    bool ascending = true, descending = true;
+    auto previous = yz(order[first].v);
+    for (last = first + 1; last < order.size() && order[last].key == order[first].key; ++last)
+    {
+      const auto next = yz(order[last].v);
+      ascending = ascending && !(next < previous);
+      descending = descending && next < previous;
+      previous = next;
+    }
+    if (ascending)
+      continue;
+    if (descending)
+    {
+      std::reverse(order.begin() + std::ptrdiff_t(first), order.begin() + std::ptrdiff_t(last));
+      continue;
+    }
+    run.assign(order.begin() + std::ptrdiff_t(first), order.begin() + std::ptrdiff_t(last));
+    for (int axis = 2; axis >= 1; --axis)
+    {
+      for (Record& r : run)
+        r.key = key(r.v, axis);
+      radix_sort(run, scratch, by_key);
+    }
+    for (std::size_t i = first; i < last; ++i)
+      order[i].v = run[i - first].v;
+  }
+  std::vector<std::int64_t> ids;
+  fresh_huge(ids, std::size_t(n));
+  ids.resize(std::size_t(n));
   index_t repeated = 0;
   for (std::size_t i = 0; i < order.size(); ++i)
   {
     const index_t v = order[i].v;
     ids[std::size_t(v)] = std::int64_t(i);
-    if (i > 0)
-    {
-      const index_t u = order[i - 1].v;
-      repeated += key(u, 0) == key(v, 0) && key(u, 1) == key(v, 1) && key(u, 2) == key(v, 2);
-    }
+    if (i > 0 && order[i - 1].key == order[i].key)
+      repeated += yz(order[i - 1].v) == yz(v);
   }
   if (coincident)
     *coincident = repeated;
