@@ -1,4 +1,5 @@
 #include "vtkChainMailDeformationFilterInternals.h"
+#include "vtkFieldData.h"
 
 using namespace vtkChainMailDeformationFilterDetail;
 
@@ -103,6 +104,18 @@ int vtkChainMailDeformationFilter::RequestData(
   if (n > 0)
   {
     this->WriteOutput(input, output, stale, touched);
+  }
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    // What the obstacles held back, for the Information panel (a copy of the input's
+    // field data with one more array; the input's is left as it is).
+    vtkNew<vtkFieldData> fields;
+    fields->ShallowCopy(input->GetFieldData());
+    vtkNew<vtkIdTypeArray> blocked;
+    blocked->SetName("ObstacleBlockedPoints");
+    blocked->InsertNextValue(this->Statistics.NumberOfObstacleBlockedPoints);
+    fields->AddArray(blocked);
+    output->SetFieldData(fields);
   }
   return 1;
 }

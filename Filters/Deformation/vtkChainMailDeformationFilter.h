@@ -393,6 +393,10 @@ public:
   /// haptic coupling should pull), the vertices an obstacle held back: by the frame and
   /// by the refinement and relaxation passes' gate (a vertex held back by the frame and
   /// again by a pass, or by both passes, counts each time), and the passes' part of it.
+  /// With a connection on port 1 the output's field data also holds the held-back count
+  /// as the one-value vtkIdTypeArray "ObstacleBlockedPoints" (the Information panel's).
+  /// A connection whose data set has no points is no obstacle (nothing chosen in the
+  /// panel's Pipeline Connection); any other obstacle without polygons is refused.
   double GetLastGraspObstacleFraction() { return this->Statistics.LastGraspObstacleFraction; }
   bool GetLastGraspBlocked() { return this->Statistics.LastGraspObstacleFraction < 1.0; }
   vtkIdType GetNumberOfObstacleBlockedPoints()
@@ -536,6 +540,7 @@ private:
   // A quiet fall-back is reported once per distinct message, not on every drag frame.
   void WarnOnce(const std::string& message);
   void UpdateNormals(vtkIdTypeArray* changed);
+  void UpdateElevation(vtkPointSet* input, vtkPointSet* output, vtkIdTypeArray* changed);
   void WriteOutput(vtkPointSet* input, vtkPointSet* output, const std::vector<int>& stale,
     const std::vector<int>& touched);
 

@@ -115,6 +115,13 @@ struct vtkChainMailDeformationFilter::vtkInternals
   geoshaping::SparseNormals Normals;
   vtkSmartPointer<vtkDataArray> OutputNormals;
   std::vector<geoshaping::index_t> Affected, NormalsMoved; // scratch of UpdateNormals
+  // A DEM's elevation follows the shape: when the input has the point array "Elevation"
+  // (DEM Surface's), the output's "Elevation" is it moved by each vertex's change of z,
+  // rewritten for the changed vertices each update (all of them when the input's array
+  // or points change), and the input's array is passed as "RestElevation".
+  vtkSmartPointer<vtkDoubleArray> OutputElevation;
+  vtkDataArray* ElevationSource = nullptr;
+  vtkMTimeType ElevationTime = 0;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   // The distributed path (more than one process): the input's ghost ring, made when the
   // input lacks it; the partition that drives Deformer over this piece.
@@ -287,6 +294,9 @@ inline geoshaping::TransferFunction Transfer(vtkChainMailDeformationFilter* self
 // `obstacle` is not a vtkDataSet (vtkChainMailDeformationFilterObstacles.cxx).
 vtkIdType AppendObstacle(
   vtkDataObject* obstacle, std::vector<double>& xyz, std::vector<std::int64_t>& triangles);
+// Whether `obstacle` is a data set without points: a connection with nothing chosen (the
+// panel's Pipeline Connection set to none), no obstacle rather than a bad one.
+bool IsEmptyObstacle(vtkDataObject* obstacle);
 // The start of an obstacle update with connections on port 1, on one process or several:
 // the clearance given to the deformer (false, with the error, when it is not a finite
 // distance >= 0) and each connection's data with its MTime in `sources`

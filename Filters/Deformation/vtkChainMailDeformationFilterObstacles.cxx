@@ -68,6 +68,12 @@ vtkIdType vtkChainMailDeformationFilterDetail::AppendObstacle(
   return 0;
 }
 
+bool vtkChainMailDeformationFilterDetail::IsEmptyObstacle(vtkDataObject* obstacle)
+{
+  vtkDataSet* data = vtkDataSet::SafeDownCast(obstacle);
+  return data && data->GetNumberOfPoints() == 0;
+}
+
 bool vtkChainMailDeformationFilterDetail::ObstacleSources(vtkChainMailDeformationFilter* self,
   geoshaping::ChainMailDeformer& deformer,
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>>& sources)
@@ -127,6 +133,8 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
   for (int i = 0; i < count; ++i)
   {
     vtkDataObject* data = sources[std::size_t(i)].first;
+    if (vtkChainMailDeformationFilterDetail::IsEmptyObstacle(data))
+      continue; // a connection with nothing chosen (docs/obstacles.md)
     const std::size_t before = triangles.size();
     const vtkIdType bad = vtkChainMailDeformationFilterDetail::AppendObstacle(data, xyz, triangles);
     if (bad < 0)
@@ -150,7 +158,8 @@ bool vtkChainMailDeformationFilter::UpdateObstacles(vtkInformationVector** input
       return false;
     }
   }
-  if (!vtkChainMailDeformationFilterDetail::SetObstacles(this, state.Deformer, xyz, triangles))
+  if (!triangles.empty() &&
+      !vtkChainMailDeformationFilterDetail::SetObstacles(this, state.Deformer, xyz, triangles))
     return false;
   state.ObstacleSources = std::move(sources);
   return true;

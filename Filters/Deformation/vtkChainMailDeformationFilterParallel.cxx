@@ -70,7 +70,17 @@ bool vtkChainMailDeformationFilter::SelectInput(vtkPointSet*& input, vtkPointSet
   {
     return input->GetPoints() && input->GetNumberOfPoints() > 0;
   }
-  // Not distributed yet: decided from properties, so the same on every process.
+  // Not distributed yet: decided from properties, so the same on every process (and
+  // whether any process has a piece of an obstacle: an empty connection, the panel's
+  // Pipeline Connection with nothing chosen, is no obstacle).
+  const auto obstacles = [this, &state]()
+  {
+    bool mine = false;
+    for (int i = 0; i < this->GetNumberOfInputConnections(1); ++i)
+      mine = mine ||
+             !vtkChainMailDeformationFilterDetail::IsEmptyObstacle(this->GetInputDataObject(1, i));
+    return !state.AllAgree(!mine);
+  };
   std::string refused;
   if (this->RefinementIterations > 0 &&
       (this->RefinementSolver != REFINEMENT_ENVELOPE || this->ValidRegionFrame != AXES))
@@ -81,7 +91,8 @@ bool vtkChainMailDeformationFilter::SelectInput(vtkPointSet*& input, vtkPointSet
       " (use RefinementSolver Envelope with ValidRegionFrame Axes)";
   else if (this->RelaxationIterations > 0)
     refused = "RelaxationIterations > 0 (relaxation)";
-  else if (this->RefinementIterations > 0 && this->GetNumberOfInputConnections(1) > 0)
+  else if (this->RefinementIterations > 0 && this->GetNumberOfInputConnections(1) > 0 &&
+           obstacles())
     refused = "refinement with Obstacles (the passes' obstacle gate is not distributed)";
   else if (this->CandidateQueue != FIFO && this->CandidateQueue != FIFO_PRIORITY)
     refused = std::string("the ") +

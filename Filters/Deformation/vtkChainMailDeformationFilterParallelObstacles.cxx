@@ -41,7 +41,8 @@ bool vtkChainMailDeformationFilter::UpdateObstaclesParallel(
     state.ObstacleSources.clear();
     state.Deformer.clear_obstacles();
     // This process's piece of each obstacle, then, per obstacle, what each process found:
-    // (non-finite points or -1 when not a data set, triangles).
+    // (non-finite points or -1 when not a data set, triangles, whether its piece is empty).
+    // An obstacle empty on every process is no obstacle (IsEmptyObstacle).
     std::vector<std::vector<double>> xyz(static_cast<std::size_t>(count));
     std::vector<std::vector<std::int64_t>> tri(static_cast<std::size_t>(count));
     std::vector<std::int64_t> found;
@@ -51,18 +52,22 @@ bool vtkChainMailDeformationFilter::UpdateObstaclesParallel(
       found.push_back(
         vtkChainMailDeformationFilterDetail::AppendObstacle(sources[k].first, xyz[k], tri[k]));
       found.push_back(std::int64_t(tri[k].size() / 3));
+      found.push_back(vtkChainMailDeformationFilterDetail::IsEmptyObstacle(sources[k].first));
     }
     const auto all = ex.all_gather(found);
     for (int i = 0; i < count; ++i)
     {
-      std::int64_t bad = 0, triangles = 0, notData = -1;
+      std::int64_t bad = 0, triangles = 0, notData = -1, empty = 0;
       for (std::size_t p = 0; p < all.size(); ++p)
       {
-        const std::int64_t b = all[p][2 * std::size_t(i)];
+        const std::int64_t b = all[p][3 * std::size_t(i)];
         notData = b < 0 && notData < 0 ? std::int64_t(p) : notData;
         bad += std::max<std::int64_t>(b, 0);
-        triangles += all[p][2 * std::size_t(i) + 1];
+        triangles += all[p][3 * std::size_t(i) + 1];
+        empty += all[p][3 * std::size_t(i) + 2];
       }
+      if (empty == std::int64_t(all.size()))
+        continue;
       if (notData >= 0)
         vtkErrorMacro("Obstacle " << i << " is not a vtkDataSet on process " << notData
                                   << "; output is the undeformed input.");
@@ -107,7 +112,8 @@ bool vtkChainMailDeformationFilter::UpdateObstaclesParallel(
           triangles.push_back(base + piece[r + j]);
         r += 3 * nt;
       }
-    if (!vtkChainMailDeformationFilterDetail::SetObstacles(this, state.Deformer, points, triangles))
+    if (!triangles.empty() &&
+        !vtkChainMailDeformationFilterDetail::SetObstacles(this, state.Deformer, points, triangles))
       return false;
     state.ObstacleSources = std::move(sources);
   }

@@ -649,6 +649,7 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
     deformer.moved().empty() && state.PassesWritten.empty() && changed->GetNumberOfTuples() > 0;
   outPoints->PointsChanged(changed->GetPointer(0), changed->GetNumberOfTuples(), settled);
   output->SetPoints(outPoints);
+  this->UpdateElevation(input, output, changed);
 
   if (this->GenerateDiagnostics)
   {
@@ -679,6 +680,57 @@ void vtkChainMailDeformationFilter::WriteOutput(vtkPointSet* input, vtkPointSet*
   if (state.GeneratedIds) // several processes, numbered by coordinates
   {
     output->GetPointData()->SetGlobalIds(state.GeneratedIds);
+  }
+}
+
+void vtkChainMailDeformationFilter::UpdateElevation(
+  vtkPointSet* input, vtkPointSet* output, vtkIdTypeArray* changed)
+{
+  vtkInternals& state = *this->Internals;
+  vtkPointData* pd = output->GetPointData();
+  vtkDataArray* rest = input->GetPointData()->GetArray("Elevation");
+  const vtkIdType n = input->GetNumberOfPoints();
+  if (!rest || rest->GetNumberOfComponents() != 1 || rest->GetNumberOfTuples() != n)
+  {
+    state.OutputElevation = nullptr;
+    state.ElevationSource = nullptr;
+    return;
+  }
+  vtkPoints* in = input->GetPoints();
+  vtkPoints* out = output->GetPoints();
+  const auto write = [rest, in, out, &state](vtkIdType v)
+  {
+    // z plus the rest elevation's offset from the rest z: z itself for a DEM's surface.
+    state.OutputElevation->SetValue(
+      v, out->GetPoint(v)[2] + (rest->GetComponent(v, 0) - in->GetPoint(v)[2]));
+  };
+  const vtkMTimeType time = std::max(rest->GetMTime(), in->GetMTime());
+  if (!state.OutputElevation || state.ElevationSource != rest || state.ElevationTime != time)
+  {
+    state.OutputElevation = vtkSmartPointer<vtkDoubleArray>::New();
+    state.OutputElevation->SetName("Elevation");
+    state.OutputElevation->SetNumberOfTuples(n);
+    for (vtkIdType v = 0; v < n; ++v)
+      write(v);
+    state.ElevationSource = rest;
+    state.ElevationTime = time;
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < changed->GetNumberOfTuples(); ++i)
+      write(changed->GetValue(i));
+    state.OutputElevation->Modified();
+  }
+  auto restElevation = vtk::TakeSmartPointer(rest->NewInstance());
+  restElevation->ShallowCopy(rest);
+  restElevation->SetName("RestElevation");
+  const bool active = pd->GetScalars() == rest;
+  pd->RemoveArray("Elevation");
+  pd->AddArray(state.OutputElevation);
+  pd->AddArray(restElevation);
+  if (active)
+  {
+    pd->SetActiveScalars("Elevation");
   }
 }
 

@@ -32,7 +32,7 @@ void vtkDEMSurfaceOutput(vtkPolyData* output, const geoshaping::ElevationGrid& g
   elevation->SetNumberOfTuples(mesh.num_points());
   for (geoshaping::index_t i = 0; i < mesh.num_points(); ++i)
     elevation->SetValue(i, mesh.xyz[3 * std::size_t(i) + 2]);
-  output->GetPointData()->AddArray(elevation);
+  output->GetPointData()->SetScalars(elevation); // shown coloured by it
   vtkNew<vtkStringArray> about;
   about->SetName("Projection");
   about->InsertNextValue(

@@ -134,26 +134,48 @@ bool pqHapticsPickSurface(
   return world.allFinite();
 }
 
-std::vector<vtkSMProxy*> pqHapticsProxies::shapedRepresentations() const
+std::vector<pqOutputPort*> pqHapticsProxies::obstaclePorts() const
 {
-  std::vector<vtkSMProxy*> shaped;
+  std::vector<pqOutputPort*> ports;
   vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
-  if (vtkSMProxy* repr = this->representation(this->Deformation))
+  if (!proxy || !proxy->GetProperty("Obstacles"))
   {
-    shaped.push_back(repr);
-  }
-  if (!proxy || !proxy->GetProperty("Obstacles") || !this->View)
-  {
-    return shaped;
+    return ports;
   }
   auto* model = pqApplicationCore::instance()->getServerManagerModel();
   vtkSMPropertyHelper obstacles(proxy, "Obstacles");
   for (unsigned int i = 0; i < obstacles.GetNumberOfElements(); ++i)
   {
-    auto* source = model->findItem<pqPipelineSource*>(obstacles.GetAsProxy(i));
-    pqOutputPort* port = source ? source->getOutputPort(obstacles.GetOutputPort(i)) : nullptr;
-    pqDataRepresentation* repr = port ? port->getRepresentation(this->View) : nullptr;
-    if (repr)
+    // A source connected directly (Python, older states) or chosen in the panel's
+    // Pipeline Connection, whose own Input is the source.
+    vtkSMProxy* connected = obstacles.GetAsProxy(i);
+    unsigned int output = obstacles.GetOutputPort(i);
+    if (connected && !model->findItem<pqPipelineSource*>(connected) &&
+        connected->GetProperty("Input"))
+    {
+      vtkSMPropertyHelper input(connected, "Input");
+      output = input.GetNumberOfElements() > 0 ? input.GetOutputPort(0) : 0;
+      connected = input.GetNumberOfElements() > 0 ? input.GetAsProxy(0) : nullptr;
+    }
+    auto* source = model->findItem<pqPipelineSource*>(connected);
+    if (pqOutputPort* port = source ? source->getOutputPort(int(output)) : nullptr)
+    {
+      ports.push_back(port);
+    }
+  }
+  return ports;
+}
+
+std::vector<vtkSMProxy*> pqHapticsProxies::shapedRepresentations() const
+{
+  std::vector<vtkSMProxy*> shaped;
+  if (vtkSMProxy* repr = this->representation(this->Deformation))
+  {
+    shaped.push_back(repr);
+  }
+  for (pqOutputPort* port : this->View ? this->obstaclePorts() : std::vector<pqOutputPort*>())
+  {
+    if (pqDataRepresentation* repr = port->getRepresentation(this->View))
     {
       shaped.push_back(repr->getProxy());
     }

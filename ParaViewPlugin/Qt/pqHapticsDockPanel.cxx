@@ -1,5 +1,7 @@
 #include "pqHapticsDockPanel.h"
 
+#include "pqDEMSurfaceBehavior.h"
+
 #include "pqHapticsBrushPanel.h"
 #include "pqHapticsDockRows.h"
 
@@ -52,6 +54,7 @@ pqHapticsDockPanel::pqHapticsDockPanel(QWidget* parent)
 {
   this->setObjectName("GeoShapingHapticsDock");
   this->Interactor = new pqHapticsInteractor(this);
+  new pqDEMSurfaceBehavior(this); // the session's, with the dock
   this->build();
   QObject::connect(
     this->Interactor, &pqHapticsInteractor::frameDone, this, &pqHapticsDockPanel::onFrame);
@@ -134,7 +137,9 @@ void pqHapticsDockPanel::build()
     "asked to render where it is, in newtons (a force-feedback device; the servo fades a "
     "grasp's pull out while the view updates less than about twice a second), or "
     "\"mouse\". Then the view's frames per second, the time of the last deformation in "
-    "milliseconds, and how many vertices it moved.");
+    "milliseconds, and how many vertices it moved; while a drag meets the shaped surface's "
+    "Obstacles, how many vertices they held back this frame (the grasp marker then sits on "
+    "the grasped vertex, with a line to the cursor).");
   layout->addWidget(this->Figures);
   this->Status = new QLabel(body);
   this->Status->setWordWrap(true);
@@ -445,9 +450,14 @@ void pqHapticsDockPanel::onFrame()
                  .arg(f.force[i].force.norm(), 0, 'f', 2);
     }
   }
-  this->Figures->setText(QString("%1\nframe %2 fps · deformation %3 ms, %4 points displaced")
-                           .arg(hands.join(" · "))
-                           .arg(f.framesPerSecond, 0, 'f', 1)
-                           .arg(f.deformationMilliseconds, 0, 'f', 2)
-                           .arg(f.displacedPoints));
+  QString text = QString("%1\nframe %2 fps · deformation %3 ms, %4 points displaced")
+                   .arg(hands.join(" · "))
+                   .arg(f.framesPerSecond, 0, 'f', 1)
+                   .arg(f.deformationMilliseconds, 0, 'f', 2)
+                   .arg(f.displacedPoints);
+  if (f.obstacleBlockedPoints >= 0)
+  {
+    text += QString("\nheld back by obstacles: %1").arg(f.obstacleBlockedPoints);
+  }
+  this->Figures->setText(text);
 }

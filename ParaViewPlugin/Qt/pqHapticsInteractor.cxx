@@ -15,6 +15,7 @@
 #include <QKeyEvent>
 
 #include <vtkActor.h>
+#include <vtkLineSource.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
@@ -51,6 +52,11 @@ struct pqHapticsInteractor::Hand
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkPolyDataMapper> mapper;
   vtkNew<vtkActor> cursor;
+  Eigen::Vector3d graspRest =
+    Eigen::Vector3d::Zero();    // the grasped vertex at the press, object coordinates
+  vtkNew<vtkLineSource> tether; // from the grasped vertex to the cursor (showGrasps)
+  vtkNew<vtkPolyDataMapper> tetherMapper;
+  vtkNew<vtkActor> tetherLine;
   vtkNew<vtkMatrix4x4> cage;         // the cursor's matrix: the brush as drawn (onFrame)
   interactor::StylusPalette palette; // device hands: shown while the second button is held
   vtkNew<vtkSphereSource> swatchSphere;
@@ -66,6 +72,13 @@ struct pqHapticsInteractor::Hand
     this->cursor->SetMapper(this->mapper);
     this->cursor->PickableOff();
     this->cursor->UseBoundsOff(); // Reset Camera frames the data, not the stylus
+    this->tetherMapper->SetInputConnection(this->tether->GetOutputPort());
+    this->tetherLine->SetMapper(this->tetherMapper);
+    this->tetherLine->PickableOff();
+    this->tetherLine->UseBoundsOff();
+    this->tetherLine->VisibilityOff();
+    this->tetherLine->GetProperty()->SetColor(1.0, 0.8, 0.2);
+    this->tetherLine->GetProperty()->SetLineWidth(2.0);
     this->swatchSphere->SetThetaResolution(16);
     this->swatchSphere->SetPhiResolution(12);
     this->swatchMapper->SetInputConnection(this->swatchSphere->GetOutputPort());
@@ -95,6 +108,7 @@ struct pqHapticsInteractor::Hand
       if (this->renderer)
       {
         this->renderer->RemoveActor(this->cursor);
+        this->renderer->RemoveActor(this->tetherLine);
         for (auto& swatch : this->swatches)
         {
           this->renderer->RemoveActor(swatch);
@@ -104,6 +118,7 @@ struct pqHapticsInteractor::Hand
       if (r)
       {
         r->AddActor(this->cursor);
+        r->AddActor(this->tetherLine);
         for (auto& swatch : this->swatches)
         {
           r->AddActor(swatch);
@@ -283,9 +298,14 @@ void pqHapticsInteractor::apply(Hand& hand, const interactor::HandActions& actio
     // remote server the filter reports it after its next update (publishScene).
     hand.stiffnessPending = !this->Proxies.graspedVertex(vertex, malleability);
     Eigen::Vector3d shown;
-    if (hand.kind == Mouse && this->Proxies.shownGraspedVertex(shown))
+    hand.graspRest = actions.grasp_position;
+    if (this->Proxies.shownGraspedVertex(shown))
     {
-      hand.mouse.setGrasp((this->Proxies.objectMatrix() * shown.homogeneous()).hnormalized());
+      hand.graspRest = shown;
+      if (hand.kind == Mouse)
+      {
+        hand.mouse.setGrasp((this->Proxies.objectMatrix() * shown.homogeneous()).hnormalized());
+      }
     }
     if (hand.device)
     {
@@ -535,6 +555,7 @@ void pqHapticsInteractor::onFrame()
       hand.showPalette();
     }
   }
+  this->showGrasps(object);
   // After every hand has acted, so that a grasp made this frame counts as dragging.
   const bool anyDragging = this->anyHandDragging();
   for (auto& hand : this->Hands)
@@ -551,6 +572,52 @@ void pqHapticsInteractor::onFrame()
   this->RenderedDisplacement = this->LastDisplacement;
   this->updateFigures();
   Q_EMIT this->frameDone();
+}
+
+void pqHapticsInteractor::showGrasps(const Eigen::Matrix4d& object)
+{
+  const auto drags = [](const Hand& hand)
+  { return hand.controller.held() && hand.controller.tool() == interactor::Tool::deform; };
+  this->Stats.obstacleBlockedPoints = -1;
+  if (!this->anyHandDragging())
+  {
+    for (auto& hand : this->Hands)
+    {
+      if (hand)
+      {
+        hand->tetherLine->VisibilityOff();
+      }
+    }
+    return;
+  }
+  // What the filter makes of this frame's pull, before the frame is drawn.
+  this->Proxies.update();
+  if (this->Proxies.hasObstacles())
+  {
+    this->Stats.obstacleBlockedPoints = this->Proxies.numberOfObstacleBlockedPoints();
+  }
+  for (auto& handPtr : this->Hands)
+  {
+    if (!handPtr)
+    {
+      continue;
+    }
+    Hand& hand = *handPtr;
+    Eigen::Vector3d vertex;
+    if (!drags(hand) || !this->Proxies.graspedVertexNow(hand.graspRest, vertex))
+    {
+      hand.tetherLine->VisibilityOff();
+      continue;
+    }
+    Eigen::Vector3d cursor;
+    hand.sphere->GetCenter(cursor.data());
+    const Eigen::Vector3d at = (object * vertex.homogeneous()).hnormalized();
+    hand.sphere->SetCenter(at.data());
+    hand.tether->SetPoint1(at.data());
+    hand.tether->SetPoint2(cursor.data());
+    // Apart by more than the marker's radius: the line shows where the cursor is.
+    hand.tetherLine->SetVisibility((at - cursor).norm() > hand.sphere->GetRadius());
+  }
 }
 
 void pqHapticsInteractor::updateFigures()

@@ -51,6 +51,9 @@ public:
     double deformationMilliseconds = 0.0;
     long long displacedPoints = 0;
     long long displacedAtRelease = 0; // NumberOfDisplacedPoints of the last committed drag
+    // While a hand drags a surface with obstacles: the vertices they held back this
+    // frame (NumberOfObstacleBlockedPoints); -1 otherwise.
+    long long obstacleBlockedPoints = -1;
     int frames = 0;
     double sceneUnitsPerMetre = 0.0;   // the workspace mapping's scale, first device hand
     long long contactTriangles = 0;    // sent to the servo loop in the last frame (all hands)
@@ -134,6 +137,10 @@ private:
   void record(Hand& hand, const geoshaping::interactor::WorkspaceMapping& mapping,
     const geoshaping::interactor::StylusState& world);
   void updateFigures();
+  // The grasp markers of the hands that drag, where their grasped vertices are this frame
+  // (an obstacle may hold one back from the cursor), each with a line to its cursor when
+  // they are apart; and the count held back (Figures::obstacleBlockedPoints).
+  void showGrasps(const Eigen::Matrix4d& object);
   bool anyHandDragging() const;
   void beginStroke();
   void endStroke();

@@ -473,7 +473,54 @@ int pqHapticsProxies::numberOfEdits() const
            : 0;
 }
 
+void pqHapticsProxies::update()
+{
+  this->push();
+  if (auto* source =
+        vtkSMSourceProxy::SafeDownCast(this->Deformation ? this->Deformation->getProxy() : nullptr))
+  {
+    source->UpdatePipeline();
+  }
+  this->InformationRead = false; // the filter may have updated
+}
+
+bool pqHapticsProxies::graspedVertexNow(const Eigen::Vector3d& rest, Eigen::Vector3d& at) const
+{
+  Eigen::Vector3d landed;
+  if (this->shownGraspedVertex(at))
+  {
+    return at.allFinite();
+  }
+  if (!this->lastGraspDisplacement(landed))
+  {
+    return false;
+  }
+  at = rest + landed;
+  return true;
+}
+
+long long pqHapticsProxies::numberOfObstacleBlockedPoints() const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (!proxy || !proxy->GetProperty("NumberOfObstacleBlockedPoints"))
+  {
+    return 0;
+  }
+  this->readInformation(proxy);
+  return vtkSMPropertyHelper(proxy, "NumberOfObstacleBlockedPoints").GetAsIdType();
+}
+
 void pqHapticsProxies::render()
+{
+  this->push();
+  if (this->View)
+  {
+    this->View->getViewProxy()->StillRender();
+  }
+  this->InformationRead = false; // the filter may have updated
+}
+
+void pqHapticsProxies::push()
 {
   // Per-frame pushes are never steps of ParaView's undo stack (pqHapticsUndo.h).
   geoshaping::undo::Exclude frame;
@@ -493,11 +540,6 @@ void pqHapticsProxies::render()
     }
   }
   this->PaintModified = this->DeformationModified = this->RepresentationModified = false;
-  if (this->View)
-  {
-    this->View->getViewProxy()->StillRender();
-  }
-  this->InformationRead = false; // the filter may have updated
 }
 
 bool pqHapticsProxies::graspedVertex(Eigen::Vector3d& position, double& malleability) const

@@ -21,6 +21,7 @@
 #include <array>
 #include <vector>
 
+class pqOutputPort;
 class vtkDataSet;
 class vtkPointSet;
 class vtkSMProxy;
@@ -122,8 +123,23 @@ public:
 
   double lastDeformationMilliseconds() const;
   long long numberOfDisplacedPoints() const;
+  // Whether the deformation has an obstacle chosen (a pipeline source on its Obstacles,
+  // directly or through the panel's Pipeline Connection).
+  bool hasObstacles() const { return !this->obstaclePorts().empty(); }
+  // NumberOfObstacleBlockedPoints of the filter's last update, read from the server.
+  long long numberOfObstacleBlockedPoints() const;
+  // Pushes the changed properties and brings the deformation's output up to date, without
+  // rendering: what the filter did with this frame's pull can then be read before the
+  // frame is drawn (render() afterwards finds the pipeline up to date).
+  void update();
+  // Where the grasped vertex is in the filter's last update, data coordinates: the
+  // deformation's client-side output (builtin sessions), else `rest` (where the grasp
+  // was at the press) moved by LastGraspDisplacement; false while there is no grasp.
+  bool graspedVertexNow(const Eigen::Vector3d& rest, Eigen::Vector3d& at) const;
 
 private:
+  // Pushes the properties changed since the last push (UpdateVTKObjects).
+  void push();
   // A LastGrasp... information property `name` of the filter's last update, read from the
   // server; false without the property or while there is no grasp yet.
   bool lastGraspFigure(const char* name, double& value) const;
@@ -131,6 +147,8 @@ private:
   // the filter (render, an edit command, a new target): a frame reads them at most once.
   void readInformation(vtkSMProxy* proxy) const;
   vtkSMProxy* representation(pqPipelineSource* source) const;
+  // The pipeline outputs the deformation's Obstacles come from (pqHapticsDisplay.cxx).
+  std::vector<pqOutputPort*> obstaclePorts() const;
   // The representations in the view of the deformation and of its Obstacles inputs.
   std::vector<vtkSMProxy*> shapedRepresentations() const;
   vtkStaticCellLocator* cellLocator(vtkDataSet* data);

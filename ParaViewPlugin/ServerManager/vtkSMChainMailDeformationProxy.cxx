@@ -7,8 +7,15 @@
 #include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVXMLElement.h"
+#include "vtkSMInputProperty.h"
+#include "vtkSMProperty.h"
 #include "vtkSMPropertyHelper.h"
+#include "vtkSMProxyListDomain.h"
+#include "vtkSMProxyLocator.h"
 
+#include <cstring>
+#include <utility>
 #include <vector>
 
 namespace interactor = geoshaping::interactor;
@@ -79,6 +86,16 @@ vtkSMChainMailDeformationProxy::vtkSMChainMailDeformationProxy()
     vtkCommand::UpdatePropertyEvent, this, &vtkSMChainMailDeformationProxy::PropertyPushed);
 }
 
+void vtkSMChainMailDeformationProxy::CreateVTKObjects()
+{
+  this->Superclass::CreateVTKObjects();
+  if (vtkSMProperty* obstacles = this->GetProperty("Obstacles"))
+  {
+    obstacles->AddObserver(
+      vtkCommand::ModifiedEvent, this, &vtkSMChainMailDeformationProxy::ObstaclesChanged);
+  }
+}
+
 vtkSMChainMailDeformationProxy::~vtkSMChainMailDeformationProxy() = default;
 
 void vtkSMChainMailDeformationProxy::PropertyPushed(vtkObject*, unsigned long, void* name)
@@ -129,6 +146,105 @@ void vtkSMChainMailDeformationProxy::RestoreEdits(const std::vector<std::string>
   this->LastEditChanged = result.changed;
   this->LastEditRedoable = result.redoable;
   this->LastEditMessage = result.message;
+}
+
+int vtkSMChainMailDeformationProxy::LoadXMLState(
+  vtkPVXMLElement* element, vtkSMProxyLocator* locator)
+{
+  // The Obstacles as the state lists them, when it predates the Pipeline Connection.
+  std::vector<std::pair<int, int>> legacy; // (proxy id, output port)
+  bool hasDomain = false;
+  for (unsigned int i = 0; element && i < element->GetNumberOfNestedElements(); ++i)
+  {
+    vtkPVXMLElement* property = element->GetNestedElement(i);
+    const char* name = property->GetAttribute("name");
+    if (!name || std::strcmp(name, "Obstacles") != 0 || !property->GetName() ||
+        std::strcmp(property->GetName(), "Property") != 0)
+    {
+      continue;
+    }
+    for (unsigned int j = 0; j < property->GetNumberOfNestedElements(); ++j)
+    {
+      vtkPVXMLElement* child = property->GetNestedElement(j);
+      const char* childName = child->GetAttribute("name");
+      int id = 0, port = 0;
+      if (std::strcmp(child->GetName(), "Domain") == 0 && childName &&
+          std::strcmp(childName, "proxy_list") == 0)
+      {
+        hasDomain = true;
+      }
+      else if (std::strcmp(child->GetName(), "Proxy") == 0 &&
+               child->GetScalarAttribute("value", &id))
+      {
+        child->GetScalarAttribute("output_port", &port);
+        legacy.emplace_back(id, port);
+      }
+    }
+  }
+  const int loaded = this->Superclass::LoadXMLState(element, locator);
+  this->LegacyObstacles.clear();
+  this->LegacyPorts.clear();
+  if (!loaded || hasDomain || !locator)
+  {
+    return loaded;
+  }
+  for (const auto& [id, port] : legacy)
+  {
+    if (vtkSMProxy* source = locator->LocateProxy(id))
+    {
+      this->LegacyObstacles.emplace_back(source);
+      this->LegacyPorts.push_back(static_cast<unsigned int>(port));
+    }
+  }
+  // The domain's Pipeline Connection may be made (and chosen as the property's default)
+  // only after this proxy is loaded: then ObstaclesChanged finishes the move.
+  this->MoveLegacyObstacles();
+  return loaded;
+}
+
+void vtkSMChainMailDeformationProxy::ObstaclesChanged(vtkObject*, unsigned long, void*)
+{
+  if (!this->LegacyObstacles.empty() && !this->MovingObstacles)
+  {
+    this->MoveLegacyObstacles();
+    this->LegacyObstacles.clear(); // one try: a later change is the user's
+    this->LegacyPorts.clear();
+  }
+}
+
+void vtkSMChainMailDeformationProxy::MoveLegacyObstacles()
+{
+  auto* obstacles = vtkSMInputProperty::SafeDownCast(this->GetProperty("Obstacles"));
+  auto* connections = obstacles ? obstacles->FindDomain<vtkSMProxyListDomain>() : nullptr;
+  vtkSMProxy* connection =
+    connections && connections->GetNumberOfProxies() > 0 ? connections->GetProxy(0) : nullptr;
+  if (!obstacles || this->LegacyObstacles.empty())
+  {
+    return;
+  }
+  this->MovingObstacles = true;
+  std::vector<vtkSMProxy*> sources;
+  std::vector<unsigned int> ports = this->LegacyPorts;
+  for (const auto& source : this->LegacyObstacles)
+  {
+    sources.push_back(source);
+  }
+  const bool moved = sources.size() == 1 && connection && connection->GetProperty("Input");
+  if (moved)
+  {
+    vtkSMPropertyHelper(connection, "Input").Set(sources[0], ports[0]);
+    connection->UpdateVTKObjects();
+    sources[0] = connection;
+    ports[0] = 0;
+  }
+  obstacles->SetProxies(static_cast<unsigned int>(sources.size()), sources.data(), ports.data());
+  this->UpdateVTKObjects();
+  if (moved || sources.size() > 1)
+  {
+    this->LegacyObstacles.clear(); // done: nothing left to move
+    this->LegacyPorts.clear();
+  }
+  this->MovingObstacles = false;
 }
 
 void vtkSMChainMailDeformationProxy::PrintSelf(ostream& os, vtkIndent indent)

@@ -19,6 +19,8 @@
 #include "GeoShapingServerManagerModule.h"
 #include "vtkSMGeoShapingSourceProxy.h"
 
+#include "vtkSmartPointer.h"
+
 #include <string>
 #include <vector>
 
@@ -50,9 +52,18 @@ public:
   void RestoreEdits(const std::vector<std::string>& records);
 #endif
 
+  /**
+   * Loads a state. A state written before the Obstacles property chose its surface
+   * through a Pipeline Connection (no `proxy_list` domain in it) connected the obstacle
+   * sources directly: one such source becomes the Input of this proxy's Pipeline
+   * Connection (so the panel shows it), several stay connected directly.
+   */
+  int LoadXMLState(vtkPVXMLElement* element, vtkSMProxyLocator* locator) override;
+
 protected:
   vtkSMChainMailDeformationProxy();
   ~vtkSMChainMailDeformationProxy() override;
+  void CreateVTKObjects() override;
 
 private:
   vtkSMChainMailDeformationProxy(const vtkSMChainMailDeformationProxy&) = delete;
@@ -60,6 +71,13 @@ private:
 
   // vtkCommand::UpdatePropertyEvent: a property was pushed to the server.
   void PropertyPushed(vtkObject*, unsigned long, void* name);
+  // The Obstacles of a state from before the Pipeline Connection (LoadXMLState): moved
+  // into the connection once it exists; Obstacles' ModifiedEvent retries.
+  void ObstaclesChanged(vtkObject*, unsigned long, void*);
+  void MoveLegacyObstacles();
+  std::vector<vtkSmartPointer<vtkSMProxy>> LegacyObstacles;
+  std::vector<unsigned int> LegacyPorts;
+  bool MovingObstacles = false;
 
   bool LastEditChanged = false;
   int LastEditRedoable = 0;

@@ -874,3 +874,61 @@ TEST(ChainMailDeformationFilter, ValidRegionFrameLinkRotatesWithTheMeshAndAxesIs
   f->SetValidRegionFrame(-1);
   EXPECT_EQ(f->GetValidRegionFrame(), vtkChainMailDeformationFilter::AXES);
 }
+
+TEST(ChainMailDeformationFilter, ADemsElevationFollowsTheShapeAndTheRestElevationIsKept)
+{
+  // A DEM Surface-like grid: z = 300 + 10 x + y, the point array Elevation = z, active.
+  auto dem = geoshaping::testing::TriangleGridPolyData(21, 21, 1.0, {});
+  vtkNew<vtkDoubleArray> elevation;
+  elevation->SetName("Elevation");
+  elevation->SetNumberOfTuples(dem->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < dem->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    dem->GetPoint(p, x);
+    x[2] = 300.0 + 10.0 * x[0] + x[1];
+    dem->GetPoints()->SetPoint(p, x);
+    elevation->SetValue(p, x[2]);
+  }
+  dem->GetPointData()->SetScalars(elevation);
+  vtkNew<vtkChainMailDeformationFilter> f;
+  f->SetInputData(dem);
+  f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  f->SetGraspPointId(10 * 21 + 10);
+  const auto check = [&](const char* when)
+  {
+    f->Update();
+    auto* out = vtkPointSet::SafeDownCast(f->GetOutputDataObject(0));
+    vtkDataArray* now = out->GetPointData()->GetArray("Elevation");
+    vtkDataArray* rest = out->GetPointData()->GetArray("RestElevation");
+    if (!now || !rest)
+    {
+      ADD_FAILURE() << when << ": no Elevation or RestElevation";
+      return vtkIdType(-1);
+    }
+    EXPECT_EQ(out->GetPointData()->GetScalars(), now) << when;
+    vtkIdType raised = 0, notZ = 0, notRest = 0;
+    for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      out->GetPoint(p, x);
+      notZ += now->GetComponent(p, 0) != x[2];
+      notRest += rest->GetComponent(p, 0) != elevation->GetValue(p);
+      raised += x[2] > elevation->GetValue(p);
+    }
+    EXPECT_EQ(notZ, 0) << when << ": vertices whose Elevation is not their z";
+    EXPECT_EQ(notRest, 0) << when << ": vertices whose RestElevation is not the input's";
+    EXPECT_EQ(elevation->GetValue(0), dem->GetPoint(0)[2]) << "the input's array is untouched";
+    return raised;
+  };
+  f->SetDisplacement(0, 0, 500);
+  EXPECT_GT(check("pulled up"), 1);
+  f->SetDisplacement(3, -2, 200); // a smaller pull: vertices the first moved come back
+  EXPECT_GT(check("pulled less"), 1);
+  f->CommitEdit();
+  f->SetGraspPointId(5 * 21 + 5);
+  f->SetDisplacement(0, 0, -100);
+  EXPECT_GT(check("a second drag after the commit"), 1);
+  f->UndoEdit();
+  check("undone");
+}

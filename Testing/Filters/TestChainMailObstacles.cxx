@@ -7,6 +7,8 @@
 
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -417,4 +419,68 @@ TEST(ChainMailObstacles, LastGraspDisplacementSaysWhereTheGraspLanded)
   EXPECT_NEAR(landed[0], 1.6, 1e-9);
   EXPECT_NEAR(landed[1], 0.0, 1e-9);
   EXPECT_NEAR(landed[2], -3.2, 1e-9);
+}
+
+TEST(ChainMailObstacles, AnEmptyConnectionIsNoObstacleAndTheHeldBackCountIsInTheFieldData)
+{
+  // An empty data set on port 1 (the panel's Pipeline Connection with nothing chosen) is
+  // no obstacle: beside the lower horizon the pull stops where it stops without it, and
+  // alone the pull goes through as with no connection. The count held back is in the
+  // output's field data, equal to NumberOfObstacleBlockedPoints.
+  auto horizon = TriangleGridPolyData(21, 21, 1.0, {});
+  const double o[3] = { -5, -5, -3 }, du[3] = { 1, 0, 0 }, dv[3] = { 0, 1, 0 };
+  auto lower = Sheet(31, o, du, dv);
+  vtkNew<vtkPolyData> empty;
+  auto run = [&](std::initializer_list<vtkPolyData*> obstacles, vtkIdType& held)
+  {
+    vtkNew<vtkChainMailDeformationFilter> f;
+    vtkNew<vtkTest::ErrorObserver> errors;
+    f->AddObserver(vtkCommand::ErrorEvent, errors);
+    f->SetInputData(horizon);
+    for (vtkPolyData* obstacle : obstacles)
+      f->AddObstacleData(obstacle);
+    f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+    f->SetGraspPointId(10 * 21 + 10);
+    f->SetDisplacement(0, 0, -10);
+    vtkPointSet* out = Update(f);
+    EXPECT_TRUE(errors->GetErrorMessage().empty()) << errors->GetErrorMessage();
+    auto* field =
+      vtkIdTypeArray::SafeDownCast(out->GetFieldData()->GetAbstractArray("ObstacleBlockedPoints"));
+    EXPECT_EQ(field != nullptr, obstacles.size() > 0);
+    if (field)
+    {
+      EXPECT_EQ(field->GetNumberOfTuples(), 1);
+      EXPECT_EQ(field->GetValue(0), f->GetNumberOfObstacleBlockedPoints());
+    }
+    EXPECT_EQ(horizon->GetFieldData()->GetAbstractArray("ObstacleBlockedPoints"), nullptr);
+    held = f->GetNumberOfObstacleBlockedPoints();
+    auto copy = vtk::TakeSmartPointer(out->NewInstance());
+    copy->DeepCopy(out);
+    return copy;
+  };
+  auto same = [](vtkPointSet* a, vtkPointSet* b)
+  {
+    for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
+    {
+      double x[3], y[3];
+      a->GetPoint(p, x);
+      b->GetPoint(p, y);
+      if (!(x[0] == y[0] && x[1] == y[1] && x[2] == y[2]))
+        return false;
+    }
+    return true;
+  };
+  vtkIdType heldAlone = 0, heldBeside = 0, heldEmpty = 0, heldNone = 0;
+  auto alone = run({ lower }, heldAlone);
+  auto beside = run({ empty, lower }, heldBeside);
+  auto onlyEmpty = run({ empty }, heldEmpty);
+  auto none = run({}, heldNone);
+  EXPECT_GT(heldAlone, 0);
+  EXPECT_EQ(heldBeside, heldAlone);
+  EXPECT_TRUE(same(alone, beside));
+  EXPECT_EQ(heldEmpty, 0);
+  EXPECT_TRUE(same(onlyEmpty, none));
+  double x[3];
+  onlyEmpty->GetPoint(10 * 21 + 10, x);
+  EXPECT_EQ(x[2], -10.0);
 }

@@ -1,4 +1,5 @@
-"""The GUI test of the vertical exaggeration (run_gui_test.py mode dem_exaggerated): a 9 km
+"""The GUI tests of DEMs (run_gui_test.py modes dem_*). dem_ready: a DEM ready to shape
+(check_ready). dem_exaggerated, the vertical exaggeration: a 9 km
 GeoTIFF hill (1.2 km high, 100 m pixels, UTM 16N, written by gdal_translate) through DEM
 Surface, shown with the display Scale (1, 1, 5) (and an obstacle under the hill's foot);
 the mouse hovers, paints and pulls
@@ -38,14 +39,25 @@ def write_geotiff(out):
                     out + ".asc", out + ".tif"], check=True)
 
 
+# Mode dem_ready: DEM Surface applied on the raster shown in 2D, then the paint and the
+# deformation; a vertical pull (Z: the view looks straight down) raises the hill's top.
+READY_SCRIPT = ("open GDALRasterReader; wait; wait; snapshot raster; apply DEMSurface; wait; wait; snapshot dem; "
+                "apply MalleabilityPaint; apply ChainMailDeformation; wait; wait; "
+                "press 0.5 0.5; key Z; move 0.5 0.55; move 0.5 0.6; wait; snapshot pulled; "
+                "release; wait; snapshot released")
+
+
 def prepare(mode, out, env):
     here = os.path.dirname(os.path.abspath(__file__))
     if os.path.exists(out + ".picks"):
         os.remove(out + ".picks")
     write_geotiff(out)
     env["GEOSHAPING_HAPTICS_REPLAY"] = "mouse"
-    env["GEOSHAPING_HAPTICS_SCRIPT"] = SCRIPT
-    env["GEOSHAPING_GUI_SETUP"] = os.path.join(here, "gui_setup_dem.py")
+    env["GEOSHAPING_HAPTICS_SCRIPT"] = READY_SCRIPT if mode == "dem_ready" else SCRIPT
+    if mode == "dem_ready":
+        env["GEOSHAPING_GUI_BUILDS_PIPELINE"] = "1"  # the hook starts before the deformation
+    env["GEOSHAPING_GUI_SETUP"] = os.path.join(
+        here, "gui_setup_dem_ready.py" if mode == "dem_ready" else "gui_setup_dem.py")
     env["GEOSHAPING_GUI_SURFACE"] = out + ".tif"
     env["GEOSHAPING_GUI_EXAGGERATION"] = "%g" % EXAGGERATION
 
@@ -58,11 +70,52 @@ def drawn_picks(out):
     return [(kind, p, p / scale) for kind, p in rows]
 
 
+def check_ready(out):
+    """DEM Surface > Apply on the raster ParaView showed in 2D: a 3D view, the raster
+    hidden, the surface coloured by Elevation and framed (its bounding box on screen,
+    filling most of the view); the pull raises the hill and the deformation's Elevation
+    is the shaped z, its RestElevation the raster's."""
+    from run_gui_test import read_results
+    raster = read_results(out + "-raster.txt")
+    dem = read_results(out + "-dem.txt")
+    print("raster shown: interaction mode %s; DEM Surface applied: mode %s, %s, %s" % (
+        raster["interaction_mode"], dem["interaction_mode"], dem.get("shown_DEMSurface1"),
+        {k: v for k, v in dem.items() if k.startswith("shown_") and "DEM" not in k}))
+    assert raster["interaction_mode"] == "1", "the raster did not put the view in 2D"
+    assert dem["interaction_mode"] == "0", "DEM Surface left the view in 2D"
+    shown = dem["shown_DEMSurface1"].split()
+    assert shown[0] == "1" and shown[1] == "Elevation", shown
+    raster_shown = [v.split() for k, v in dem.items() if k.startswith("shown_") and "DEM" not in k]
+    assert all(v[0] == "0" for v in raster_shown), "the raster is still shown: %s" % raster_shown
+    x0, x1, y0, y1 = (float(v) for v in shown[2:6])
+    w, h = (float(v) for v in dem["view_px"].split())
+    print("framed: the surface's box spans x %.0f ... %.0f, y %.0f ... %.0f of %g x %g px" % (
+        x0, x1, y0, y1, w, h))
+    assert 0 <= x0 and x1 <= w and 0 <= y0 and y1 <= h, "the surface is not all in view"
+    assert max((x1 - x0) / w, (y1 - y0) / h) >= 0.5, "the surface is not framed"
+
+    pulled, rows = snapshot(out, "pulled")
+    rest, z = rows[:, 2], rows[:, 5]
+    elevation, rest_elevation = rows[:, 7], rows[:, 8]
+    raised = z > rest + 1.0
+    print("pulled: %d vertices raised, top z %.1f m (rest %.1f m); Elevation %.1f ... %.1f m" % (
+        raised.sum(), z.max(), rest.max(), elevation.min(), elevation.max()))
+    assert raised.sum() >= 1 and z.max() > rest.max() + 10.0, "the pull did not raise the hill"
+    assert np.array_equal(elevation, z), "Elevation does not follow the shape"
+    assert np.array_equal(rest_elevation, rest), "RestElevation is not the raster's"
+    released, rows = snapshot(out, "released")
+    assert released["edit_history"] == "1", released
+    assert np.array_equal(rows[:, 7], rows[:, 5]), "Elevation after the release"
+
+
 def check(mode, out):
     """Hover: the brush cursor where the hill is drawn under the mouse. Ctrl-drag: the
     stroke paints the vertices under its drawn path (in data units). Drag: the grasped
     vertex is the one drawn under the press and stays under the cursor. The dock's
     Vertical exaggeration sets the surface's Scale and its obstacle's."""
+    if mode == "dem_ready":
+        check_ready(out)
+        return
     kinds = [kind for kind, _, _ in drawn_picks(out)]
     assert kinds == ["hover", "press", "move", "move", "press", "move", "move"], kinds
     drawn = drawn_picks(out)

@@ -4,13 +4,9 @@ seen from a fixed oblique camera (run_gui_test.py computes the expected drag fro
 from paraview.simple import *  # noqa: F401,F403
 
 from gui_scene import scene_ready, show_deformable
-from gui_setup_camera import CAMERA
+from gui_setup_camera import set_camera
 
 deformation, view = show_deformable(FaultStepHorizon(PaintFigure5C=1))  # noqa: F405
 Render(view)  # noqa: F405 (paraview.simple resets the camera on the first render: set it after)
-view.CameraPosition = CAMERA["position"]
-view.CameraFocalPoint = CAMERA["focal_point"]
-view.CameraViewUp = CAMERA["view_up"]
-view.CameraViewAngle = CAMERA["view_angle"]
-view.CameraParallelProjection = 0
+set_camera(view)
 scene_ready(deformation, view)

@@ -323,6 +323,8 @@ def main():
     scripted = None  # a module with the mode's script: prepare(), check()
     if mode.startswith("dem_"):
         import dem_checks as scripted
+    elif mode.startswith("obstacle_"):
+        import obstacle_checks as scripted
     elif mode.startswith("brush_") or mode == "pull_keys":  # brush_checks.SCRIPTS
         import brush_checks as scripted
     if scripted:

@@ -68,3 +68,26 @@ check(off_fault[on].max() <= 1e-9, "the cut-off line stays on the fault (%r)" % 
 check(x[on, 2].max() < -0.25 and x[10 * 11 + 10, 2] < -2.0,
       "and slides down it (z %r ... %r)" % (x[on, 2].min(), x[on, 2].max()))
 print("obstacles: ok")
+
+# A state written before the Obstacles were chosen through a Pipeline Connection
+# (data/obstacles_before_issue40.pvsm: the fault-step horizon pulled up by 30 under the
+# plane "Ceiling" at z = 25, connected directly): it loads with Ceiling as the Input of
+# the filter's Pipeline Connection (what the panel shows), the pull still held under it,
+# and still after another property is pushed.
+import os  # noqa: E402
+
+for source in list(GetSources().values()):  # noqa: F405
+    Delete(source)  # noqa: F405
+LoadState(os.path.join(os.path.dirname(os.path.abspath(__file__)), "data",  # noqa: F405
+                       "obstacles_before_issue40.pvsm"))
+old = FindSource("ChainMailDeformation1")  # noqa: F405
+connection = old.Obstacles[0] if len(old.Obstacles) == 1 else None
+check(connection is not None and connection.GetXMLName() == "PipelineConnection" and
+      connection.Input is not None and connection.Input.GetXMLName() == "PlaneSource",
+      "the old state's obstacle is the Input of the Pipeline Connection (%r)" % (old.Obstacles,))
+for step in ("loaded", "after a push"):
+    old.UpdatePipeline()
+    top = old.GetDataInformation().GetBounds()[5]
+    check(20.0 < top < 25.0, "%s: the pull stops under the plane at z = 25 (top %r)" % (step, top))
+    old.Displacement = [0.0, 0.0, 40.0]
+print("obstacles: old state ok")

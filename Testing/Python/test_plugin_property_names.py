@@ -6,7 +6,8 @@ unnoticed. This scans the plugin's C++ and Python (ParaViewPlugin/) for the name
 to vtkSMPropertyHelper(proxy, "Name") and GetProperty("Name") and checks each on the
 proxies they are used on: a display (`repr`, `display`) -> the ChainMailDeformation's
 representation in a render view; ParaView's picking helper (`helper`, the mouse's pick:
-pqHapticsDisplay.cxx) -> a PickingHelper; any other proxy -> one of the plugin's own
+pqHapticsDisplay.cxx) -> a PickingHelper; a `viewProxy` -> the render view (the DEM
+Surface's view, pqDEMSurfaceBehavior.cxx); any other proxy -> one of the plugin's own
 proxies."""
 import glob
 import os
@@ -49,8 +50,11 @@ def declared(proxies, name):
 for where, expression, name in uses:
     on_display = re.search(r"\b(repr|display)\b", expression) is not None
     on_helper = re.search(r"\bhelper\b", expression) is not None
-    proxies = [display] if on_display else [picking] if on_helper else filters
-    on = "the display" if on_display else "the PickingHelper" if on_helper else "a GeoShaping proxy"
+    on_view = re.search(r"\bviewProxy\b", expression) is not None
+    proxies = [display] if on_display else [picking] if on_helper else [view] if on_view \
+        else filters
+    on = "the display" if on_display else "the PickingHelper" if on_helper else \
+        "the render view" if on_view else "a GeoShaping proxy"
     check(declared(proxies, name), "%s: %s on %s is declared" % (where, name, on))
 
 # The one that was missing, and what it reads: -1 until the filter has grasped.

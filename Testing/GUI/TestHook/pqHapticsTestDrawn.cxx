@@ -8,6 +8,7 @@
 #include <pqRenderView.h>
 #include <pqServerManagerModel.h>
 
+#include <vtkPVDataInformation.h>
 #include <vtkPointSet.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -15,7 +16,9 @@
 #include <vtkSMRenderViewProxy.h>
 
 #include <QString>
+
 #include <QTextStream>
+#include <algorithm>
 
 void pqHapticsWriteDrawnGrasp(QTextStream& out, pqPipelineSource* deformation, vtkPointSet* shown)
 {
@@ -54,5 +57,46 @@ void pqHapticsWriteDrawnGrasp(QTextStream& out, pqPipelineSource* deformation, v
     const double* d = renderer->GetDisplayPoint();
     out << "grasp_px = " << QString::number(d[0], 'g', 17) << " " << QString::number(d[1], 'g', 17)
         << "\n";
+  }
+}
+
+void pqHapticsWriteShown(QTextStream& out)
+{
+  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
+  if (!view)
+  {
+    return;
+  }
+  vtkSMProxy* viewProxy = view->getProxy();
+  out << "interaction_mode = " << vtkSMPropertyHelper(viewProxy, "InteractionMode").GetAsInt()
+      << "\n";
+  vtkRenderer* renderer = view->getRenderViewProxy()->GetRenderer();
+  const int* size = renderer->GetSize();
+  out << "view_px = " << size[0] << " " << size[1] << "\n";
+  auto* model = pqApplicationCore::instance()->getServerManagerModel();
+  for (pqPipelineSource* source : model->findItems<pqPipelineSource*>())
+  {
+    pqDataRepresentation* repr = source->getRepresentation(view);
+    if (!repr)
+    {
+      continue;
+    }
+    const char* colour = vtkSMPropertyHelper(repr->getProxy(), "ColorArrayName").GetAsString(4);
+    double b[6];
+    source->getOutputPort(0)->getDataInformation()->GetBounds(b);
+    double px[4] = { 1e300, -1e300, 1e300, -1e300 };
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      renderer->SetWorldPoint(b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + (corner >> 2)], 1.0);
+      renderer->WorldToDisplay();
+      const double* d = renderer->GetDisplayPoint();
+      px[0] = std::min(px[0], d[0]);
+      px[1] = std::max(px[1], d[0]);
+      px[2] = std::min(px[2], d[1]);
+      px[3] = std::max(px[3], d[1]);
+    }
+    out << "shown_" << source->getSMName() << " = " << int(repr->isVisible()) << " "
+        << (colour && *colour ? colour : "(solid)") << " " << px[0] << " " << px[1] << " " << px[2]
+        << " " << px[3] << "\n";
   }
 }

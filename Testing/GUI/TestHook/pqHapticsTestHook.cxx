@@ -123,7 +123,11 @@ void pqHapticsTestHook::poll()
     // The script's renders process events, so this timer fires mid-script: a test's
     // setup says when it is complete (gui_scene.py, GEOSHAPING_GUI_SCENE_READY) and a
     // loaded state is complete; a demo's own script is given one more second.
-    if (!pqHapticsFindSource("ChainMailDeformation") || !pqActiveObjects::instance().activeView())
+    // A setup whose script builds the deformation through the GUI (the hook's `apply`,
+    // dem_ready) starts without one (GEOSHAPING_GUI_BUILDS_PIPELINE).
+    const bool later = qEnvironmentVariableIsSet("GEOSHAPING_GUI_BUILDS_PIPELINE");
+    if ((!later && !pqHapticsFindSource("ChainMailDeformation")) ||
+        !pqActiveObjects::instance().activeView())
     {
       this->ReadyPolls = 0;
       return;

@@ -7,9 +7,16 @@
 
 #include <pqActiveObjects.h>
 #include <pqApplicationCore.h>
+#include <pqCoreUtilities.h>
+#include <pqInputSelectorWidget.h>
+#include <pqLoadDataReaction.h>
+#include <pqObjectBuilder.h>
+#include <pqPipelineBrowserWidget.h>
 #include <pqPipelineSource.h>
+#include <pqPropertiesPanel.h>
 #include <pqRenderView.h>
 #include <pqSaveStateReaction.h>
+#include <pqServerManagerModel.h>
 #include <pqUndoStack.h>
 #include <pqView.h>
 
@@ -19,6 +26,7 @@
 #include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkLineSource.h>
 #include <vtkMapper.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
@@ -37,6 +45,7 @@
 #include <QVTKOpenGLStereoWidget.h>
 #include <QVTKOpenGLWindow.h>
 
+#include <QAbstractItemModel>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
@@ -135,6 +144,33 @@ bool pqHapticsTestScript::step(std::chrono::steady_clock::time_point since)
     {
       verb == "editundo" ? stack->undo() : stack->redo();
     }
+  }
+  else if (verb == "open" && words.size() > 1)
+  {
+    // File > Open of GEOSHAPING_GUI_SURFACE with the reader READER, then Apply.
+    QWidget* main = pqCoreUtilities::mainWidget();
+    auto* panel = main ? main->findChild<pqPropertiesPanel*>() : nullptr;
+    const QString file = qEnvironmentVariable("GEOSHAPING_GUI_SURFACE");
+    if (panel && pqLoadDataReaction::loadData(QStringList{ file }, "sources", words[1]))
+    {
+      panel->apply();
+    }
+  }
+  else if (verb == "apply" && words.size() > 1)
+  {
+    // As Filters > GeoShaping > NAME then Apply: on the active source, shown by Apply.
+    pqPipelineSource* input = pqActiveObjects::instance().activeSource();
+    QWidget* main = pqCoreUtilities::mainWidget();
+    auto* panel = main ? main->findChild<pqPropertiesPanel*>() : nullptr;
+    if (input && panel &&
+        pqApplicationCore::instance()->getObjectBuilder()->createFilter("filters", words[1], input))
+    {
+      panel->apply();
+    }
+  }
+  else if (verb == "obstacle" && words.size() > 1)
+  {
+    this->chooseObstacle(words[1]);
   }
   else if (verb == "snapshot" && words.size() > 1)
   {
@@ -261,6 +297,47 @@ QString text(QWidget* dock, const char* name)
 }
 }
 
+void pqHapticsTestScript::chooseObstacle(const QString& name)
+{
+  // As a user does: in the Properties panel of the active ChainMailDeformation, the
+  // Obstacles' Pipeline Connection Input set to `name`, then Apply.
+  QWidget* main = pqCoreUtilities::mainWidget();
+  auto* panel = main ? main->findChild<pqPropertiesPanel*>() : nullptr;
+  auto* selector = panel ? panel->findChild<pqInputSelectorWidget*>() : nullptr;
+  auto* combo = selector ? selector->findChild<QComboBox*>() : nullptr;
+  const int index = combo ? combo->findText(name) : -1;
+  if (index >= 0)
+  {
+    combo->setCurrentIndex(index);
+    panel->apply();
+  }
+}
+
+namespace
+{
+// The names the Pipeline Browser shows, every row of its tree, separated by ','.
+QString pipelineRows()
+{
+  QWidget* main = pqCoreUtilities::mainWidget();
+  auto* browser = main ? main->findChild<pqPipelineBrowserWidget*>() : nullptr;
+  QAbstractItemModel* model = browser ? browser->getModel() : nullptr;
+  QStringList rows;
+  std::vector<QModelIndex> todo{ QModelIndex() };
+  while (model && !todo.empty())
+  {
+    const QModelIndex parent = todo.back();
+    todo.pop_back();
+    for (int r = 0; r < model->rowCount(parent); ++r)
+    {
+      const QModelIndex row = model->index(r, 0, parent);
+      rows << model->data(row, Qt::DisplayRole).toString();
+      todo.push_back(row);
+    }
+  }
+  return rows.join(",");
+}
+}
+
 void pqHapticsTestScript::snapshot(const QString& name)
 {
   const QString prefix = this->Output + "-" + name;
@@ -270,12 +347,14 @@ void pqHapticsTestScript::snapshot(const QString& name)
   vtkPointSet* painted = output(paint, false);
   vtkPointSet* shown = output(deformation, false);
   vtkDataArray* m = painted ? painted->GetPointData()->GetArray("Malleability") : nullptr;
+  vtkDataArray* e = shown ? shown->GetPointData()->GetArray("Elevation") : nullptr;
+  vtkDataArray* re = shown ? shown->GetPointData()->GetArray("RestElevation") : nullptr;
   QFile csv(prefix + ".csv");
   if (rest && shown && m && rest->GetNumberOfPoints() == shown->GetNumberOfPoints() &&
       csv.open(QIODevice::WriteOnly | QIODevice::Text))
   {
     QTextStream out(&csv);
-    out << "x y z sx sy sz m\n";
+    out << "x y z sx sy sz m" << (e && re ? " e re" : "") << "\n";
     for (vtkIdType i = 0; i < rest->GetNumberOfPoints(); ++i)
     {
       double p[3], s[3];
@@ -285,7 +364,13 @@ void pqHapticsTestScript::snapshot(const QString& name)
       {
         out << QString::number(v, 'g', 17) << " ";
       }
-      out << QString::number(m->GetTuple1(i), 'g', 9) << "\n";
+      out << QString::number(m->GetTuple1(i), 'g', 9);
+      if (e && re)
+      {
+        out << " " << QString::number(e->GetTuple1(i), 'g', 17) << " "
+            << QString::number(re->GetTuple1(i), 'g', 17);
+      }
+      out << "\n";
     }
   }
   auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
@@ -314,10 +399,17 @@ void pqHapticsTestScript::snapshot(const QString& name)
       out << "Displacement = " << QString::number(d[0], 'g', 17) << " "
           << QString::number(d[1], 'g', 17) << " " << QString::number(d[2], 'g', 17) << "\n";
       out << "GraspPointId = " << vtkSMPropertyHelper(proxy, "GraspPointId").GetAsIdType() << "\n";
+      proxy->UpdatePropertyInformation();
+      out << "NumberOfObstacleBlockedPoints = "
+          << vtkSMPropertyHelper(proxy, "NumberOfObstacleBlockedPoints").GetAsIdType() << "\n";
     }
+    out << "pipeline = " << pipelineRows() << "\n";
+    pqHapticsWriteShown(out);
     pqHapticsWriteDrawnGrasp(out, deformation, shown);
-    // The cursors shown: the view's visible sphere actors other than the data.
+    // The cursors shown (the view's visible sphere actors other than the data) and the
+    // lines shown from a grasp marker to its cursor.
     int cursors = 0;
+    QStringList tethers;
     vtkRenderer* renderer = view ? view->getRenderViewProxy()->GetRenderer() : nullptr;
     vtkActorCollection* actors = renderer ? renderer->GetActors() : nullptr;
     vtkCollectionSimpleIterator it;
@@ -327,9 +419,9 @@ void pqHapticsTestScript::snapshot(const QString& name)
     }
     while (vtkActor* actor = actors ? actors->GetNextActor(it) : nullptr)
     {
-      auto* sphere = actor->GetMapper()
-                       ? vtkSphereSource::SafeDownCast(actor->GetMapper()->GetInputAlgorithm())
-                       : nullptr;
+      vtkAlgorithm* source = actor->GetMapper() ? actor->GetMapper()->GetInputAlgorithm() : nullptr;
+      auto* sphere = vtkSphereSource::SafeDownCast(source);
+      auto* line = vtkLineSource::SafeDownCast(source);
       if (sphere && actor->GetVisibility())
       {
         const double* c = sphere->GetCenter();
@@ -339,14 +431,28 @@ void pqHapticsTestScript::snapshot(const QString& name)
             << actor->GetProperty()->GetRepresentation() << " "
             << QString::number(actor->GetMatrix()->GetElement(2, 2), 'g', 17) << "\n";
       }
+      if (line && actor->GetVisibility())
+      {
+        QStringList ends;
+        for (const double* p : { line->GetPoint1(), line->GetPoint2() })
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            ends << QString::number(p[k], 'g', 17);
+          }
+        }
+        out << "tether_" << tethers.size() << " = " << ends.join(" ") << "\n";
+        tethers << ends.join(" ");
+      }
     }
     out << "cursors = " << cursors << "\n";
+    out << "tethers = " << tethers.size() << "\n";
     if (auto* pull = this->Dock->findChild<QComboBox*>("PullConstraint"))
     {
       out << "pull_constraint = " << pull->currentData().toInt() << "\n";
     }
     for (const char* label :
-      { "BrushRadius", "BrushRadiusAbout", "BrushNote", "Edits", "PullMode" })
+      { "BrushRadius", "BrushRadiusAbout", "BrushNote", "Edits", "PullMode", "Figures" })
     {
       out << "label_" << label << " = " << text(this->Dock, label) << "\n";
     }

@@ -25,6 +25,11 @@
 //                      and <out>-NAME.txt holds the deformation proxy's grasp,
 //                      Displacement and EditHistory, the paint proxy's Dabs and
 //                      PointDabs, and the force hand 1's last scene asks for (writeForce)
+//   open READER        File > Open of GEOSHAPING_GUI_SURFACE with the reader READER
+//                      (sources group), then Apply
+//   apply NAME         Filters > NAME on the active source, then Apply
+//   obstacle NAME      in the Properties panel, the ChainMailDeformation's Obstacles
+//                      (its Pipeline Connection's Input) set to the source NAME, Apply
 //   savestate          File > Save State to <out>.pvsm
 //   snapshot NAME      writes <out>-NAME.csv (per point: the paint's input x y z, the shown
 //                      surface's x y z, the painted malleability), <out>-NAME.txt (the
@@ -34,7 +39,9 @@
 //                      deformation's display Scale and its obstacles', its grasped
 //                      vertex's pixel as drawn
 //                      and the mouse's pixel, the
-//                      dock's texts) and <out>-NAME.png
+//                      dock's texts, NumberOfObstacleBlockedPoints, the lines shown
+//                      from a grasp marker to its cursor, the Pipeline Browser's rows)
+//                      and <out>-NAME.png
 //                      (the render view)
 //   wait               nothing this poll
 // Each step waits for one interactor frame after the previous one, so that the frames
@@ -62,6 +69,7 @@ public:
 
 private:
   void snapshot(const QString& name);
+  void chooseObstacle(const QString& name);
   void dump(const QString& name);
   void mouse(const QStringList& words);
   void key(const QString& key);
