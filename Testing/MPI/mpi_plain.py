@@ -40,7 +40,8 @@ if case == "paint":
     upstream.DistanceMode = "Geodesic"
     upstream.Dabs = [float(x) for x in os.environ["PLAIN_DABS"].split()]
 chain = ChainMailDeformation(Input=upstream)  # noqa: F405
-chain.CandidateQueue = "FIFO Priority"
+chain.CandidateQueue = os.environ.get("PLAIN_QUEUE", "FIFO Priority")
+chain.ValidRegionFrame = os.environ.get("PLAIN_FRAME", "Axes")
 chain.OutputPointsPrecision = "Double"
 chain.GraspMode = "Nearest To Position"
 chain.GraspPosition = [float(x) for x in os.environ["PLAIN_GRASP"].split()]
