@@ -31,13 +31,13 @@ public:
 
   std::vector<geoshaping::RoundState> all_round_states(const geoshaping::RoundState& state) override
   {
-    std::vector<unsigned long long> all(4 * std::size_t(this->pieces()));
-    const unsigned long long mine[4] = { state.pending[0], state.pending[1], state.pending[2],
-      state.superstep };
-    this->Controller->AllGather(mine, all.data(), 4);
+    std::vector<unsigned long long> all(5 * std::size_t(this->pieces()));
+    const unsigned long long mine[5] = { state.pending[0], state.pending[1], state.pending[2],
+      state.pending[3], state.superstep };
+    this->Controller->AllGather(mine, all.data(), 5);
     std::vector<geoshaping::RoundState> out;
-    for (std::size_t p = 0; p < all.size(); p += 4)
-      out.push_back({ { all[p], all[p + 1], all[p + 2] }, all[p + 3] });
+    for (std::size_t p = 0; p < all.size(); p += 5)
+      out.push_back({ { all[p], all[p + 1], all[p + 2], all[p + 3] }, all[p + 4] });
     return out;
   }
 

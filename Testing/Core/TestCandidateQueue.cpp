@@ -28,7 +28,7 @@ std::vector<index_t> drain(Q& q)
 TEST(CandidateQueue, SuperstepsComeByBandRootAndGenerationEachInPushOrder)
 {
   SuperstepQueue q;
-  const SuperstepRoot base{}, early{ 1, 50 }, late{ 1, 60 };
+  const SuperstepRoot base{}, early{ 1, 0, 50 }, late{ 1, 0, 60 };
   // (vertex, sponsor, band, root): generation 1, groups opened in no particular order.
   using In = std::tuple<index_t, index_t, std::uint32_t, SuperstepRoot>;
   for (auto [c, s, b, r] : { In{ 9, 4, 2, base }, In{ 3, 8, 1, base }, In{ 9, 2, 2, base },
@@ -59,8 +59,8 @@ TEST(CandidateQueue, SuperstepsComeByBandRootAndGenerationEachInPushOrder)
     { SuperstepQueue::key(1, late, 1), { { 60, 7 } } },
     { SuperstepQueue::key(2, base, 1), { { 9, 4 }, { 9, 2 }, { 1, 5 } } } };
   EXPECT_EQ(got, expected);
-  const SuperstepRoot negative{ 7, -12 };
-  EXPECT_EQ(SuperstepQueue::root_of(SuperstepQueue::key(3, negative, 4)).gid, -12);
+  const SuperstepRoot negative{ 7, 5, -12 };
+  EXPECT_EQ(SuperstepQueue::root_of(SuperstepQueue::key(3, negative, 4)), negative);
   q.clear();
   EXPECT_EQ(q.top(), SuperstepQueue::none);
   // Chains rely on generations growing: a generation that does not is refused, unless
@@ -84,7 +84,7 @@ TEST(CandidateQueue, SuperstepsComeByBandRootAndGenerationEachInPushOrder)
 TEST(CandidateQueue, AppendedGroupsComeInKeyOrderEachInPushOrder)
 {
   std::mt19937_64 rng(26);
-  using Key = std::tuple<std::uint32_t, std::uint32_t, std::int64_t, std::uint32_t>;
+  using Key = std::tuple<std::uint32_t, std::uint32_t, std::uint64_t, std::int64_t, std::uint32_t>;
   using Pairs = std::vector<std::pair<index_t, index_t>>;
   for (int trial = 0; trial < 30; ++trial)
   {
@@ -99,10 +99,12 @@ TEST(CandidateQueue, AppendedGroupsComeInKeyOrderEachInPushOrder)
         const auto kind = std::uint32_t(rng() % kinds);
         const std::uint32_t band = 0x3e800000u + (kind % 3) * 0x100000u;
         const SuperstepRoot root =
-          kind < 3 ? SuperstepRoot{} : SuperstepRoot{ generation, std::int64_t(kind) - 20 };
+          kind < 3 ? SuperstepRoot{}
+                   : SuperstepRoot{ generation, std::uint64_t(kind % 4), std::int64_t(kind) - 20 };
         const index_t vertex = index_t(rng() % 1000), sponsor = index_t(rng() % 1000);
         q.append(q.open(band, root), vertex, sponsor);
-        expected[{ band, root.generation, root.gid, generation }].push_back({ vertex, sponsor });
+        expected[{ band, root.generation, root.order, root.gid, generation }].push_back(
+          { vertex, sponsor });
       }
       q.seal_in_push_order(generation);
     }
@@ -113,8 +115,8 @@ TEST(CandidateQueue, AppendedGroupsComeInKeyOrderEachInPushOrder)
       std::size_t b, e;
       ASSERT_TRUE(q.pop(key, b, e));
       const SuperstepRoot root = SuperstepQueue::root_of(key);
-      const Key full{ std::uint32_t(key[0] >> 32), root.generation, root.gid,
-        std::uint32_t(key[2]) };
+      const Key full{ std::uint32_t(key[0] >> 32), root.generation, root.order, root.gid,
+        std::uint32_t(key[3]) };
       keys.push_back(full);
       for (std::size_t i = b; i < e; ++i)
         got[full].push_back({ q.entries()[i].vertex, q.entries()[i].sponsor });

@@ -112,16 +112,18 @@ public:
   }
 
   // Supersteps: every entry of the lowest (malleability, root, generation), in
-  // (candidate id, sponsor id) order; the neighbours of what a superstep moved are
-  // queued after it. A root (generation, id) starts where an entry goes down in
-  // malleability band (priority_band), is kept within one band, and is (0, 0) going up.
+  // (candidate id, sponsor id) order; a candidate takes the longest of its entries'
+  // targets, the first among exactly equal lengths; the neighbours of what a superstep
+  // moved are queued after it. A root (generation, -|target|^2, id) starts where an
+  // entry goes down in malleability band (priority_band): the longer target first, the
+  // lower id among equal lengths; it is kept within one band, and is (0, 0, 0) going up.
   template<class Required, class Move>
   void supersteps(bool banded, index_t g, Required required, Move move, FrameResult& r)
   {
-    using Root = std::pair<std::uint32_t, std::int64_t>;
+    using Root = std::tuple<std::uint32_t, double, std::int64_t>;
     using Entry = std::tuple<std::int64_t, std::int64_t, index_t, index_t>; // gids, c, s
     std::map<std::tuple<std::uint32_t, Root, std::uint32_t>, std::vector<Entry>> pending;
-    std::vector<Root> root(malleability_.size(), Root{ 0, 0 });
+    std::vector<Root> root(malleability_.size(), Root{ 0, 0.0, 0 });
     std::vector<index_t> this_step{ g };
     std::uint32_t step = 0;
     auto band = [&](index_t v) { return banded ? priority_band(malleability_[v]) : 0u; };
@@ -133,9 +135,10 @@ public:
           const index_t c = *it;
           if (moved_flag_[c] || pinned_[c])
             continue;
-          const Root rc = band(c) < band(s)    ? Root{ step + 1, gid_[c] }
+          const Root rc = band(c) < band(s)
+                            ? Root{ step + 1, -required(c, s).squaredNorm(), gid_[c] }
                           : band(c) == band(s) ? root[s]
-                                               : Root{ 0, 0 };
+                                               : Root{ 0, 0.0, 0 };
           pending[{ band(c), rc, step + 1 }].emplace_back(gid_[c], gid_[s], c, s);
         }
       this_step.clear();
@@ -148,15 +151,28 @@ public:
       std::vector<Entry> entries = std::move(pending.begin()->second);
       pending.erase(pending.begin());
       std::sort(entries.begin(), entries.end());
-      for (const auto& [cg, sg, c, s] : entries)
+      for (std::size_t k = 0; k < entries.size();)
       {
-        ++r.examined;
-        if (moved_flag_[c])
+        // The entries of one candidate: the longest target wins, the first of equals.
+        const index_t c = std::get<2>(entries[k]);
+        index_t best = -1;
+        Eigen::Vector3d best_t = Eigen::Vector3d::Zero();
+        for (; k < entries.size() && std::get<2>(entries[k]) == c; ++k)
+        {
+          ++r.examined;
+          const index_t s = std::get<3>(entries[k]);
+          if (moved_flag_[c])
+            continue;
+          const Eigen::Vector3d t = required(c, s);
+          if (!t.isZero(0.0) && (best < 0 || t.squaredNorm() > best_t.squaredNorm()))
+          {
+            best = s;
+            best_t = t;
+          }
+        }
+        if (best < 0)
           continue;
-        const Eigen::Vector3d t = required(c, s);
-        if (t.isZero(0.0))
-          continue;
-        move(c, s, t);
+        move(c, best, best_t);
         root[c] = group_root;
         this_step.push_back(c);
       }

@@ -256,9 +256,11 @@ TEST(Obstacles, AGraspOnTheObstacleLeavesItButNothingCrosses)
     EXPECT_EQ(r.grasp_fraction, 1.0); // touching is not crossing
     EXPECT_EQ(d.displacement(grasp), pull);
     expect_obstacle_rule(d, fault, grasp);
+    // Touching is not crossing for them either: a vertex whose longest sponsor asks it
+    // past the fault stops on it (x = 10 exactly).
     for (index_t v : d.moved())
       if (d.rest_local(v).x() + d.origin().x() < 10.0)
-        EXPECT_LT(d.position(v).x(), 10.0) << v;
+        EXPECT_LE(d.position(v).x(), 10.0) << v;
   }
 }
 

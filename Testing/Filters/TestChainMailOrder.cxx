@@ -92,7 +92,10 @@ TEST(ChainMailOrder, WithoutGlobalIdsOneProcessOrdersByCoordinatesAsSeveralDo)
 
   const std::vector<double> plain = Deformed(grid, {});
   EXPECT_EQ(plain, Deformed(grid, byCoordinates)) << "the coordinate ranks, bit for bit";
-  EXPECT_NE(plain, Deformed(grid, byIndex)) << "the order the point indices gave before";
+  // The order uses the ids only at exact ties of length (docs/deformer.md, "Order"),
+  // which this scene has none of: the point indices as GlobalIds give the same bits too
+  // (before the longest move won, they gave another frame).
+  EXPECT_EQ(plain, Deformed(grid, byIndex)) << "the point indices as GlobalIds";
 }
 
 TEST(ChainMailOrder, CoincidentPointsStayApartOnOneProcess)

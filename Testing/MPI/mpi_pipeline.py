@@ -73,7 +73,8 @@ def plain_pipeline(case, path, simple):
     """(upstream, chain): the pipeline of mpi_plain.py (CASE: reader, redistribute, d3,
     ids, paint, unsplitpaint) on the file `path` (.vtp, .vtu, .ts, or a GeoTIFF into
     DEMSurface), its parameters from the environment (PLAIN_GRASP, PLAIN_PULL,
-    PLAIN_DABS: mpi_driver.plain_parameters). `simple`: the namespace holding
+    PLAIN_DABS: mpi_driver.plain_parameters; PLAIN_QUEUE and PLAIN_FRAME, default FIFO
+    Priority and Axes). `simple`: the namespace holding
     paraview.simple and the plugin's proxies (the caller's globals() after LoadPlugin)."""
     def floats(name):
         return [float(x) for x in os.environ[name].split()]
@@ -100,7 +101,8 @@ def plain_pipeline(case, path, simple):
         upstream.DistanceMode = "Geodesic"
         upstream.Dabs = floats("PLAIN_DABS")
     chain = simple["ChainMailDeformation"](Input=upstream)
-    chain.CandidateQueue = "FIFO Priority"
+    chain.CandidateQueue = os.environ.get("PLAIN_QUEUE", "FIFO Priority")
+    chain.ValidRegionFrame = os.environ.get("PLAIN_FRAME", "Axes")
     chain.OutputPointsPrecision = "Double"
     chain.GraspMode = "Nearest To Position"
     chain.GraspPosition = floats("PLAIN_GRASP")

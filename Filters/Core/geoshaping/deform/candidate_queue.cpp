@@ -62,8 +62,8 @@ void SuperstepQueue::seal_in_push_order(std::uint32_t generation)
   auto file_open = [&](std::size_t g, std::size_t b, std::size_t e)
   {
     if (b < e)
-      file({ { open_[g].band_generation, open_[g].gid, generation }, std::uint32_t(b),
-        std::uint32_t(e) });
+      file({ { open_[g].band_generation, open_[g].order, open_[g].gid, generation },
+        std::uint32_t(b), std::uint32_t(e) });
   };
   file_open(0, begin, pool_.size());
   if (!side_.empty())
@@ -91,13 +91,13 @@ void SuperstepQueue::seal_in_push_order(std::uint32_t generation)
 
 void SuperstepQueue::file(const Group& g)
 {
-  const ChainKey ck{ g.key[0], g.key[1] };
+  const ChainKey ck{ g.key[0], g.key[1], g.key[2] };
   std::uint32_t c = last_;
   if (c == nil || !(chains_[c].key == ck))
   {
     // A root made in this generation (a downhill entry) has no chain yet: seal files each
     // (band, root) of a generation once.
-    const bool new_root = std::uint32_t(ck.band_generation) == g.key[2];
+    const bool new_root = std::uint32_t(ck.band_generation) == g.key[3];
     c = new_root ? nil : chain_of_.find(ck);
     if (c == nil)
     {
@@ -196,7 +196,7 @@ bool SuperstepQueue::pop(const SuperstepKey& k, std::size_t& begin, std::size_t&
   const std::uint32_t c = heap_.front();
   Chain& chain = chains_[c];
   const Group& g = groups_[chain.head];
-  if (g.key[0] != k[0] || g.key[1] != k[1] || g.key[2] != k[2])
+  if (g.key != k)
     return false;
   begin = g.begin;
   end = g.end;

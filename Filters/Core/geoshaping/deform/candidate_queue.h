@@ -1,6 +1,7 @@
 #pragma once
 // Structures holding the (candidate, sponsor) pairs awaiting analysis.
 #include "geoshaping/mesh/adjacency.h"
+#include "geoshaping/mesh/bit_cast.h"
 
 #include <array>
 #include <cstdint>
@@ -83,8 +84,9 @@ public:
 //
 // - band = c's malleability (FIFO: 0 for all): lowest first;
 // - root = where propagation entered c's band region. An entry into a lower band than
-//   its sponsor's starts a root (its generation, c's id); into the same band it keeps
-//   the sponsor's root; into a higher band, and from the grasp, the base root (0, 0),
+//   its sponsor's starts a root (its generation, the length of the move it asks of c,
+//   c's id: SuperstepRoot::entered, longest first); into the same band it keeps the
+//   sponsor's root; into a higher band, and from the grasp, the base root (0, 0, 0),
 //   which comes first. A region entered downhill at several places is so filled from
 //   the first entry alone, as FIFO Priority's sequential queue does (it drains a lower
 //   band before moving anything else): a rigid region moves as one.
@@ -125,10 +127,19 @@ public:
 struct SuperstepRoot
 {
   std::uint32_t generation = 0; // 0: the base root
+  std::uint64_t order = 0;      // roots of one (band, generation) pop by (order, gid)
   std::int64_t gid = 0;
   bool operator==(const SuperstepRoot& o) const
   {
-    return generation == o.generation && gid == o.gid;
+    return generation == o.generation && order == o.order && gid == o.gid;
+  }
+  // The root an entry (c, s) into a lower band starts (docs/deformer.md, "Order"):
+  // generation 1 + the superstep of s's move, order ~bits(|u|^2) for the move u the
+  // entry asks of c (the bits of a double >= 0 grow with it, so the longest move comes
+  // first), gid c's global id (exactly equal lengths only).
+  static SuperstepRoot entered(std::uint32_t generation, double length_squared, std::int64_t gid)
+  {
+    return { generation, ~bit_cast<std::uint64_t>(length_squared), gid };
   }
 };
 
@@ -151,22 +162,24 @@ inline std::uint32_t priority_band(float m)
   return 1 + (scaled >= float(priority_levels - 1) ? priority_levels - 1 : std::uint32_t(scaled));
 }
 
-// (band, root, generation) as three words compared in lexicographic order, so pieces
-// can reduce it as plain integers.
-using SuperstepKey = std::array<std::uint64_t, 3>;
+// (band, root, generation) as four words compared in lexicographic order (band and the
+// root's generation, its order, its gid, the generation), so pieces can reduce it as
+// plain integers.
+using SuperstepKey = std::array<std::uint64_t, 4>;
 
 class SuperstepQueue
 {
 public:
-  static constexpr SuperstepKey none = { ~std::uint64_t(0), ~std::uint64_t(0), ~std::uint64_t(0) };
+  static constexpr SuperstepKey none = { ~std::uint64_t(0), ~std::uint64_t(0), ~std::uint64_t(0),
+    ~std::uint64_t(0) };
   static SuperstepKey key(std::uint32_t band, const SuperstepRoot& root, std::uint32_t generation)
   {
-    return { std::uint64_t(band) << 32 | root.generation,
+    return { std::uint64_t(band) << 32 | root.generation, root.order,
       std::uint64_t(root.gid) ^ (std::uint64_t(1) << 63), generation };
   }
   static SuperstepRoot root_of(const SuperstepKey& k)
   {
-    return { std::uint32_t(k[0]), std::int64_t(k[1] ^ (std::uint64_t(1) << 63)) };
+    return { std::uint32_t(k[0]), k[1], std::int64_t(k[2] ^ (std::uint64_t(1) << 63)) };
   }
   // (vertex, sponsor) pairs appended to the group of their (band, root) and filed by
   // seal_in_push_order() into one group per (band, root), each in push order. A caller
@@ -177,8 +190,8 @@ public:
   // the only one) is written in place, the others go through a side buffer.
   std::uint32_t open(std::uint32_t band, const SuperstepRoot& root)
   {
-    const ChainKey k{ std::uint64_t(band) << 32 | root.generation,
-      std::uint64_t(root.gid) ^ (std::uint64_t(1) << 63) }; // key()'s first two words
+    const ChainKey k{ std::uint64_t(band) << 32 | root.generation, root.order,
+      std::uint64_t(root.gid) ^ (std::uint64_t(1) << 63) }; // key()'s first three words
     if (open_.empty())
     {
       open_begin_ = pool_.size();
@@ -242,10 +255,10 @@ private:
   // does not change as they pop: a binary heap of chains on (band, root).
   struct ChainKey
   {
-    std::uint64_t band_generation, gid; // key()'s first two words
+    std::uint64_t band_generation, order, gid; // key()'s first three words
     bool operator==(const ChainKey& o) const
     {
-      return band_generation == o.band_generation && gid == o.gid;
+      return band_generation == o.band_generation && order == o.order && gid == o.gid;
     }
   };
   // ChainKey -> id by open addressing (linear probing, at most half full): no allocation
@@ -268,7 +281,8 @@ private:
     };
     std::size_t home(const ChainKey& k) const
     {
-      std::uint64_t h = k.band_generation * 0x9e3779b97f4a7c15ULL + k.gid;
+      std::uint64_t h =
+        (k.band_generation * 0x9e3779b97f4a7c15ULL + k.order) * 0x9e3779b97f4a7c15ULL + k.gid;
       h ^= h >> 32;
       h *= 0xd6e8feb86659fd93ULL;
       return std::size_t(h ^ (h >> 32)) & (slots_.size() - 1);
@@ -291,6 +305,7 @@ private:
       const ChainKey& x = (*chains)[a].key;
       const ChainKey& y = (*chains)[b].key;
       return x.band_generation != y.band_generation ? x.band_generation > y.band_generation
+             : x.order != y.order                   ? x.order > y.order
                                                     : x.gid > y.gid;
     }
   };

@@ -445,15 +445,23 @@ void ChainMailDeformer::push_neighbours()
       const Node& node = nodes[c];
       if (node.stamp == frame || (pins && pins[c]) || (ghosts && ghosts[c]))
         continue;
-      // Downhill starts a root, the same band keeps the sponsor's, uphill takes the base.
+      // Downhill starts a root (ordered by the length of the move it asks of c), the
+      // same band keeps the sponsor's, uphill takes the base.
       const std::uint32_t c_band =
         !Banded || node.rank == s_rank ? s_band : rank_band_[std::size_t(node.rank)];
       if (c_band == s_band)
         supersteps_.append(same, c, index_t(slot));
       else
-        supersteps_.append(supersteps_.open(c_band,
-                             c_band < s_band ? SuperstepRoot{ superstep_ + 1, global_id_inner(c) }
-                                             : SuperstepRoot{}),
+        supersteps_.append(
+          supersteps_.open(
+            c_band, c_band < s_band
+                      ? SuperstepRoot::entered(superstep_ + 1,
+                          (frame_kind_ == ValidRegionFrame::link
+                              ? required_displacement<ValidRegionFrame::link>(node, index_t(slot))
+                              : required_displacement<ValidRegionFrame::axes>(node, index_t(slot)))
+                            .squaredNorm(),
+                          global_id_inner(c))
+                      : SuperstepRoot{}),
           c, index_t(slot));
       prefetch(neighbors + offsets[c]); // read if c moves
     }
@@ -511,16 +519,31 @@ std::size_t ChainMailDeformer::examine(
 {
   // The group in push order: each candidate's entries in sponsor id order, and
   // candidates independent of one another (their sponsors moved in earlier
-  // supersteps), so only the order of the moves differs from the (candidate id,
-  // sponsor id) order: sort_moves() restores it, and gates them in it.
+  // supersteps). A candidate takes the largest of its entries' targets, the first in
+  // push order among exactly equal lengths (sponsor_wins()); only the order of the
+  // moves differs from the (candidate id, sponsor id) order: sort_moves() restores
+  // it, and gates them in it.
   const Candidate* const entries = supersteps_.entries();
   const std::size_t first = moved_rec_.size();
   for (std::size_t k = begin; k < end; ++k)
   {
     const Candidate& e = entries[k];
     const Node& c = nodes_[std::size_t(e.vertex)];
-    if (c.stamp == frame_) // moved by an earlier entry (a sponsor of lower id) or superstep
+    if (c.stamp == frame_)
+    {
+      const std::size_t slot = std::size_t(slot_[std::size_t(e.vertex)]);
+      if (slot < first) // moved in an earlier superstep
+        continue;
+      // Moved by an earlier entry of this superstep: the larger target wins.
+      MovedRecord& r = moved_rec_[slot];
+      const Eigen::Vector3d target = required_displacement<Frame>(c, e.sponsor);
+      if (sponsor_wins(target, r.disp))
+      {
+        r.disp = target;
+        r.sponsor_slot = e.sponsor;
+      }
       continue;
+    }
     const Eigen::Vector3d target = required_displacement<Frame>(c, e.sponsor);
     if (target.isZero(0.0))
       continue;

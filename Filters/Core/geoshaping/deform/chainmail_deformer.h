@@ -45,19 +45,22 @@ struct FrameResult
 // a superstep takes every pending entry of the lowest (band, root, generation), band =
 // the candidate's malleability (FIFO: one band), root = where propagation entered the
 // band's region (a region entered downhill is filled from its first entry alone, so
-// rigid regions move as one), generation = 1 + the superstep in which the sponsor
-// moved, and examines them in (candidate global id, sponsor global id) order; the first
-// sponsor that moves a candidate wins. Entries for different candidates in one
-// superstep are independent: a box depends on the candidate's rest position and
-// malleability and on the sponsor, which moved in an earlier superstep. The neighbours
-// of the vertices a superstep moved are queued after it, skipping those moved by then,
-// so the entries (and the supersteps) do not depend on the order inside a superstep.
-// Hence the result depends only on the mesh, its global ids and the pull, never on the
-// vertex numbering or on a partition into pieces (partitioned_chainmail.h). Global
-// ids are the caller's ids unless set_global_ids() gives others. (How: the sponsors are
-// taken in id order, a group is examined in push order and its moves are then put in
-// id order, see SuperstepQueue::open.) Priority (heap order)
-// and Max Violation pop one candidate at a time and push its neighbours at once.
+// rigid regions move as one; roots entered in one superstep come longest move first),
+// generation = 1 + the superstep in which the sponsor moved. A candidate with several
+// entries in a superstep takes the longest of the moves they ask (sponsor_wins(); the
+// first in sponsor global id order among exactly equal lengths). Entries for different
+// candidates in one superstep are independent: a box depends on the candidate's rest
+// position and malleability and on the sponsor, which moved in an earlier superstep.
+// The neighbours of the vertices a superstep moved are queued after it, skipping those
+// moved by then, so the entries (and the supersteps) do not depend on the order inside
+// a superstep. Hence the result depends only on the mesh and the pull (the global ids
+// only at exact ties of length), never on the vertex numbering, a rotation or
+// translation of mesh and pull together, or a partition into pieces
+// (partitioned_chainmail.h; docs/deformer.md, "Order"). Global ids are the caller's ids
+// unless set_global_ids() gives others. (How: the sponsors are taken in id order, a
+// group is examined in push order and its moves are then put in id order, see
+// SuperstepQueue::open.) Priority (heap order) and Max Violation pop one candidate at a
+// time and push its neighbours at once.
 //
 // The region is the paper's axis-aligned box (ValidRegionFrame::axes, the default) or
 // the cylinder in the frame of the rest link (ValidRegionFrame::link, rotation
@@ -96,8 +99,9 @@ struct FrameResult
 // Threads. With set_threads(n > 1), a superstep whose group holds at least
 // threaded_threshold() entries is examined by n threads of a pool the deformer keeps
 // (worker_pool.h; deform/threaded_superstep.cpp), each a contiguous chunk of the group:
-// entries are independent within a superstep, and "the first entry in push order that
-// moves c wins" becomes an atomic minimum over the entries proposing to move c. The
+// entries are independent within a superstep, and "the longest move wins, the first in
+// push order among equal lengths" becomes an atomic maximum of |u|^2 over the entries
+// proposing to move c, then an atomic minimum over those as long as it. The
 // winners are put in global id order (each thread sorts its own, then each merges a range
 // of ids) and written into the slots the one-thread superstep gives them; under FIFO the
 // threads then push the neighbours of their ranges, whose concatenation is the one-thread
@@ -364,14 +368,16 @@ private:
   struct StoredRoot
   {
     std::uint32_t generation;
+    std::uint64_t order;
     std::int64_t gid;
     StoredRoot() = default;
     explicit StoredRoot(const SuperstepRoot& r)
       : generation(r.generation)
+      , order(r.order)
       , gid(r.gid)
     {
     }
-    SuperstepRoot get() const { return { generation, gid }; }
+    SuperstepRoot get() const { return { generation, order, gid }; }
   };
   struct MovedRecord
   {
@@ -418,6 +424,15 @@ private:
   {
     for (std::uint32_t e = offsets_[i]; e < offsets_[i + 1]; ++e)
       prefetch(&nodes_[std::size_t(neighbors_[e])]);
+  }
+  // The rule of a superstep for a candidate several of its sponsors would move
+  // (docs/deformer.md, "Order"): whether the target `u` of a later entry (in push order)
+  // replaces `best`, the target the candidate holds: when it is longer, |u|^2 > |best|^2
+  // as computed. So the longest target wins, the first in push order (sponsor global id
+  // order) among exactly equal lengths.
+  static bool sponsor_wins(const Eigen::Vector3d& u, const Eigen::Vector3d& best)
+  {
+    return u.squaredNorm() > best.squaredNorm();
   }
   // gate false: d passes the obstacle gate later (sort_moves()).
   void move(index_t inner_vertex, const Eigen::Vector3d& d, index_t sponsor_slot,

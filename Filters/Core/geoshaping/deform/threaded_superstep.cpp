@@ -2,6 +2,7 @@
 // bit for bit.
 #include "geoshaping/deform/chainmail_deformer.h"
 #include "geoshaping/deform/worker_pool.h"
+#include "geoshaping/mesh/bit_cast.h"
 #include "geoshaping/mesh/prefetch.h"
 
 #include <algorithm>
@@ -20,9 +21,12 @@ struct ChainMailDeformer::Threaded
   {
   }
   WorkerPool pool;
-  // By internal id: 1 + the first entry of the current superstep proposing to move the
-  // vertex, 0 for none. Every vertex claimed moves in that superstep, which sets its
-  // claim back to 0: all are 0 between supersteps.
+  // By internal id: the bits of the largest |u|^2 proposed for the vertex in the current
+  // superstep (0: none; a proposal's |u|^2 > 0, and the bits of non-negative doubles are
+  // in their order), and 1 + the first entry proposing it, 0 for none. Every vertex
+  // claimed moves in that superstep, which sets both back to 0: all are 0 between
+  // supersteps.
+  std::vector<std::atomic<std::uint64_t>> longest;
   std::vector<std::atomic<std::uint32_t>> claim;
   struct Proposal
   {
@@ -78,7 +82,8 @@ std::size_t ChainMailDeformer::threaded_bytes() const
   const Threaded* t = threaded_.state.get();
   if (!t)
     return 0;
-  std::size_t bytes = t->claim.capacity() * sizeof(std::uint32_t);
+  std::size_t bytes =
+    t->claim.capacity() * sizeof(std::uint32_t) + t->longest.capacity() * sizeof(std::uint64_t);
   for (const Threaded::Lane& lane : t->lanes)
     bytes += lane.proposals.capacity() * sizeof(Threaded::Proposal) +
              lane.won.capacity() * sizeof(lane.won[0]) +
@@ -111,6 +116,15 @@ inline void claim_first(std::atomic<std::uint32_t>& m, std::uint32_t v)
   {
   }
 }
+
+// m = max(m, v).
+inline void claim_longest(std::atomic<std::uint64_t>& m, std::uint64_t v)
+{
+  std::uint64_t cur = m.load(std::memory_order_relaxed);
+  while (v > cur && !m.compare_exchange_weak(cur, v, std::memory_order_relaxed))
+  {
+  }
+}
 } // namespace
 
 template<ValidRegionFrame Frame>
@@ -121,7 +135,10 @@ std::size_t ChainMailDeformer::examine_threaded(
     threaded_.state = std::make_unique<Threaded>(threads_);
   Threaded& th = *threaded_.state;
   if (th.claim.size() != nodes_.size())
-    std::vector<std::atomic<std::uint32_t>>(nodes_.size()).swap(th.claim); // zeroed
+  {
+    std::vector<std::atomic<std::uint32_t>>(nodes_.size()).swap(th.claim);   // zeroed
+    std::vector<std::atomic<std::uint64_t>>(nodes_.size()).swap(th.longest); // zeroed
+  }
   const int threads = th.pool.size();
   const std::size_t first = moved_rec_.size(), count = end - begin;
   const bool push = queue_kind_ == QueueKind::fifo;
@@ -135,8 +152,8 @@ std::size_t ChainMailDeformer::examine_threaded(
   {
     Threaded::Lane& lane = th.lanes[std::size_t(t)];
     // 1. Proposals of the chunk: entries whose candidate did not move in an earlier
-    //    superstep, is not claimed by an earlier entry already and whose target is not
-    //    zero (those examine() would move, were they first), each claiming its candidate.
+    //    superstep and whose target is not zero (those examine() would move, were they
+    //    first), each raising its candidate's longest |u|^2 to its own.
     lane.proposals.clear();
     const std::size_t b = begin + count * std::size_t(t) / std::size_t(threads);
     const std::size_t e = begin + count * std::size_t(t + 1) / std::size_t(threads);
@@ -144,23 +161,28 @@ std::size_t ChainMailDeformer::examine_threaded(
     {
       const Candidate& entry = entries[k];
       const Node& c = nodes_[std::size_t(entry.vertex)];
-      std::atomic<std::uint32_t>& claim = th.claim[std::size_t(entry.vertex)];
       if (c.stamp == frame_)
-        continue;
-      const std::uint32_t claimed = claim.load(std::memory_order_relaxed);
-      if (claimed != 0 && claimed <= k)
         continue;
       const Eigen::Vector3d target = required_displacement<Frame>(c, entry.sponsor);
       if (target.isZero(0.0))
         continue;
-      claim_first(claim, std::uint32_t(k + 1));
+      claim_longest(
+        th.longest[std::size_t(entry.vertex)], bit_cast<std::uint64_t>(target.squaredNorm()));
       lane.proposals.push_back({ target, std::uint32_t(k + 1), entry.vertex, entry.sponsor });
     }
     th.pool.barrier();
 
-    // 2. The winners (the first proposal of each candidate), marked moved, in id order;
-    //    samples of their ids for the ranges of step 3. (A loser reads its candidate's
-    //    claim as the winner's entry or, once reset, 0: never its own.)
+    // 1b. The proposals as long as their candidate's longest claim it, the first in push
+    //     order winning: examine()'s rule (sponsor_wins()).
+    for (const Threaded::Proposal& p : lane.proposals)
+      if (bit_cast<std::uint64_t>(p.u.squaredNorm()) ==
+          th.longest[std::size_t(p.vertex)].load(std::memory_order_relaxed))
+        claim_first(th.claim[std::size_t(p.vertex)], p.entry);
+    th.pool.barrier();
+
+    // 2. The winners, marked moved, in id order; samples of their ids for the ranges of
+    //    step 3. (A loser reads its candidate's claim as the winner's entry or, once
+    //    reset, 0: never its own.)
     lane.won.clear();
     for (std::size_t j = 0; j < lane.proposals.size(); ++j)
     {
@@ -169,6 +191,7 @@ std::size_t ChainMailDeformer::examine_threaded(
       if (th.claim[i].load(std::memory_order_relaxed) != p.entry)
         continue;
       th.claim[i].store(0, std::memory_order_relaxed);
+      th.longest[i].store(0, std::memory_order_relaxed);
       nodes_[i].stamp = frame_;
       lane.won.push_back({ global_id_inner(p.vertex), std::uint32_t(j), outer_of_[i] });
       prefetch_neighbour_records(i); // step 4 tests them, as after move()

@@ -30,9 +30,11 @@ std::vector<RoundState> Exchange::all_round_states(const RoundState& state)
 {
   std::vector<RoundState> out;
   for (const auto& w : all_gather({ std::int64_t(state.pending[0]), std::int64_t(state.pending[1]),
-         std::int64_t(state.pending[2]), std::int64_t(state.superstep) }))
+         std::int64_t(state.pending[2]), std::int64_t(state.pending[3]),
+         std::int64_t(state.superstep) }))
     out.push_back(
-      { { std::uint64_t(w[0]), std::uint64_t(w[1]), std::uint64_t(w[2]) }, std::uint64_t(w[3]) });
+      { { std::uint64_t(w[0]), std::uint64_t(w[1]), std::uint64_t(w[2]), std::uint64_t(w[3]) },
+        std::uint64_t(w[4]) });
   return out;
 }
 

@@ -190,7 +190,7 @@ void PartitionedChainMail::trade(Exchange& exchange, bool marked)
     for (auto& box : outbox_)
       if (!box.empty())
         box.insert(box.begin(),
-          { round_marker, { 0.0, 0.0, 0.0 }, { deformer_.superstep_index(), round_marker } });
+          { round_marker, { 0.0, 0.0, 0.0 }, { deformer_.superstep_index(), 0, round_marker } });
   for (const auto& box : exchange.exchange(send_to_, outbox_, receive_from_))
     for (const MovedVertex& m : box)
     {
