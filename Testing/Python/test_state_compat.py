@@ -4,7 +4,9 @@ Data/States/chainmail_2026-12-05.pvsm was saved by main of 2026-12-05 (before th
 ChainMail panel was trimmed: it holds ExactRigidAtZero, since removed, and values for
 properties now advanced or hidden): painted Fault Step Horizon, Link region, ranges,
 Smooth curve, refinement, relaxation, FIFO, one committed grasp and one pending. Loading
-it must give, bit for bit, the points of the same pipeline built here property by property."""
+it must give, bit for bit, the points of the same pipeline built here property by property,
+given the state's edit record (a committed edit is data: its offsets are replayed as saved,
+not recomputed, so a later change of ChainMail's order leaves it as the user made it)."""
 import os
 
 import numpy as np
@@ -19,6 +21,8 @@ check("ExactRigidAtZero" in open(STATE).read(), "the state holds a property sinc
 load(ns=globals())
 LoadState(STATE)
 loaded = points(FindSource("Chain"))
+history = list(FindSource("Chain").EditHistory)
+check(len(history) > 0 and history[0] != "", "the state holds one committed edit")
 
 ResetSession()
 load(ns=globals())
@@ -36,10 +40,7 @@ chain.TransferCurveShape = "Smooth"
 chain.RefinementIterations = 4
 chain.RelaxationIterations = 2
 chain.CandidateQueue = "FIFO"
-chain.GraspPointId = 300
-chain.Displacement = [0.0, 0.0, 6.0]
-chain.UpdatePipeline()
-chain.SMProxy.InvokeCommand("CommitEdit")
+chain.EditHistory = history
 chain.GraspPointId = 500
 chain.Displacement = [2.0, 0.0, -3.0]
 built = points(chain)
