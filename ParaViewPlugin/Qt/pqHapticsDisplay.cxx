@@ -15,6 +15,7 @@
 #include <vtkCellPicker.h>
 #include <vtkCollection.h>
 #include <vtkNew.h>
+#include <vtkPVRenderView.h>
 #include <vtkRenderer.h>
 #include <vtkSMPropertyHelper.h>
 #include <vtkSMRenderViewProxy.h>
@@ -64,6 +65,42 @@ bool clientPick(vtkRenderer* renderer, const int display[2], double p[3], double
   picker->GetPickNormal(n);
   return true;
 }
+
+// The ray nearEnd -> farEnd (data coordinates of `input`) met with every process's piece of
+// `input` on the server, the nearest hit reduced across them (GeoShapingRayPick, the
+// core's ray_pick.h): one push of the ray and one pull of the answer. False: no hit.
+bool serverPick(vtkSMRenderViewProxy* view, vtkSMProxy* input, unsigned int port,
+  const Eigen::Vector3d& nearEnd, const Eigen::Vector3d& farEnd, double p[3], double n[3])
+{
+  vtkSmartPointer<vtkSMSourceProxy> pick;
+  pick.TakeReference(vtkSMSourceProxy::SafeDownCast(
+    view->GetSessionProxyManager()->NewProxy("misc", "GeoShapingRayPick")));
+  if (!pick || !input)
+  {
+    return false;
+  }
+  const Eigen::Vector3d direction = farEnd - nearEnd;
+  vtkSMPropertyHelper(pick, "Input").Set(input, port);
+  vtkSMPropertyHelper(pick, "RayOrigin").Set(nearEnd.data(), 3);
+  vtkSMPropertyHelper(pick, "RayDirection").Set(direction.data(), 3);
+  pick->UpdateVTKObjects();
+  pick->UpdatePipeline();
+  pick->UpdatePropertyInformation();
+  if (vtkSMPropertyHelper(pick, "Hit").GetAsInt() == 0)
+  {
+    return false;
+  }
+  vtkSMPropertyHelper(pick, "HitPoint").Get(p, 3);
+  vtkSMPropertyHelper(pick, "HitNormal").Get(n, 3);
+  return true;
+}
+
+// True when the server draws the view's image (the client then holds no geometry).
+bool rendersRemotely(vtkSMRenderViewProxy* view)
+{
+  auto* pv = vtkPVRenderView::SafeDownCast(view->GetClientSideObject());
+  return pv && pv->GetUseDistributedRenderingForRender();
+}
 }
 
 bool pqHapticsPickSurface(
@@ -95,27 +132,39 @@ bool pqHapticsPickSurface(
     shown.to_data(displayToWorld(renderer, display[0], display[1], 0.0));
   const Eigen::Vector3d farEnd =
     shown.to_data(displayToWorld(renderer, display[0], display[1], 1.0));
-  vtkSmartPointer<vtkSMProxy> helper;
-  helper.TakeReference(view->GetSessionProxyManager()->NewProxy("misc", "PickingHelper"));
-  if (!helper)
-  {
-    return false;
-  }
-  vtkSMPropertyHelper(helper, "Input").Set(vtkSMPropertyHelper(repr, "Input").GetAsProxy(0));
-  vtkSMPropertyHelper(helper, "Selection").Set(selection);
-  vtkSMPropertyHelper(helper, "PointA").Set(nearEnd.data(), 3);
-  vtkSMPropertyHelper(helper, "PointB").Set(farEnd.data(), 3);
-  vtkSMPropertyHelper(helper, "SnapOnMeshPoint").Set(0);
-  helper->UpdateVTKObjects();
-  helper->UpdateProperty("Update", 1);
-  double p[3], n[3];
-  vtkSMPropertyHelper(helper, "Intersection").UpdateValueFromServer();
-  vtkSMPropertyHelper(helper, "Intersection").Get(p, 3);
-  vtkSMPropertyHelper(helper, "IntersectionNormal").UpdateValueFromServer();
-  vtkSMPropertyHelper(helper, "IntersectionNormal").Get(n, 3);
   double towardViewer[3];
   renderer->GetActiveCamera()->GetViewPlaneNormal(towardViewer);
   const Eigen::Vector3d toward(towardViewer[0], towardViewer[1], towardViewer[2]);
+  vtkSMPropertyHelper input(repr, "Input");
+  double p[3], n[3];
+  if (rendersRemotely(view))
+  {
+    // The client holds no geometry: every process meets the ray with its piece.
+    if (!serverPick(view, input.GetAsProxy(0), input.GetOutputPort(0), nearEnd, farEnd, p, n))
+    {
+      return false;
+    }
+  }
+  else
+  {
+    vtkSmartPointer<vtkSMProxy> helper;
+    helper.TakeReference(view->GetSessionProxyManager()->NewProxy("misc", "PickingHelper"));
+    if (!helper)
+    {
+      return false;
+    }
+    vtkSMPropertyHelper(helper, "Input").Set(input.GetAsProxy(0));
+    vtkSMPropertyHelper(helper, "Selection").Set(selection);
+    vtkSMPropertyHelper(helper, "PointA").Set(nearEnd.data(), 3);
+    vtkSMPropertyHelper(helper, "PointB").Set(farEnd.data(), 3);
+    vtkSMPropertyHelper(helper, "SnapOnMeshPoint").Set(0);
+    helper->UpdateVTKObjects();
+    helper->UpdateProperty("Update", 1);
+    vtkSMPropertyHelper(helper, "Intersection").UpdateValueFromServer();
+    vtkSMPropertyHelper(helper, "Intersection").Get(p, 3);
+    vtkSMPropertyHelper(helper, "IntersectionNormal").UpdateValueFromServer();
+    vtkSMPropertyHelper(helper, "IntersectionNormal").Get(n, 3);
+  }
   if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
   {
     if (!clientPick(renderer, display, p, n))

@@ -5,6 +5,8 @@ on a distributed server"), with the harness of gui_pvserver.py:
   the horizon, whose MalleabilityPaint runs on each rank's piece (geodesic); the dock's
   Undo takes it off and Redo puts it back. After each step every rank's malleability,
   ghosts included, equals one process's from the same dabs, bit for bit.
+  pvserver_paint_remote: the same with the Remote Render Threshold at 0 (the client
+  holds no geometry: the pick asks the ranks, docs/mpi.md "Picking on several ranks").
 - stylus (pvserver_stylus): a replayed stylus trace (deterministic input: every step
   the frames must see is held still for 3-4 s) touches the plateau, grasps it near the
   step and drags across the seam of the pieces;
@@ -51,10 +53,23 @@ def one_process_paint(figures):
     return ({int(g): m for g, m in zip(gid, painted)}, {int(g): m for g, m in zip(gid, rest)})
 
 
-def run_paint(out, read_results):
+def run_paint(out, read_results, remote_render=False):
+    """`remote_render`: the test hook sets the view's Remote Render Threshold to 0 after
+    loading the state, so the server renders and the client holds no geometry (the pick
+    asks the ranks); checked in the client's log."""
     prepare(out)
     harness.write_state(out + "-scene.pvsm", out, paint_pieces=True)
-    prefix = harness.session(out, "paint", PAINT_STEPS, out + "-scene.pvsm")
+    if remote_render:  # the test hook sets the view's threshold to 0 after the state
+        os.environ["GEOSHAPING_GUI_REMOTE_RENDER"] = "1"
+    try:
+        prefix = harness.session(out, "paint", PAINT_STEPS, out + "-scene.pvsm")
+    finally:
+        os.environ.pop("GEOSHAPING_GUI_REMOTE_RENDER", None)
+    if remote_render:
+        with open(prefix + ".client.log") as f:
+            log = f.read()
+        assert "GeoShaping test: remote rendering = 1" in log, "the view does not render remotely"
+        print("the view renders remotely (the client holds no geometry)")
     check_session(read_results(prefix + ".txt"), "Edits: 0, redoable 0 (paint stroke redone)")
     painted = {}
     for name in ("paint", "undo", "redo"):

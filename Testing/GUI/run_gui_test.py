@@ -314,10 +314,13 @@ def main():
         import gui_pvserver
         gui_pvserver.run(out, read_results)
         return
-    if mode in ("pvserver_paint", "pvserver_stylus"):
+    if mode in ("pvserver_paint", "pvserver_paint_remote", "pvserver_stylus"):
         import gui_pvserver_hands
         hands = gui_pvserver_hands
-        (hands.run_paint if mode == "pvserver_paint" else hands.run_stylus)(out, read_results)
+        if mode == "pvserver_stylus":
+            hands.run_stylus(out, read_results)
+        else:
+            hands.run_paint(out, read_results, remote_render=mode == "pvserver_paint_remote")
         return
     env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=out)
     scripted = None  # a module with the mode's script: prepare(), check()

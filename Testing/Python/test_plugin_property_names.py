@@ -8,7 +8,7 @@ proxies they are used on: a display (`repr`, `display`) -> the ChainMailDeformat
 representation in a render view; ParaView's picking helper (`helper`, the mouse's pick:
 pqHapticsDisplay.cxx) -> a PickingHelper; a `viewProxy` -> the render view (the DEM
 Surface's view, pqDEMSurfaceBehavior.cxx); any other proxy -> one of the plugin's own
-proxies."""
+proxies (the filters and the GeoShapingRayPick of the remote pick)."""
 import glob
 import os
 import re
@@ -39,7 +39,8 @@ chain = ChainMailDeformation(Input=paint)  # noqa: F405
 pins = MalleabilityPaint(Input=plane, PaintPins=1)  # noqa: F405
 view = CreateRenderView()
 display = Show(chain, view)
-filters = [chain, paint, pins]
+ray_pick = servermanager.ProxyManager().NewProxy("misc", "GeoShapingRayPick")  # noqa: F405
+filters = [chain, paint, pins, ray_pick]
 picking = servermanager.ProxyManager().NewProxy("misc", "PickingHelper")  # noqa: F405
 
 

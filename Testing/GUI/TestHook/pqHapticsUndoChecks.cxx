@@ -16,6 +16,7 @@
 #include <vtkAlgorithm.h>
 #include <vtkCamera.h>
 #include <vtkPVDataInformation.h>
+#include <vtkPVRenderView.h>
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
 #include <vtkSMPropertyHelper.h>
@@ -34,6 +35,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
 #include <vector>
 
 namespace
@@ -232,6 +234,18 @@ bool loadStateIfRequested()
     return false;
   }
   pqLoadStateReaction::loadState(state, true);
+  // Remote rendering forced (GEOSHAPING_GUI_REMOTE_RENDER): the view's Remote Render
+  // Threshold 0, and whether the view then renders on the server, for the test to check.
+  auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView());
+  if (view && qEnvironmentVariableIsSet("GEOSHAPING_GUI_REMOTE_RENDER"))
+  {
+    vtkSMPropertyHelper(view->getProxy(), "RemoteRenderThreshold").Set(0.0);
+    view->getProxy()->UpdateVTKObjects();
+    view->forceRender();
+    auto* pv = vtkPVRenderView::SafeDownCast(view->getProxy()->GetClientSideObject());
+    std::cout << "GeoShaping test: remote rendering = "
+              << int(pv && pv->GetUseDistributedRenderingForRender()) << std::endl;
+  }
   return true;
 }
 
