@@ -17,7 +17,7 @@ import re
 import subprocess
 import sys
 
-from check_doc_paths import ROOT, backticked_words, tree_files
+from check_doc_paths import ROOT, backticked_words, report, tree_files
 
 SOURCE = (".h", ".cxx", ".cpp", ".py", ".xml", ".cmake", ".txt", ".json", ".in", ".sh",
           ".module", ".plugin", ".ui", ".qrc")
@@ -68,10 +68,7 @@ def main(argv):
         last = re.split(r"::|\.", word[:-2] if word.endswith("()") else word)[-1].lstrip("~")
         if last not in known:
             broken.append("%s:%d: `%s`" % (page, number, word))
-    for b in broken:
-        print(b)
-    print("%d backticked code name(s) found neither in the tree nor in VTK/ParaView" % len(broken))
-    return 1 if broken else 0
+    return report(broken, "backticked code name(s) found neither in the tree nor in VTK/ParaView")
 
 
 if __name__ == "__main__":

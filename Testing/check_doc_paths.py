@@ -81,9 +81,14 @@ def main():
                 continue
         if not resolves(word, os.path.dirname(page)):
             broken.append("%s:%d: `%s`" % (page, number, word))
+    return report(broken, "backticked path(s) that name nothing in the tree")
+
+
+def report(broken, what):
+    """Prints each broken mention and their count; the exit code (1 when any)."""
     for b in broken:
         print(b)
-    print("%d backticked path(s) that name nothing in the tree" % len(broken))
+    print("%d %s" % (len(broken), what))
     return 1 if broken else 0
 
 

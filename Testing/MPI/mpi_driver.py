@@ -1,6 +1,7 @@
 """What the MPI test drivers (test_mpi_*.py) share: run a pvbatch script on n ranks, read
 the rows the ranks wrote, and compare n ranks with 1 rank. (mpi_pipeline.py is the other
 side: what the scripts run by pvbatch share.)"""
+import json
 import os
 import subprocess
 import sys
@@ -88,3 +89,22 @@ def plain_parameters(bounds, pull=None):
     c, r = lo + 0.5 * (hi - lo), float((hi - lo).max())
     ENV["PLAIN_DABS"] = " ".join(repr(float(x)) for x in
                                  list(c) + [0.3 * r, 1.0, 0.7] + list(lo + 0.3 * (hi - lo)) + [0.15 * r, 0.0, 1.0])
+
+
+def run_client(script, port, out, env, display=False, timeout=240):
+    """(result, why): pvpython runs `script` as "client PORT OUT" (PORT 0: builtin session)
+    and writes its answer to the JSON file OUT; None and why on a hang, an exit, an ERR|
+    line or no answer. `display`: under xvfb-run (a client view showing the server's image)."""
+    cmd = [sys.executable if sys.executable.endswith("pvpython") else "pvpython",
+           "--no-mpi", os.path.abspath(script), "client", str(port), out]
+    if display:
+        cmd = ["xvfb-run", "-a", "-s", "-noreset"] + cmd
+    try:
+        done = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, "no answer in %d s (the server hangs)" % timeout
+    errors = [line for line in (done.stdout + done.stderr).splitlines() if "ERR|" in line]
+    if done.returncode != 0 or errors or not os.path.exists(out):
+        return None, "exit %d: %s" % (done.returncode, (done.stdout + done.stderr)[-2000:])
+    with open(out) as f:
+        return json.load(f), ""

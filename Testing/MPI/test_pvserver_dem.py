@@ -9,7 +9,6 @@ malleability) must equal a builtin session's. Usage: test_pvserver_dem.py (the d
 test_pvserver_dem.py client PORT OUT (one client: PORT 0 is builtin)."""
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
@@ -44,7 +43,7 @@ def client(port, out):
 
 def driver():
     import pvserver_process
-    from mpi_driver import ENV, fail, plain_parameters, write_dem
+    from mpi_driver import ENV, fail, plain_parameters, run_client, write_dem
     import paraview.simple as simple
 
     with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as tmp:
@@ -58,21 +57,10 @@ def driver():
         env = {k: v for k, v in ENV.items()
                if not (k.startswith("OMPI_") or k.startswith("PMIX_") or k.startswith("OPAL_"))}
 
-        def run_client(port, name):
-            out = os.path.join(tmp, name + ".json")
-            cmd = [sys.executable if sys.executable.endswith("pvpython") else "pvpython",
-                   "--no-mpi", os.path.abspath(__file__), "client", str(port), out]
-            try:
-                done = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=240)
-            except subprocess.TimeoutExpired:
-                return None, "no answer in 240 s (the server hangs)"
-            errors = [line for line in (done.stdout + done.stderr).splitlines() if "ERR|" in line]
-            if done.returncode != 0 or errors or not os.path.exists(out):
-                return None, "exit %d: %s" % (done.returncode, (done.stdout + done.stderr)[-2000:])
-            with open(out) as f:
-                return json.load(f), ""
+        def client_answer(port, name):
+            return run_client(__file__, port, os.path.join(tmp, name + ".json"), env)
 
-        builtin, why = run_client(0, "builtin")
+        builtin, why = client_answer(0, "builtin")
         if builtin is None:
             fail("builtin: " + why)
         print("builtin: %s" % builtin)
@@ -80,7 +68,7 @@ def driver():
             fail("only %d points displaced in the builtin session" % builtin["displaced"])
         proc, port, log = pvserver_process.start(2, os.path.join(tmp, "pvserver.log"))
         try:
-            served, why = run_client(port, "pvserver")
+            served, why = client_answer(port, "pvserver")
         finally:
             pvserver_process.stop(proc, 20)  # pvserver ends when its client disconnects
             log.seek(0)

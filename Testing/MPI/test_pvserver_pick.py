@@ -96,33 +96,21 @@ def client(port, out):
 def driver():
     import numpy as np
     import pvserver_process
-    from mpi_driver import ENV, fail
+    from mpi_driver import ENV, fail, run_client
 
     env = {k: v for k, v in ENV.items()
            if not (k.startswith("OMPI_") or k.startswith("PMIX_") or k.startswith("OPAL_"))}
     with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as tmp:
-        def run_client(port, name):
-            out = os.path.join(tmp, name + ".json")
-            cmd = [sys.executable if sys.executable.endswith("pvpython") else "pvpython",
-                   "--no-mpi", os.path.abspath(__file__), "client", str(port), out]
-            if port:  # the client's view shows the server's image in a window
-                cmd = ["xvfb-run", "-a", "-s", "-noreset"] + cmd
-            try:
-                done = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=240)
-            except subprocess.TimeoutExpired:
-                return None, "no answer in 240 s (the server hangs)"
-            errors = [line for line in (done.stdout + done.stderr).splitlines() if "ERR|" in line]
-            if done.returncode != 0 or errors or not os.path.exists(out):
-                return None, "exit %d: %s" % (done.returncode, (done.stdout + done.stderr)[-2000:])
-            with open(out) as f:
-                return json.load(f), ""
+        def client_answer(port, name):  # the client's view shows the server's image in a window
+            return run_client(__file__, port, os.path.join(tmp, name + ".json"), env,
+                              display=bool(port))
 
-        builtin, why = run_client(0, "builtin")
+        builtin, why = client_answer(0, "builtin")
         if builtin is None:
             fail("builtin: " + why)
         proc, port, log = pvserver_process.start(2, os.path.join(tmp, "pvserver.log"), display=True)
         try:
-            served, why = run_client(port, "pvserver")
+            served, why = client_answer(port, "pvserver")
         finally:
             pvserver_process.stop(proc, 20)
             log.seek(0)
