@@ -15,7 +15,6 @@ on a distributed server"), with the harness of gui_pvserver.py:
   and equal to a builtin (one-process) paraview's on the same trace and to
   k(m) (anchor - stylus) computed here; touching without a grasp is felt in one process
   only (on a server the client holds no triangles to send the servo)."""
-import os
 
 import numpy as np
 
@@ -54,22 +53,12 @@ def one_process_paint(figures):
 
 
 def run_paint(out, read_results, remote_render=False):
-    """`remote_render`: the test hook sets the view's Remote Render Threshold to 0 after
-    loading the state, so the server renders and the client holds no geometry (the pick
-    asks the ranks); checked in the client's log."""
+    """`remote_render`: the server renders and the client holds no geometry (the pick
+    asks the ranks; harness.session)."""
     prepare(out)
     harness.write_state(out + "-scene.pvsm", out, paint_pieces=True)
-    if remote_render:  # the test hook sets the view's threshold to 0 after the state
-        os.environ["GEOSHAPING_GUI_REMOTE_RENDER"] = "1"
-    try:
-        prefix = harness.session(out, "paint", PAINT_STEPS, out + "-scene.pvsm")
-    finally:
-        os.environ.pop("GEOSHAPING_GUI_REMOTE_RENDER", None)
-    if remote_render:
-        with open(prefix + ".client.log") as f:
-            log = f.read()
-        assert "GeoShaping test: remote rendering = 1" in log, "the view does not render remotely"
-        print("the view renders remotely (the client holds no geometry)")
+    prefix = harness.session(out, "paint", PAINT_STEPS, out + "-scene.pvsm",
+                             remote_render=remote_render)
     check_session(read_results(prefix + ".txt"), "Edits: 0, redoable 0 (paint stroke redone)")
     painted = {}
     for name in ("paint", "undo", "redo"):

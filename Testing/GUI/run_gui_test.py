@@ -314,6 +314,11 @@ def main():
         import gui_pvserver
         gui_pvserver.run(out, read_results)
         return
+    if mode in ("pvserver_pull_rank1", "pvserver_remote_pull_rank1"):
+        import gui_pvserver
+        gui_pvserver.run_pull_rank1(out, read_results, remote_render=mode.startswith(
+            "pvserver_remote"))
+        return
     if mode in ("pvserver_paint", "pvserver_paint_remote", "pvserver_stylus"):
         import gui_pvserver_hands
         hands = gui_pvserver_hands
