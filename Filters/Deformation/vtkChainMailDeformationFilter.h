@@ -417,6 +417,39 @@ public:
   }
   ///@}
 
+  ///@{
+  /// Well markers (docs/markers.md, "Honoured while shaping"): points on input port 2,
+  /// optional, any number of connections of any vtkPointSet (ParaView's CSV Reader then
+  /// Table To Points, a GOCAD VSet). With HonourMarkers on (default off) each marker whose
+  /// vertical line crosses the surface (Marker Misfit's Inside) keeps its vertical misfit
+  /// in every frame and after a commit: the three corners of the triangle under it
+  /// (geoshaping/metrics/marker_pins.h) are pinned, joined to the PinnedArray's pins, so
+  /// a marker on the surface stays on it and a pull near a well bends around it. The map
+  /// from markers to pins is made from the input's points once per input geometry and
+  /// markers, never per frame. Not refused, with one warning each (counts below):
+  /// markers with a NaN or infinite coordinate (skipped), markers outside the surface's
+  /// footprint (not honoured), markers off the surface by more than 1e-6 of its size
+  /// (their misfit kept as it is). Grasping a vertex under a marker is refused as
+  /// grasping a pinned vertex is. With HonourMarkers off, or no markers, the filter is
+  /// as without this input, bit for bit.
+  void AddMarkersConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(2, output); }
+  void SetMarkersConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
+  void SetMarkersData(vtkDataObject* data) { this->SetInputDataObject(2, data); }
+  void RemoveAllMarkersConnections() { this->SetInputConnection(2, nullptr); }
+  vtkSetMacro(HonourMarkers, bool);
+  vtkGetMacro(HonourMarkers, bool);
+  vtkBooleanMacro(HonourMarkers, bool);
+  /// Figures of the markers the filter honours (all 0 with HonourMarkers off): markers
+  /// honoured, markers outside the footprint, markers skipped for a non-finite
+  /// coordinate, honoured markers off the surface by more than 1e-6 of its size, and
+  /// the vertices pinned under them.
+  vtkIdType GetNumberOfHonouredMarkers();
+  vtkIdType GetNumberOfMarkersOutside();
+  vtkIdType GetNumberOfNonFiniteMarkers();
+  vtkIdType GetNumberOfMarkersOffSurface();
+  vtkIdType GetNumberOfMarkerPinnedPoints();
+  ///@}
+
   /// Number of times the adjacency and rest state were (re)built: stays 1 while only
   /// the grasp, displacement, queue or curves change.
   vtkGetMacro(NumberOfRebuilds, int);
@@ -451,6 +484,7 @@ protected:
   int RefinementSolver = REFINEMENT_ENVELOPE;
   int RelaxationIterations = 0;
   double ObstacleClearance = 0.0;
+  bool HonourMarkers = false;
 
   // What the last update did (the information properties above), in one place: every
   // RequestData starts from FrameStatistics{} and each stage fills its part.
@@ -528,6 +562,10 @@ private:
   // everywhere, and the sliding mask of `input`; false (after an error, on every process)
   // when refused.
   bool UpdateObstaclesParallel(vtkPointSet* input, geoshaping::Exchange& exchange);
+  // The markers of port 2 to the vertices pinned under them
+  // (vtkChainMailDeformationFilterMarkers.cxx), made again when the geometry, the markers or
+  // HonourMarkers changed.
+  void UpdateMarkers(vtkPointSet* input);
   // The sliding mask (input array 2 of `input`, the data worked on) into the deformer;
   // false (after an error) when it is refused.
   bool UpdateSliding(vtkPointSet* input);

@@ -15,7 +15,8 @@ int vtkChainMailDeformationFilter::FillInputPortInformation(int port, vtkInforma
 {
   if (port == 0)
     return this->Superclass::FillInputPortInformation(port, info);
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  // Port 1 the obstacles, port 2 the markers (HonourMarkers).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 1 ? "vtkDataSet" : "vtkPointSet");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
   return 1;
