@@ -418,9 +418,9 @@ public:
   ///@}
 
   ///@{
-  /// Well markers (docs/markers.md, "Honoured while shaping"): points on input port 2,
-  /// optional, any number of connections of any vtkPointSet (ParaView's CSV Reader then
-  /// Table To Points, a GOCAD VSet). With HonourMarkers on (default off) each marker whose
+  /// Well markers (docs/markers.md, "Honoured while shaping"): the points of the data
+  /// sets on input port 2, optional, any number of connections (a vtkPointSet: ParaView's
+  /// CSV Reader then Table To Points, a GOCAD VSet). With HonourMarkers on (default off) each marker whose
   /// vertical line crosses the surface (Marker Misfit's Inside) keeps its vertical misfit
   /// in every frame and after a commit: the three corners of the triangle under it
   /// (geoshaping/metrics/marker_pins.h) are pinned, joined to the PinnedArray's pins, so

@@ -32,7 +32,7 @@ void vtkChainMailDeformationFilter::UpdateMarkers(vtkPointSet* input)
     -std::numeric_limits<double>::infinity() };
   for (const auto& source : sources)
   {
-    vtkPointSet* markers = vtkPointSet::SafeDownCast(source.first);
+    vtkDataSet* markers = vtkDataSet::SafeDownCast(source.first);
     for (vtkIdType i = 0; markers && i < markers->GetNumberOfPoints(); ++i)
     {
       double m[3];
