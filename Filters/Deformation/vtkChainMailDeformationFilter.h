@@ -68,8 +68,8 @@
  * partitioned_envelope.h, the same bits as one process). Edits (commit, undo, redo,
  * EditHistory) and a grasp nearest to GraspPosition work there too. Not distributed
  * yet, refused with the same error on every process (output = input): the other
- * refinement solvers or the LINK region, relaxation, obstacles, the Priority and Max
- * Violation queues.
+ * refinement solvers or the LINK region, relaxation, obstacles, honoured markers
+ * (HonourMarkers with markers), the Priority and Max Violation queues.
  */
 #ifndef vtkChainMailDeformationFilter_h
 #define vtkChainMailDeformationFilter_h
