@@ -420,9 +420,9 @@ public:
   ///@{
   /// Well markers (docs/markers.md, "Honoured while shaping"): the points of the data
   /// sets on input port 2, optional, any number of connections (a vtkPointSet: ParaView's
-  /// CSV Reader then Table To Points, a GOCAD VSet). With HonourMarkers on (default off) each marker whose
-  /// vertical line crosses the surface (Marker Misfit's Inside) keeps its vertical misfit
-  /// in every frame and after a commit: the three corners of the triangle under it
+  /// CSV Reader then Table To Points, a GOCAD VSet). With HonourMarkers on (default off) each
+  /// marker whose vertical line crosses the surface (Marker Misfit's Inside) keeps its vertical
+  /// misfit in every frame and after a commit: the three corners of the triangle under it
   /// (geoshaping/metrics/marker_pins.h) are pinned, joined to the PinnedArray's pins, so
   /// a marker on the surface stays on it and a pull near a well bends around it. The map
   /// from markers to pins is made from the input's points once per input geometry and
