@@ -3,7 +3,8 @@
 // without markers and with 10, 100 and 1,000 honoured markers on random triangles,
 // frames interleaved (one without, one with, the order swapped each round) so a loaded
 // machine slows both alike; the median per frame of each. Also the one-off cost of
-// mapping the markers to pins (the first update after the markers change). Run by hand.
+// mapping the markers to pins (the first update after the markers change), and a filter
+// with the markers connected but HonourMarkers off (the pipeline's share). Run by hand.
 #include "vtkChainMailDeformationFilter.h"
 #include "vtkGocadTSurfReader.h"
 
@@ -42,7 +43,7 @@ int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::fprintf(stderr, "usage: %s surface.ts [rounds]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s surface.ts [rounds] [pull in mean spacings]\n", argv[0]);
     return 2;
   }
   const int rounds = argc > 2 ? std::atoi(argv[2]) : 2000;
@@ -51,7 +52,9 @@ int main(int argc, char* argv[])
   reader->Update();
   vtkPolyData* surface = reader->GetOutput();
   const vtkIdType grasp = surface->GetNumberOfPoints() / 2;
-  const double pull = 3.0 * surface->GetLength() / std::sqrt(double(surface->GetNumberOfPoints()));
+  const double spacings = argc > 3 ? std::atof(argv[3]) : 3.0;
+  const double pull =
+    spacings * surface->GetLength() / std::sqrt(double(surface->GetNumberOfPoints()));
   std::printf("%lld points, %lld triangles, grasp %lld pulled up by %.1f\n",
     static_cast<long long>(surface->GetNumberOfPoints()),
     static_cast<long long>(surface->GetNumberOfPolys()), static_cast<long long>(grasp), pull);
@@ -79,23 +82,26 @@ int main(int argc, char* argv[])
     }
     vtkNew<vtkPolyData> markers;
     markers->SetPoints(points);
-    vtkNew<vtkChainMailDeformationFilter> without, with;
-    for (vtkChainMailDeformationFilter* f : { without.Get(), with.Get() })
+    vtkNew<vtkChainMailDeformationFilter> without, with, off;
+    for (vtkChainMailDeformationFilter* f : { without.Get(), with.Get(), off.Get() })
     {
+      f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "None");
       f->SetInputData(surface);
       f->SetDefaultMalleability(0.7);
       f->SetGraspPointId(grasp);
     }
     with->SetMarkersData(markers);
     with->HonourMarkersOn();
+    off->SetMarkersData(markers); // connected, HonourMarkers off: the pipeline's share
     Milliseconds(without, pull);
+    Milliseconds(off, pull);
     std::vector<double> map;
     for (int i = 0; i < 20; ++i) // the map, made again when the markers change
     {
       markers->Modified();
       map.push_back(Milliseconds(with, i % 2 ? pull : 0.999 * pull));
     }
-    std::vector<double> a, b;
+    std::vector<double> a, b, c, core[2];
     for (int i = 0; i < rounds; ++i)
     {
       const double dz = i % 2 ? pull : 0.999 * pull;
@@ -103,18 +109,23 @@ int main(int argc, char* argv[])
       {
         a.push_back(Milliseconds(without, dz));
         b.push_back(Milliseconds(with, dz));
+        c.push_back(Milliseconds(off, dz));
       }
       else
       {
+        c.push_back(Milliseconds(off, dz));
         b.push_back(Milliseconds(with, dz));
         a.push_back(Milliseconds(without, dz));
       }
+      core[0].push_back(without->GetLastDeformationMilliseconds());
+      core[1].push_back(with->GetLastDeformationMilliseconds());
     }
-    std::printf("%4d markers (%lld honoured, %lld pinned): frame %.4f ms without, %.4f ms "
-                "with (%+.1f%%); moved %lld vs %lld; update that maps the markers %.3f ms\n",
+    std::printf("%4d markers (%lld honoured, %lld pinned): update %.4f ms without, %.4f ms "
+                "with (%+.1f%%), %.4f ms connected but off; core frame %.4f / %.4f ms; moved "
+                "%lld vs %lld; update that maps the markers %.3f ms\n",
       count, static_cast<long long>(with->GetNumberOfHonouredMarkers()),
       static_cast<long long>(with->GetNumberOfMarkerPinnedPoints()), Median(a), Median(b),
-      100.0 * (Median(b) / Median(a) - 1.0),
+      100.0 * (Median(b) / Median(a) - 1.0), Median(c), Median(core[0]), Median(core[1]),
       static_cast<long long>(without->GetNumberOfDisplacedPoints()),
       static_cast<long long>(with->GetNumberOfDisplacedPoints()), Median(map));
   }
