@@ -2,13 +2,14 @@
 // inside marker keeps its vertical misfit, measured independently by Marker Misfit on the
 // output, in every frame of a pull next to it and after a commit; bad markers are skipped
 // with a warning; with HonourMarkers off the output is the one without markers, bit for bit.
+#include "marker_samples.h"
 #include "vtkChainMailDeformationFilter.h"
 #include "vtkMarkerMisfitFilter.h"
+#include "vtk_test_meshes.h"
 
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
-#include "vtkGocadTSurfReader.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -23,28 +24,17 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <limits>
-#include <random>
 #include <string>
 #include <vector>
 
 namespace
 {
-using Xyz = std::vector<std::array<double, 3>>;
+using markers_testing::Points;
+using markers_testing::Xyz;
 
-vtkSmartPointer<vtkPolyData> Points(const Xyz& xyz)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (const auto& p : xyz)
-    points->InsertNextPoint(p.data());
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  return data;
-}
-
-// z = 0.1 x + 0.2 y + 5 over [0, 20]^2, 20 x 20 squares cut into triangles.
+// z = 0.1 x + 0.2 y + 5 over [0, 20]^2, 20 x 20 squares cut into triangles along the
+// diagonal from (i, j) to (i + 1, j + 1).
 double Plane(double x, double y)
 {
   return 0.1 * x + 0.2 * y + 5.0;
@@ -53,23 +43,14 @@ constexpr int Side = 21;
 
 vtkSmartPointer<vtkPolyData> TiltedPlane()
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (int j = 0; j < Side; ++j)
-    for (int i = 0; i < Side; ++i)
-      points->InsertNextPoint(i, j, Plane(i, j));
-  vtkNew<vtkCellArray> triangles;
-  for (int j = 0; j + 1 < Side; ++j)
-    for (int i = 0; i + 1 < Side; ++i)
-    {
-      const vtkIdType a = j * Side + i, b = a + 1, c = a + Side, d = c + 1;
-      const vtkIdType t1[3] = { a, b, d }, t2[3] = { a, d, c };
-      triangles->InsertNextCell(3, t1);
-      triangles->InsertNextCell(3, t2);
-    }
-  auto plane = vtkSmartPointer<vtkPolyData>::New();
-  plane->SetPoints(points);
-  plane->SetPolys(triangles);
+  auto plane =
+    geoshaping::testing::TriangleGridPolyData(Side, Side, 1.0, nullptr, VTK_DOUBLE, 0.0, 0.0);
+  for (vtkIdType v = 0; v < plane->GetNumberOfPoints(); ++v)
+  {
+    double x[3];
+    plane->GetPoint(v, x);
+    plane->GetPoints()->SetPoint(v, x[0], x[1], Plane(x[0], x[1]));
+  }
   return plane;
 }
 
@@ -299,47 +280,17 @@ TEST(HonourMarkers, BadMarkersAreSkippedWithAWarningAndNoNaNComesOut)
 // HonourMarkers the markers next to the pull move.
 TEST(HonourMarkers, RealHorizonKeepsItsSampledMarkers)
 {
-  const std::string path = std::string(GEOSHAPING_CFM_DIR) + "/mccrory_2012_cascadia_interface.ts";
-  if (!std::filesystem::exists(path))
+  std::string path;
+  const auto surface = markers_testing::ReadCascadia(path);
+  if (!surface)
     GTEST_SKIP() << "CRESCENT data absent: " << path;
-  vtkNew<vtkGocadTSurfReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkPolyData* surface = reader->GetOutput();
   ASSERT_GT(surface->GetNumberOfPolys(), 1000);
   const double size = surface->GetLength();
-  double edge = 0.0;
-  {
-    double a[3], b[3];
-    surface->GetPoint(surface->GetCell(0)->GetPointId(0), a);
-    surface->GetPoint(surface->GetCell(0)->GetPointId(1), b);
-    edge = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-  }
-  std::mt19937 random(11);
-  std::uniform_int_distribution<vtkIdType> cell(0, surface->GetNumberOfCells() - 1);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  Xyz xyz;
-  std::vector<double> dz;
-  for (int k = 0; k < 200; ++k)
-  {
-    vtkIdList* ids = surface->GetCell(cell(random))->GetPointIds();
-    // Uniform on the triangle, shrunk to 0.9 of it about its centroid (inside it).
-    double a = unit(random), b = unit(random);
-    if (a + b > 1.0)
-      a = 1.0 - a, b = 1.0 - b;
-    const double u = 1.0 / 3.0 + 0.9 * (a - 1.0 / 3.0), v = 1.0 / 3.0 + 0.9 * (b - 1.0 / 3.0);
-    double p0[3], p1[3], p2[3];
-    surface->GetPoint(ids->GetId(0), p0);
-    surface->GetPoint(ids->GetId(1), p1);
-    surface->GetPoint(ids->GetId(2), p2);
-    const double offset = k < 50 ? 0.0 : (unit(random) - 0.5) * 0.2 * edge;
-    std::array<double, 3> m;
-    for (int c = 0; c < 3; ++c)
-      m[c] = (1 - u - v) * p0[c] + u * p1[c] + v * p2[c];
-    m[2] += offset;
-    xyz.push_back(m);
-    dz.push_back(offset);
-  }
+  // Inside their triangles (shrunk to 0.9 about the centroid), so each has one crossing.
+  const auto samples = markers_testing::SampleMarkers(surface, 11, 200, 50, 0.9);
+  const Xyz& xyz = samples.xyz;
+  const auto& dz = samples.dz;
+  const double edge = samples.edge;
   const auto markers = Points(xyz);
   const auto rest = VerticalMisfit(surface, markers);
   const double spacing = size / std::sqrt(double(surface->GetNumberOfPoints()));
