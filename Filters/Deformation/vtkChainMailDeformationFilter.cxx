@@ -91,7 +91,7 @@ int vtkChainMailDeformationFilter::RequestData(
     return 1;
   }
   const vtkIdType n = input->GetNumberOfPoints();
-  this->UpdateMarkers(input); // before the pins, which it joins
+  this->UpdateMarkers(input, false); // before the pins, which it joins
   // The obstacles are collective on several processes (every piece to every process).
   if (!state.AllAgree(n == 0 || this->UpdateMalleabilityAndPins(input)) ||
       !(state.Processes ? this->UpdateObstaclesParallel(input, *state.Processes)
@@ -101,6 +101,12 @@ int vtkChainMailDeformationFilter::RequestData(
   }
   std::vector<int> stale; // the last frame, shown until rewritten
   const std::vector<int> touched = this->UpdateEdits(stale);
+  // The committed shape changed (a commit, undo, redo, replay): the markers' triangles
+  // are found again in it, and the pins follow.
+  if (!touched.empty() && this->UpdateMarkers(input, true))
+  {
+    this->UpdateMalleabilityAndPins(input);
+  }
   this->Deform(input, stale);
   if (n > 0)
   {

@@ -425,8 +425,9 @@ public:
   /// misfit in every frame and after a commit: the three corners of the triangle under it
   /// (geoshaping/metrics/marker_pins.h) are pinned, joined to the PinnedArray's pins, so
   /// a marker on the surface stays on it and a pull near a well bends around it. The map
-  /// from markers to pins is made from the input's points once per input geometry and
-  /// markers, never per frame. Not refused, with one warning each (counts below):
+  /// from markers to pins is made from the committed shape (input + committed edits)
+  /// once per input geometry and markers and again when a commit, undo or redo changes
+  /// that shape, never per frame. Not refused, with one warning each (counts below):
   /// markers with a NaN or infinite coordinate (skipped), markers outside the surface's
   /// footprint (not honoured), markers off the surface by more than 1e-6 of its size
   /// (their misfit kept as it is). Grasping a vertex under a marker is refused as
@@ -562,10 +563,11 @@ private:
   // everywhere, and the sliding mask of `input`; false (after an error, on every process)
   // when refused.
   bool UpdateObstaclesParallel(vtkPointSet* input, geoshaping::Exchange& exchange);
-  // The markers of port 2 to the vertices pinned under them
-  // (vtkChainMailDeformationFilterMarkers.cxx), made again when the geometry, the markers or
-  // HonourMarkers changed.
-  void UpdateMarkers(vtkPointSet* input);
+  // The markers of port 2 to the vertices pinned under them in the committed shape
+  // (vtkChainMailDeformationFilterMarkers.cxx), made again when the geometry, the markers
+  // or HonourMarkers changed, or with `force` (the committed shape changed); true when
+  // the pinned vertices changed.
+  bool UpdateMarkers(vtkPointSet* input, bool force);
   // The sliding mask (input array 2 of `input`, the data worked on) into the deformer;
   // false (after an error) when it is refused.
   bool UpdateSliding(vtkPointSet* input);

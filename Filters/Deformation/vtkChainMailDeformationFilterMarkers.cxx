@@ -9,7 +9,38 @@
 #include <cmath>
 #include <limits>
 
-void vtkChainMailDeformationFilter::UpdateMarkers(vtkPointSet* input)
+namespace
+{
+// The input, or a copy of it with the committed edits' points (input + committed offset).
+vtkSmartPointer<vtkPointSet> CommittedShape(
+  vtkPointSet* input, const geoshaping::ChainMailDeformer& deformer)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkIdType first = 0;
+  while (first < n && deformer.committed_offset(geoshaping::index_t(first)).isZero(0.0))
+    ++first;
+  if (first == n)
+  {
+    return input;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    Eigen::Vector3d x;
+    input->GetPoint(v, x.data());
+    x += deformer.committed_offset(geoshaping::index_t(v));
+    points->SetPoint(v, x.data());
+  }
+  auto shape = vtk::TakeSmartPointer(input->NewInstance());
+  shape->ShallowCopy(input);
+  shape->SetPoints(points);
+  return shape;
+}
+}
+
+bool vtkChainMailDeformationFilter::UpdateMarkers(vtkPointSet* input, bool force)
 {
   vtkInternals& state = *this->Internals;
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> sources;
@@ -19,9 +50,9 @@ void vtkChainMailDeformationFilter::UpdateMarkers(vtkPointSet* input)
       vtkDataObject* markers = this->GetInputDataObject(2, i);
       sources.emplace_back(markers, markers ? markers->GetMTime() : 0);
     }
-  if (state.MarkersValid && sources == state.MarkerSources)
+  if (state.MarkersValid && sources == state.MarkerSources && (!force || sources.empty()))
   {
-    return;
+    return false;
   }
   state.MarkerSources = sources;
   state.MarkersValid = true;
@@ -49,7 +80,8 @@ void vtkChainMailDeformationFilter::UpdateMarkers(vtkPointSet* input)
   vtkMarkerCrossings crossings;
   const std::size_t count = xyz.size() / 3;
   const double size = input->GetLength();
-  if (count > 0 && input->GetNumberOfPoints() > 0 && crossings.SetSurface(input, zRange))
+  if (count > 0 && input->GetNumberOfPoints() > 0 &&
+      crossings.SetSurface(CommittedShape(input, state.Deformer), zRange))
   {
     vtkPolyData* triangles = crossings.GetTriangles();
     vtkNew<vtkIdList> cells, ids;
@@ -101,8 +133,10 @@ void vtkChainMailDeformationFilter::UpdateMarkers(vtkPointSet* input)
                     << " honoured markers are off the surface by more than 1e-6 of its size: "
                        "their vertical misfit is kept as it is, not brought to 0.");
   }
-  state.MarkersChanged = state.MarkersChanged || pins.vertices != state.Markers.vertices;
+  const bool changed = pins.vertices != state.Markers.vertices;
+  state.MarkersChanged = state.MarkersChanged || changed;
   state.Markers = std::move(pins);
+  return changed;
 }
 
 vtkIdType vtkChainMailDeformationFilter::GetNumberOfHonouredMarkers()

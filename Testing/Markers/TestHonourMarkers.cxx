@@ -358,3 +358,42 @@ TEST(HonourMarkers, RealHorizonKeepsItsSampledMarkers)
     EXPECT_NEAR(after[k], rest[k], 1e-6 * size) << k << " after the commit";
   EXPECT_TRUE(AllFinite(committed));
 }
+
+// Edits committed before the markers were honoured moved the surface under one (sideways
+// too): the markers are read against the committed shape, so the marker keeps the misfit
+// it has there; after undoing the edit they are read against the rest shape again.
+TEST(HonourMarkers, MarkersAreReadAgainstTheCommittedShape)
+{
+  const auto plane = TiltedPlane();
+  const auto markers = Points(MarkersOnThePlane());
+  const double size = plane->GetLength();
+  Shaper shaper(plane, markers, false);
+  shaper.Pull(Vertex(10, 10), 0.45, 0.35, 2.0);
+  shaper.Filter->CommitEdit();
+  vtkPolyData* committed = shaper.Pull(-1, 0, 0, 0);
+  const auto before = VerticalMisfit(committed, markers);
+  ASSERT_GT(std::abs(before[0]), 0.1) << "the edit moved the surface under marker 0";
+
+  shaper.Filter->HonourMarkersOn();
+  for (const double dz : { -1.0, -2.0, 1.5 })
+  {
+    vtkPolyData* out = shaper.Pull(Vertex(8, 11), 0.2, 0.0, dz);
+    ASSERT_EQ(shaper.Errors(), "");
+    const auto now = VerticalMisfit(out, markers);
+    for (std::size_t k = 0; k < now.size(); ++k)
+      EXPECT_NEAR(now[k], before[k], 1e-6 * size) << k << " at " << dz;
+  }
+  vtkIdType off = 0;
+  for (const double v : before)
+    off += std::abs(v) > 1e-6 * size ? 1 : 0;
+  EXPECT_GE(off, 1);
+  EXPECT_EQ(shaper.Filter->GetNumberOfMarkersOffSurface(), off) << "those the edit moved";
+
+  shaper.Filter->UndoEdit();
+  shaper.Pull(-1, 0, 0, 0);
+  vtkPolyData* out = shaper.Pull(Vertex(8, 11), 0.2, 0.0, -2.0);
+  ASSERT_EQ(shaper.Errors(), "");
+  for (const double v : VerticalMisfit(out, markers))
+    EXPECT_LE(std::abs(v), 1e-6 * size) << "after the undo: the rest shape's markers";
+  EXPECT_EQ(shaper.Filter->GetNumberOfMarkersOffSurface(), 0);
+}
