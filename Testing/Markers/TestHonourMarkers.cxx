@@ -280,14 +280,14 @@ TEST(HonourMarkers, BadMarkersAreSkippedWithAWarningAndNoNaNComesOut)
 // HonourMarkers the markers next to the pull move.
 TEST(HonourMarkers, RealHorizonKeepsItsSampledMarkers)
 {
-  std::string path;
-  const auto surface = markers_testing::ReadCascadia(path);
-  if (!surface)
-    GTEST_SKIP() << "CRESCENT data absent: " << path;
-  ASSERT_GT(surface->GetNumberOfPolys(), 1000);
-  const double size = surface->GetLength();
   // Inside their triangles (shrunk to 0.9 about the centroid), so each has one crossing.
-  const auto samples = markers_testing::SampleMarkers(surface, 11, 200, 50, 0.9);
+  std::string path;
+  const auto samples = markers_testing::SampleCascadia(11, 200, 50, 0.9, path);
+  if (!samples.surface)
+    GTEST_SKIP() << "CRESCENT data absent: " << path;
+  vtkPolyData* surface = samples.surface;
+  ASSERT_GT(surface->GetNumberOfPolys(), 1000);
+  const double size = samples.size;
   const Xyz& xyz = samples.xyz;
   const auto& dz = samples.dz;
   const double edge = samples.edge;

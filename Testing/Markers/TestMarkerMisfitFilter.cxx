@@ -190,14 +190,12 @@ TEST(MarkerMisfitFilter, BadInputIsRefusedAndLeftUntouched)
 TEST(MarkerMisfitFilter, MarkersSampledOnARealSurfaceReadTheirKnownOffsets)
 {
   std::string path;
-  const auto surface = markers_testing::ReadCascadia(path);
-  if (!surface)
+  const auto samples = markers_testing::SampleCascadia(7, 200, 50, 1.0, path);
+  if (!samples.surface)
     GTEST_SKIP() << "CRESCENT data absent: " << path;
-  ASSERT_GT(surface->GetNumberOfPolys(), 1000);
-  const double size = surface->GetLength();
-  const auto samples = markers_testing::SampleMarkers(surface, 7, 200, 50, 1.0);
   const auto& dz = samples.dz;
-  const Result r = Misfit(surface, Points(samples.xyz));
+  const double size = samples.size;
+  const Result r = Misfit(samples.surface, Points(samples.xyz));
   ASSERT_EQ(r.Errors, "");
   const double tolerance = 1e-9 * size;
   for (vtkIdType i = 0; i < 200; ++i)

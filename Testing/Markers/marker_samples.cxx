@@ -25,20 +25,22 @@ vtkSmartPointer<vtkPolyData> Points(const Xyz& xyz)
   return data;
 }
 
-vtkSmartPointer<vtkPolyData> ReadCascadia(std::string& path)
+Samples SampleCascadia(unsigned seed, int count, int onSurface, double shrink, std::string& path)
 {
   path = std::string(GEOSHAPING_CFM_DIR) + "/mccrory_2012_cascadia_interface.ts";
   if (!std::filesystem::exists(path))
-    return nullptr;
+    return {};
   vtkNew<vtkGocadTSurfReader> reader;
   reader->SetFileName(path.c_str());
   reader->Update();
-  return reader->GetOutput();
+  return SampleMarkers(reader->GetOutput(), seed, count, onSurface, shrink);
 }
 
 Samples SampleMarkers(vtkPolyData* surface, unsigned seed, int count, int onSurface, double shrink)
 {
   Samples s;
+  s.surface = surface;
+  s.size = surface->GetLength();
   {
     double a[3], b[3];
     surface->GetPoint(surface->GetCell(0)->GetPointId(0), a);

@@ -16,10 +16,6 @@ using Xyz = std::vector<std::array<double, 3>>;
 // The points `xyz` (double), no cells.
 vtkSmartPointer<vtkPolyData> Points(const Xyz& xyz);
 
-// The Cascadia subduction interface (CRESCENT, CC BY 4.0); null when the file is absent
-// (`path` names it).
-vtkSmartPointer<vtkPolyData> ReadCascadia(std::string& path);
-
 // `count` markers at random points (seeded by `seed`) of random triangles of `surface`:
 // barycentric coordinates uniform on the triangle, shrunk to `shrink` of it about its
 // centroid (1: the whole triangle). The first `onSurface` lie on it; the others are moved
@@ -29,6 +25,12 @@ struct Samples
   Xyz xyz;
   std::vector<double> dz;
   double edge = 0.0; // the length of the first cell's first edge
+  vtkSmartPointer<vtkPolyData> surface;
+  double size = 0.0; // the surface's bounding box diagonal
 };
 Samples SampleMarkers(vtkPolyData* surface, unsigned seed, int count, int onSurface, double shrink);
+
+// The same on the Cascadia subduction interface (CRESCENT, CC BY 4.0, read in place);
+// `surface` null when the file `path` is absent.
+Samples SampleCascadia(unsigned seed, int count, int onSurface, double shrink, std::string& path);
 }
