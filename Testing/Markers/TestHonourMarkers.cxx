@@ -397,3 +397,39 @@ TEST(HonourMarkers, MarkersAreReadAgainstTheCommittedShape)
     EXPECT_LE(std::abs(v), 1e-6 * size) << "after the undo: the rest shape's markers";
   EXPECT_EQ(shaper.Filter->GetNumberOfMarkersOffSurface(), 0);
 }
+
+// A volume mesh is honoured on its boundary: markers on the top face of a tetrahedral
+// slab stay on it while a top vertex between them is pulled up (the boundary's triangles
+// name the slab's own points).
+TEST(HonourMarkers, VolumeMeshIsHonouredOnItsBoundary)
+{
+  const int n = 11, layers = 3;
+  const auto slab = geoshaping::testing::TetSlabUnstructuredGrid(n, n, layers, 1.0, nullptr);
+  const double top = layers - 1;
+  const auto markers = Points({ { 3.3, 5.6, top }, { 7.6, 4.3, top }, { 5.4, 7.7, top } });
+  const vtkIdType grasp = vtkIdType(((layers - 1) * n + 5) * n + 5);
+  vtkNew<vtkChainMailDeformationFilter> free, honour;
+  for (vtkChainMailDeformationFilter* f : { free.Get(), honour.Get() })
+  {
+    f->SetInputData(slab);
+    f->SetMarkersData(markers);
+    f->SetDefaultMalleability(0.9);
+    f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "None");
+    f->SetGraspPointId(grasp);
+    f->SetDisplacement(0.0, 0.0, 2.0);
+  }
+  honour->HonourMarkersOn();
+  honour->Update();
+  free->Update();
+  EXPECT_EQ(honour->GetNumberOfHonouredMarkers(), 3);
+  EXPECT_EQ(honour->GetNumberOfMarkerPinnedPoints(), 9);
+  double x[3];
+  honour->GetOutput()->GetPoint(grasp, x);
+  EXPECT_EQ(x[2], top + 2.0) << "the grasp goes where it is told";
+  for (const double v : VerticalMisfit(honour->GetOutput(), markers))
+    EXPECT_LE(std::abs(v), 1e-6 * slab->GetLength());
+  double largest = 0.0;
+  for (const double v : VerticalMisfit(free->GetOutput(), markers))
+    largest = std::max(largest, std::abs(v));
+  EXPECT_GT(largest, 0.1) << "without HonourMarkers the top face leaves them";
+}
