@@ -483,7 +483,7 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
     state.Deformer.set_threads(this->NumberOfThreads);
     state.Deformer.set_threaded_threshold(std::size_t(this->ThreadedSuperstepThreshold));
     r = state.Deformer.deform(v, d);
-    if (!r.ok &&
+    if (!r.ok && state.Deformer.pinned(v) &&
         std::binary_search(state.Markers.vertices.begin(), state.Markers.vertices.end(), v))
       r.message += " under an honoured marker (HonourMarkers): grasp a vertex off the markers' "
                    "triangles";
