@@ -459,5 +459,15 @@ void pqHapticsDockPanel::onFrame()
   {
     text += QString("\nheld back by obstacles: %1").arg(f.obstacleBlockedPoints);
   }
+  if (f.serverPatchMilliseconds >= 0.0)
+  {
+    text += QString("\ncontact patch from the server: %1 ms, %2 bytes")
+              .arg(f.serverPatchMilliseconds, 0, 'f', 1)
+              .arg(f.serverPatchBytes);
+  }
+  if (!f.serverPatchMessage.isEmpty())
+  {
+    text += "\n" + f.serverPatchMessage;
+  }
   this->Figures->setText(text);
 }

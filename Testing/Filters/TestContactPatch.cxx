@@ -1,16 +1,21 @@
-// geoshaping::contact::AppendTrianglesNear (the haptic contact patch, ParaViewPlugin/Qt)
-// against a brute-force scan of every cell's bounds.
-#include "ContactPatch.h"
+// vtkGeoShapingContactPatch::AppendTrianglesNear (the haptic contact patch's rule, the
+// client's and the server's) against a brute-force scan of every cell's bounds; the
+// filter on one process, ghost cells left out.
+#include "vtkGeoShapingContactPatch.h"
 
 #include "vtk_test_meshes.h"
 
 #include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
@@ -90,7 +95,7 @@ TEST(ContactPatch, TrianglesNearAPointAreThoseABruteForceScanFinds)
   {
     std::vector<double> xyz = { 1.0, 2.0 }; // appended to, not replaced
     const vtkIdType n =
-      geoshaping::contact::AppendTrianglesNear(grid, locator, query.data(), query[3], xyz);
+      vtkGeoShapingContactPatch::AppendTrianglesNear(grid, locator, query.data(), query[3], xyz);
     EXPECT_EQ(n, bruteForce(grid, query.data(), query[3])) << query[0] << " " << query[1];
     ASSERT_EQ(xyz.size(), 2 + 9 * std::size_t(n));
     EXPECT_EQ(xyz[0], 1.0);
@@ -106,10 +111,10 @@ TEST(ContactPatch, TrianglesNearAPointAreThoseABruteForceScanFinds)
   std::vector<double> xyz;
   // 2.5 around (10.2, 10.7) on a unit grid: 6 x 6 squares (x 8..13, y 8..13 once
   // bounds touching the box count), 2 triangles each
-  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(grid, locator, c, 2.5, xyz), 2 * 6 * 6);
-  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(grid, locator, c, std::nan(""), xyz), 0);
-  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(grid, locator, c, -1.0, xyz), 0);
-  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(nullptr, locator, c, 1.0, xyz), 0);
+  EXPECT_EQ(vtkGeoShapingContactPatch::AppendTrianglesNear(grid, locator, c, 2.5, xyz), 2 * 6 * 6);
+  EXPECT_EQ(vtkGeoShapingContactPatch::AppendTrianglesNear(grid, locator, c, std::nan(""), xyz), 0);
+  EXPECT_EQ(vtkGeoShapingContactPatch::AppendTrianglesNear(grid, locator, c, -1.0, xyz), 0);
+  EXPECT_EQ(vtkGeoShapingContactPatch::AppendTrianglesNear(nullptr, locator, c, 1.0, xyz), 0);
 }
 
 TEST(ContactPatch, VolumeCellsGiveNoContactTriangles)
@@ -128,6 +133,62 @@ TEST(ContactPatch, VolumeCellsGiveNoContactTriangles)
   locator->BuildLocator();
   const double c[3] = { 0.2, 0.2, 0.2 };
   std::vector<double> xyz;
-  EXPECT_EQ(geoshaping::contact::AppendTrianglesNear(ug, locator, c, 1.0, xyz), 0);
+  EXPECT_EQ(vtkGeoShapingContactPatch::AppendTrianglesNear(ug, locator, c, 1.0, xyz), 0);
   EXPECT_TRUE(xyz.empty());
+}
+
+TEST(ContactPatch, TheFilterSendsTheOwnedTrianglesOnce)
+{
+  // A 20 x 10 unit grid whose cells with x < 5 are ghosts (another process owns them):
+  // the filter (one process, no gather) sends the owned triangles of the box only,
+  // those the rule gives with ownedOnly, and the rule without it gives the ghosts too.
+  auto grid = geoshaping::testing::TriangleGridPolyData(20, 10, 1.0, {});
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfValues(grid->GetNumberOfCells());
+  vtkIdType ghostCells = 0;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    double b[6];
+    grid->GetCellBounds(c, b);
+    const bool ghost = b[1] <= 5.0;
+    ghosts->SetValue(c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+    ghostCells += ghost ? 1 : 0;
+  }
+  grid->GetCellData()->AddArray(ghosts);
+  ASSERT_GT(ghostCells, 0);
+  vtkNew<vtkGeoShapingContactPatch> patch;
+  patch->SetInputData(grid);
+  patch->SetCenter(5.5, 5.5, 0.0);
+  patch->SetRadius(2.0);
+  patch->Update();
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(grid);
+  locator->BuildLocator();
+  const double c[3] = { 5.5, 5.5, 0.0 };
+  std::vector<double> owned, all;
+  const vtkIdType n =
+    vtkGeoShapingContactPatch::AppendTrianglesNear(grid, locator, c, 2.0, owned, true);
+  // the box x, y in [3.5, 7.5] meets the squares 3..7 each way, 2 triangles a square;
+  // the columns 5..7 are owned
+  EXPECT_EQ(vtkGeoShapingContactPatch::AppendTrianglesNear(grid, locator, c, 2.0, all), 2 * 5 * 5);
+  EXPECT_EQ(n, 2 * 3 * 5);
+  ASSERT_EQ(patch->GetTriangles()->GetNumberOfValues(), vtkIdType(owned.size()));
+  for (std::size_t i = 0; i < owned.size(); ++i)
+  {
+    EXPECT_EQ(patch->GetTriangles()->GetValue(vtkIdType(i)), owned[i]);
+    if (i % 3 == 0)
+    {
+      EXPECT_GE(owned[i], 5.0) << "a ghost triangle was sent";
+    }
+  }
+  // A moved stylus re-executes; an empty input gives an empty patch.
+  patch->SetCenter(100.0, 100.0, 0.0);
+  patch->Update();
+  EXPECT_EQ(patch->GetTriangles()->GetNumberOfValues(), 0);
+  vtkNew<vtkPolyData> empty;
+  patch->SetInputData(empty);
+  patch->SetCenter(5.0, 5.0, 0.0);
+  patch->Update();
+  EXPECT_EQ(patch->GetTriangles()->GetNumberOfValues(), 0);
 }

@@ -1,0 +1,135 @@
+"""The contact patch from the ranks (issue 39 item 2, docs/haptics.md "The contact patch on
+a server"): a client on `mpiexec -n 2 pvserver` (loopback) with remote rendering forced
+(Remote Render Threshold 0, checked: the client's view renders remotely and holds no
+geometry) asks the GeoShapingContactPatch proxy for the triangles of the deformed
+fault-step horizon near stylus points over both ranks' pieces and across their seam; each
+patch must be a builtin session's, the same triangles (each once: no ghost copy), bit for
+bit, in any order. The client's round trip per patch (ms, bytes through its socket) is
+printed for docs/benchmarks.md.
+Usage: test_pvserver_patch.py (the driver); test_pvserver_patch.py client PORT OUT."""
+import json
+import os
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "Python"))
+
+from test_pvserver_pick import socket_bytes  # noqa: E402
+
+# Stylus points (x, y, z, box half-size): on rank 0's upper plateau, across the seam
+# (x = 50), on rank 1's lower plateau (z = 0 beyond the step), under the grasp's bump
+# (lifted 8 above it: nothing) and off the surface; the half-size 13.4 is the GUI tests'
+# reach (ContactReachMetres at their camera's scale).
+CENTRES = [(20.0, 30.0, 20.0, 13.4), (44.0, 30.0, 20.0, 5.0), (50.0, 30.0, 10.0, 6.0),
+           (51.0, 12.0, 8.0, 13.4), (70.0, 30.0, 0.0, 13.4), (90.0, 50.0, 0.0, 2.5),
+           (10.0, 5.0, 18.0, 3.0), (200.0, 30.0, 0.0, 5.0)]
+REPEATS = 10  # each centre this many times, moved a little (so each re-executes)
+
+
+def client(port, out):
+    from paraview import servermanager
+    from paraview.simple import Connect, Disconnect, GetActiveViewOrCreate, LoadPlugin, Render, Show
+    import paraview.simple as simple
+
+    if port:
+        Connect("127.0.0.1", port)
+    for remote in ((False, True) if port else (False,)):
+        LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], remote=remote, ns=vars(simple))
+    from mpi_pipeline import distributed
+    _, upstream = distributed(vars(simple)["FaultStepHorizon"]())
+    chain = vars(simple)["ChainMailDeformation"](Input=upstream)
+    chain.GraspMode = "Nearest To Position"
+    chain.GraspPosition = [10.0, 5.0, 10.0]
+    chain.Displacement = [0.0, 0.0, 8.0]
+    chain.OutputPointsPrecision = "Double"
+    chain.UpdatePipeline()
+    remote_rendering = False
+    if port:  # the view renders on the server (the builtin session needs no view)
+        view = GetActiveViewOrCreate("RenderView")
+        view.ViewSize = [400, 300]
+        view.RemoteRenderThreshold = 0.0
+        Show(chain, view)
+        Render(view)
+        remote_rendering = bool(view.GetClientSideObject().GetUseDistributedRenderingForRender())
+    patch = servermanager.ProxyManager().SMProxyManager.NewProxy("misc", "GeoShapingContactPatch")
+    servermanager.vtkSMPropertyHelper(patch, "Input").Set(chain.SMProxy, 0)
+    patch.UpdateVTKObjects()
+
+    def ask(x, y, z, radius):
+        servermanager.vtkSMPropertyHelper(patch, "Center").Set([x, y, z], 3)
+        servermanager.vtkSMPropertyHelper(patch, "Radius").Set(radius)
+        patch.UpdateVTKObjects()
+        patch.UpdatePipeline()
+        patch.UpdatePropertyInformation()
+        values = patch.GetProperty("Triangles")
+        return [values.GetElement(i) for i in range(values.GetNumberOfElements())]
+
+    patches = [ask(*c) for c in CENTRES]
+    before, start = socket_bytes(port), time.perf_counter()
+    triangles = 0
+    for r in range(REPEATS):
+        for x, y, z, radius in CENTRES:
+            triangles += len(ask(x + 1e-3 * (r + 1), y, z, radius)) // 9
+    seconds, transferred = time.perf_counter() - start, socket_bytes(port) - before
+    asked = REPEATS * len(CENTRES)
+    with open(out, "w") as f:
+        json.dump({"patches": patches, "remote_rendering": remote_rendering,
+                   "ms": 1e3 * seconds / asked, "bytes": transferred / asked,
+                   "triangles": triangles / asked}, f)
+    if port:
+        Disconnect()
+
+
+def driver():
+    import tempfile
+    import pvserver_process
+    from mpi_driver import ENV, fail, run_client
+
+    env = {k: v for k, v in ENV.items()
+           if not (k.startswith("OMPI_") or k.startswith("PMIX_") or k.startswith("OPAL_"))}
+    with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as tmp:
+        def client_answer(port, name):  # the client's view shows the server's image in a window
+            return run_client(__file__, port, os.path.join(tmp, name + ".json"), env,
+                              display=bool(port))
+
+        builtin, why = client_answer(0, "builtin")
+        if builtin is None:
+            fail("builtin: " + why)
+        proc, port, log = pvserver_process.start(2, os.path.join(tmp, "pvserver.log"), display=True)
+        try:
+            served, why = client_answer(port, "pvserver")
+        finally:
+            pvserver_process.stop(proc, 20)
+            log.seek(0)
+            server_log = log.read()
+        if served is None:
+            fail("2-rank pvserver: %s\nserver log: %s" % (why, server_log[-2000:]))
+        if "ERR|" in server_log:
+            fail("the server logged an error: " + server_log[-2000:])
+        if not served["remote_rendering"]:
+            fail("the view on the 2-rank pvserver does not render remotely")
+
+        def triangles(values):
+            return sorted(tuple(values[i:i + 9]) for i in range(0, len(values), 9))
+        for centre, one, two in zip(CENTRES, builtin["patches"], served["patches"]):
+            a, b = triangles(one), triangles(two)
+            print("centre %s: %d triangles on one process, %d from 2 ranks" % (centre, len(a), len(b)))
+            if len(one) % 9 or len(two) % 9:
+                fail("centre %s: a patch is not whole triangles" % (centre,))
+            if a != b:
+                fail("centre %s: the ranks' patch differs from one process's" % (centre,))
+        counts = [len(p) // 9 for p in builtin["patches"]]
+        if min(counts[:6]) == 0 or counts[-1] != 0:
+            fail("patches %s: the centres on the surface must meet it, the one off it not" % counts)
+        print("ok: %d patches equal to one process (%s triangles)" % (len(CENTRES), counts))
+        print("round trip per patch, 2 ranks, loopback: %.2f ms, %.0f bytes, %.0f triangles "
+              "(builtin %.2f ms)" % (served["ms"], served["bytes"], served["triangles"],
+                                     builtin["ms"]))
+
+
+if __name__ == "__main__":
+    if sys.argv[1:2] == ["client"]:
+        client(int(sys.argv[2]), sys.argv[3])
+    else:
+        driver()
