@@ -17,9 +17,36 @@
 #include "vtkStaticCellLocator.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "geoshaping/haptics/contact_patch.h"
+
+#include <algorithm>
 #include <cmath>
 
 vtkStandardNewMacro(vtkGeoShapingContactPatch);
+
+namespace
+{
+// The `max` triangles of `xyz` (9 doubles each) nearest to `centre`, nearest first
+// (geoshaping::haptics::keep_nearest); all of them when `max` is 0.
+void keepNearest(std::vector<double>& xyz, const double centre[3], int max)
+{
+  if (max <= 0 || xyz.size() / 9 <= std::size_t(max))
+  {
+    return;
+  }
+  std::vector<Eigen::Vector3d> corners(xyz.size() / 3);
+  for (std::size_t i = 0; i < corners.size(); ++i)
+  {
+    corners[i] = Eigen::Vector3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+  }
+  geoshaping::haptics::keep_nearest(corners, Eigen::Vector3d(centre), std::size_t(max));
+  xyz.resize(3 * corners.size());
+  for (std::size_t i = 0; i < corners.size(); ++i)
+  {
+    std::copy(corners[i].data(), corners[i].data() + 3, xyz.data() + 3 * i);
+  }
+}
+} // namespace
 
 vtkGeoShapingContactPatch::vtkGeoShapingContactPatch()
   : Triangles(vtkSmartPointer<vtkDoubleArray>::New())
@@ -129,6 +156,7 @@ int vtkGeoShapingContactPatch::RequestData(
       this->LocatorTime = time;
     }
     AppendTrianglesNear(input, this->Locator, this->Center, this->Radius, mine, true);
+    keepNearest(mine, this->Center, this->MaxTriangles);
   }
   else
   {
@@ -141,7 +169,12 @@ int vtkGeoShapingContactPatch::RequestData(
   this->Triangles = vtkSmartPointer<vtkDoubleArray>::New();
   if (controller && ranks > 1)
   {
-    controller->GatherV(piece, this->Triangles, 0);
+    vtkNew<vtkDoubleArray> all;
+    controller->GatherV(piece, all, 0);
+    std::vector<double> gathered(all->GetPointer(0), all->GetPointer(0) + all->GetNumberOfValues());
+    keepNearest(gathered, this->Center, this->MaxTriangles);
+    this->Triangles->SetNumberOfValues(vtkIdType(gathered.size()));
+    std::copy(gathered.begin(), gathered.end(), this->Triangles->GetPointer(0));
   }
   else
   {
@@ -156,5 +189,6 @@ void vtkGeoShapingContactPatch::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Center: " << this->Center[0] << " " << this->Center[1] << " " << this->Center[2]
      << "\n";
   os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "MaxTriangles: " << this->MaxTriangles << "\n";
   os << indent << "Triangles: " << this->Triangles->GetNumberOfValues() / 9 << "\n";
 }

@@ -10,7 +10,8 @@
  * every triangle comes once), and one GatherV collects the pieces' triangles, rank by
  * rank, on the first process, whose Triangles (9 doubles a triangle) the client reads as
  * an information property: one push of the stylus and one pull of the patch a graphics
- * frame when the client holds no geometry. An empty piece, or one that is not surface
+ * frame when the client holds no geometry. With MaxTriangles only the nearest triangles
+ * travel. An empty piece, or one that is not surface
  * cells, selects nothing and still joins the gather. A cell locator per piece is kept
  * and rebuilt when the input's geometry changes. The output is empty.
  */
@@ -39,6 +40,12 @@ public:
   vtkGetVector3Macro(Center, double);
   vtkSetMacro(Radius, double);
   vtkGetMacro(Radius, double);
+  /// When > 0, only the MaxTriangles triangles nearest to Center are sent (the haptics
+  /// layer's keep_nearest, on each process and again on the first): what the interactor
+  /// keeps of a patch anyway when distances in the input's coordinates order the
+  /// triangles as the device's do. 0 (default): every triangle of the box.
+  vtkSetClampMacro(MaxTriangles, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaxTriangles, int);
 
   /// The patch of the last update, 9 doubles a triangle (the first process's holds every
   /// process's, rank by rank; the others hold none).
@@ -65,6 +72,7 @@ protected:
 
   double Center[3] = { 0.0, 0.0, 0.0 };
   double Radius = 0.0;
+  int MaxTriangles = 0;
   vtkSmartPointer<vtkDoubleArray> Triangles;
   vtkSmartPointer<vtkStaticCellLocator> Locator;
   vtkDataSet* LocatorData = nullptr;

@@ -461,8 +461,8 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   const haptics::DeviceSample& sample = hand.latest.sample;
   if (hand.latest.device_ok)
   {
-    this->Proxies.contactTriangles(
-      stylus, ContactReachMetres * hand.mapping.scale(), !anyDragging, scene.contact_triangles);
+    this->Proxies.contactTriangles(stylus, ContactReachMetres * hand.mapping.scale(), !anyDragging,
+      MaxContactTriangles, scene.contact_triangles);
     for (Eigen::Vector3d& p : scene.contact_triangles)
     {
       p = hand.mapping.to_device(p);

@@ -41,6 +41,15 @@
 
 namespace
 {
+// Whether `a` is a rotation times a uniform scale (a similarity): distances keep their
+// order through it. Within 1e-12 of its scale.
+bool similarity(const Eigen::Matrix3d& a)
+{
+  const Eigen::Matrix3d g = a.transpose() * a;
+  const double s = g.trace() / 3.0;
+  return s > 0.0 && (g - s * Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= 1e-12 * s;
+}
+
 bool isA(pqPipelineSource* source, const char* xmlName)
 {
   return source && source->getProxy() && source->getProxy()->GetXMLName() &&
@@ -278,8 +287,8 @@ vtkStaticCellLocator* pqHapticsProxies::cellLocator(vtkDataSet* data)
   return entry->locator;
 }
 
-void pqHapticsProxies::contactTriangles(
-  const Eigen::Vector3d& world, double radius, bool withShown, std::vector<Eigen::Vector3d>& out)
+void pqHapticsProxies::contactTriangles(const Eigen::Vector3d& world, double radius, bool withShown,
+  std::size_t nearest, std::vector<Eigen::Vector3d>& out)
 {
   this->PatchFigures = ServerPatchFigures();
   if (!this->View || !world.allFinite() || !(radius > 0.0))
@@ -331,7 +340,8 @@ void pqHapticsProxies::contactTriangles(
       vtkGeoShapingContactPatch::AppendTrianglesNear(
         data, this->cellLocator(data), centre.data(), local, xyz);
     }
-    else if (!this->serverPatch(source->getProxy(), port, centre.data(), local, xyz))
+    else if (!this->serverPatch(source->getProxy(), port, centre.data(), local,
+               similarity(m.topLeftCorner<3, 3>()) ? nearest : 0, xyz))
     {
       continue;
     }
@@ -342,8 +352,8 @@ void pqHapticsProxies::contactTriangles(
   }
 }
 
-bool pqHapticsProxies::serverPatch(
-  vtkSMProxy* input, int port, const double centre[3], double radius, std::vector<double>& xyz)
+bool pqHapticsProxies::serverPatch(vtkSMProxy* input, int port, const double centre[3],
+  double radius, std::size_t nearest, std::vector<double>& xyz)
 {
   this->ServerPatches.erase(std::remove_if(this->ServerPatches.begin(), this->ServerPatches.end(),
                               [](const ServerPatchEntry& e) { return !e.input; }),
@@ -380,6 +390,7 @@ bool pqHapticsProxies::serverPatch(
   vtkSMSourceProxy* patch = entry->patch;
   vtkSMPropertyHelper(patch, "Center").Set(centre, 3);
   vtkSMPropertyHelper(patch, "Radius").Set(radius);
+  vtkSMPropertyHelper(patch, "MaxTriangles").Set(int(std::min<std::size_t>(nearest, VTK_INT_MAX)));
   patch->UpdateVTKObjects();
   patch->UpdatePipeline();
   patch->UpdatePropertyInformation();

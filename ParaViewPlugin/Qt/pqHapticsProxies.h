@@ -110,9 +110,12 @@ public:
   // (builtin sessions; cell locators cached per dataset, rebuilt when its geometry
   // changes); against a server, whose client holds none, each surface's patch is asked of
   // the server's processes (a GeoShapingContactPatch proxy per surface, one round trip
-  // each: docs/haptics.md, "The contact patch on a server"), the same triangles.
-  void contactTriangles(
-    const Eigen::Vector3d& world, double radius, bool withShown, std::vector<Eigen::Vector3d>& out);
+  // each: docs/haptics.md, "The contact patch on a server"), the same triangles; of a
+  // surface shown through a similarity (rotation, uniform scale: distances keep their
+  // order) only the `nearest` nearest to `world` travel (0: all), those the caller's
+  // keep_nearest would keep.
+  void contactTriangles(const Eigen::Vector3d& world, double radius, bool withShown,
+    std::size_t nearest, std::vector<Eigen::Vector3d>& out);
   // The server's patches of the last contactTriangles call (milliseconds < 0: none asked,
   // the client held the data); `message` says when a patch could not be had (no
   // GeoShapingContactPatch on the server) or came late (the last patch kept then).
@@ -200,8 +203,8 @@ private:
   // The contact patch of `input`'s output `port` asked of the server's processes
   // (vtkGeoShapingContactPatch), appended to `xyz` in its data coordinates; false when
   // the server has no such proxy.
-  bool serverPatch(
-    vtkSMProxy* input, int port, const double centre[3], double radius, std::vector<double>& xyz);
+  bool serverPatch(vtkSMProxy* input, int port, const double centre[3], double radius,
+    std::size_t nearest, std::vector<double>& xyz);
   struct ServerPatchEntry
   {
     vtkWeakPointer<vtkSMProxy> input;

@@ -15,11 +15,14 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
+#include "vtkTriangle.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -191,4 +194,55 @@ TEST(ContactPatch, TheFilterSendsTheOwnedTrianglesOnce)
   patch->SetCenter(5.0, 5.0, 0.0);
   patch->Update();
   EXPECT_EQ(patch->GetTriangles()->GetNumberOfValues(), 0);
+}
+
+TEST(ContactPatch, MaxTrianglesKeepsTheNearest)
+{
+  // 10 of the box's triangles: each kept one no farther from the centre than any left
+  // out (distances by vtkTriangle, not the haptics layer's rule the filter uses).
+  auto grid = geoshaping::testing::TriangleGridPolyData(20, 10, 1.0, {});
+  vtkNew<vtkGeoShapingContactPatch> patch;
+  patch->SetInputData(grid);
+  patch->SetCenter(5.3, 4.6, 0.5);
+  patch->SetRadius(3.0);
+  patch->Update();
+  const vtkIdType all = patch->GetTriangles()->GetNumberOfValues() / 9;
+  patch->SetMaxTriangles(10);
+  patch->Update();
+  vtkDoubleArray* kept = patch->GetTriangles();
+  ASSERT_EQ(kept->GetNumberOfValues(), 9 * 10);
+  ASSERT_GT(all, 10);
+  auto distance = [&](const double* t)
+  {
+    vtkNew<vtkTriangle> triangle;
+    for (int i = 0; i < 3; ++i)
+      triangle->GetPoints()->SetPoint(i, t + 3 * i);
+    double closest[3], pcoords[3], d2, weights[3];
+    int sub;
+    triangle->EvaluatePosition(patch->GetCenter(), closest, sub, pcoords, d2, weights);
+    return d2;
+  };
+  double farthestKept = 0.0;
+  std::vector<std::array<double, 9>> keptTriangles;
+  for (vtkIdType t = 0; t < 10; ++t)
+  {
+    farthestKept = std::max(farthestKept, distance(kept->GetPointer(9 * t)));
+    std::array<double, 9> a;
+    std::copy(kept->GetPointer(9 * t), kept->GetPointer(9 * t) + 9, a.begin());
+    keptTriangles.push_back(a);
+  }
+  patch->SetMaxTriangles(0);
+  patch->Update();
+  vtkDoubleArray* every = patch->GetTriangles();
+  int found = 0;
+  for (vtkIdType t = 0; t < all; ++t)
+  {
+    std::array<double, 9> a;
+    std::copy(every->GetPointer(9 * t), every->GetPointer(9 * t) + 9, a.begin());
+    if (std::find(keptTriangles.begin(), keptTriangles.end(), a) != keptTriangles.end())
+      ++found;
+    else
+      EXPECT_GE(distance(a.data()), farthestKept - 1e-12) << "a nearer triangle was left out";
+  }
+  EXPECT_EQ(found, 10);
 }

@@ -247,8 +247,8 @@ def run_touch(out, read_results, remote_render=False):
     remote = "GeoShaping test: remote rendering = 1" in log
     print("the view renders %s" % ("remotely" if remote else "on the client"))
     assert remote == remote_render, "remote rendering %s, expected %s" % (remote, remote_render)
-    check_session(read_results(ranks + ".txt"), "Edits: 0")
-    check_session(read_results(one + ".txt"), "Edits: 0", ranks=0)
+    check_session(read_results(ranks + ".txt"), "Edits: 0, redoable 0")
+    check_session(read_results(one + ".txt"), "Edits: 0, redoable 0", ranks=0)
     touch = read_figures(ranks + "-touch.txt")
     _, _, moved, _, by_rank = check_shape(out, ranks, "touch")
     assert moved == 0, "touching must not deform"

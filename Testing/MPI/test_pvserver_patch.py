@@ -25,6 +25,8 @@ CENTRES = [(20.0, 30.0, 20.0, 13.4), (44.0, 30.0, 20.0, 5.0), (50.0, 30.0, 10.0,
            (51.0, 12.0, 8.0, 13.4), (70.0, 30.0, 0.0, 13.4), (90.0, 50.0, 0.0, 2.5),
            (10.0, 5.0, 18.0, 3.0), (200.0, 30.0, 0.0, 5.0)]
 REPEATS = 10  # each centre this many times, moved a little (so each re-executes)
+NEAREST = 256  # MaxTriangles as the interactor sets it (MaxContactTriangles)
+FRAMES = 40  # frames rendered with and without a patch, for the frame rate
 
 
 def client(port, out):
@@ -56,9 +58,10 @@ def client(port, out):
     servermanager.vtkSMPropertyHelper(patch, "Input").Set(chain.SMProxy, 0)
     patch.UpdateVTKObjects()
 
-    def ask(x, y, z, radius):
+    def ask(x, y, z, radius, most=0):
         servermanager.vtkSMPropertyHelper(patch, "Center").Set([x, y, z], 3)
         servermanager.vtkSMPropertyHelper(patch, "Radius").Set(radius)
+        servermanager.vtkSMPropertyHelper(patch, "MaxTriangles").Set(most)
         patch.UpdateVTKObjects()
         patch.UpdatePipeline()
         patch.UpdatePropertyInformation()
@@ -66,23 +69,45 @@ def client(port, out):
         return [values.GetElement(i) for i in range(values.GetNumberOfElements())]
 
     patches = [ask(*c) for c in CENTRES]
-    before, start = socket_bytes(port), time.perf_counter()
-    triangles = 0
+    nearest = [ask(*c, most=NEAREST) for c in CENTRES]
+    # The round trip, every triangle of the box and the NEAREST nearest interleaved (each
+    # ask a moved centre, so each re-executes): seconds, bytes, triangles per kind.
+    cost = {0: [0.0, 0, 0], NEAREST: [0.0, 0, 0]}
     for r in range(REPEATS):
         for x, y, z, radius in CENTRES:
-            triangles += len(ask(x + 1e-3 * (r + 1), y, z, radius)) // 9
-    seconds, transferred = time.perf_counter() - start, socket_bytes(port) - before
+            for most in (0, NEAREST):
+                before = socket_bytes(port)
+                start = time.perf_counter()
+                got = ask(x + 1e-3 * (r + 1), y, z, radius, most)
+                cost[most][0] += time.perf_counter() - start
+                cost[most][1] += socket_bytes(port) - before
+                cost[most][2] += len(got) // 9
+    # What it costs the frame rate: frames of the remote-rendering view (a render after a
+    # camera step) with and without a patch asked (the nearest 256 at the GUI tests'
+    # reach), interleaved.
+    frames = {False: 0.0, True: 0.0}
+    if port:
+        for r in range(FRAMES):
+            for with_patch in (False, True):
+                start = time.perf_counter()
+                if with_patch:
+                    ask(70.0 + 1e-3 * r, 30.0, 0.0, 13.4, NEAREST)
+                view.CameraPosition = [50.0, -90.0 + 1e-3 * (2 * r + with_patch), 170.0]
+                Render(view)
+                frames[with_patch] += time.perf_counter() - start
     asked = REPEATS * len(CENTRES)
     with open(out, "w") as f:
-        json.dump({"patches": patches, "remote_rendering": remote_rendering,
-                   "ms": 1e3 * seconds / asked, "bytes": transferred / asked,
-                   "triangles": triangles / asked}, f)
+        json.dump({"patches": patches, "nearest": nearest, "remote_rendering": remote_rendering,
+                   "cost": {str(k): [1e3 * v[0] / asked, v[1] / asked, v[2] / asked]
+                            for k, v in cost.items()},
+                   "fps": [FRAMES / frames[w] if frames[w] else 0.0 for w in (False, True)]}, f)
     if port:
         Disconnect()
 
 
 def driver():
     import tempfile
+    import numpy as np
     import pvserver_process
     from mpi_driver import ENV, fail, run_client
 
@@ -122,11 +147,44 @@ def driver():
         counts = [len(p) // 9 for p in builtin["patches"]]
         if min(counts[:6]) == 0 or counts[-1] != 0:
             fail("patches %s: the centres on the surface must meet it, the one off it not" % counts)
-        print("ok: %d patches equal to one process (%s triangles)" % (len(CENTRES), counts))
-        print("round trip per patch, 2 ranks, loopback: %.2f ms, %.0f bytes, %.0f triangles "
-              "(builtin %.2f ms)" % (served["ms"], served["bytes"], served["triangles"],
-                                     builtin["ms"]))
+        # MaxTriangles: the NEAREST triangles nearest the centre, the ranks' each kept
+        # theirs then the first process again; the same distances as one process's (the
+        # set may differ where distances tie at the last kept one), distances by vtkTriangle.
+        for centre, every, one, two in zip(CENTRES, builtin["patches"], builtin["nearest"],
+                                           served["nearest"]):
+            a, b = distances(centre, one), distances(centre, two)
+            if len(b) != min(NEAREST, len(every) // 9) or not set(triangles(two)) <= set(triangles(every)):
+                fail("centre %s: %d nearest from 2 ranks of %d" % (centre, len(b), len(every) // 9))
+            if np.abs(np.subtract(a, b)).max(initial=0.0) > 1e-9:
+                fail("centre %s: the nearest triangles' distances differ" % (centre,))
+        print("ok: %d patches equal to one process (%s triangles), the %d nearest too"
+              % (len(CENTRES), counts, NEAREST))
+        for most, name in ((0, "every triangle of the box"), (NEAREST, "the %d nearest" % NEAREST)):
+            ms, transferred, count = served["cost"][str(most)]
+            print("round trip per patch, 2 ranks, loopback, %s: %.2f ms, %.0f bytes, %.0f "
+                  "triangles (builtin %.2f ms)" % (name, ms, transferred, count,
+                                                  builtin["cost"][str(most)][0]))
+        print("frames of the remote-rendering view: %.1f frames/s, %.1f with a patch a frame"
+              % tuple(served["fps"]))
 
+
+def distances(centre, values):
+    """The sorted squared distances from `centre` to the triangles of `values`."""
+    from vtkmodules.vtkCommonDataModel import vtkTriangle
+    triangle, out = vtkTriangle(), []
+    for i in range(0, len(values), 9):
+        for k in range(3):
+            triangle.GetPoints().SetPoint(k, values[i + 3 * k:i + 3 * k + 3])
+        closest, pcoords, weights = [0.0] * 3, [0.0] * 3, [0.0] * 3
+        sub, d2 = vtk_reference(0), vtk_reference(0.0)
+        triangle.EvaluatePosition(centre[:3], closest, sub, pcoords, d2, weights)
+        out.append(float(d2))
+    return sorted(out)
+
+
+def vtk_reference(value):
+    from vtkmodules.vtkCommonCore import reference
+    return reference(value)
 
 if __name__ == "__main__":
     if sys.argv[1:2] == ["client"]:
