@@ -15,7 +15,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "Python"))
 
-from test_pvserver_pick import socket_bytes  # noqa: E402
+from test_pvserver_pick import builtin_and_served, remote_scene, socket_bytes  # noqa: E402
 
 # Stylus points (x, y, z, box half-size): on rank 0's upper plateau, across the seam
 # (x = 50), on rank 1's lower plateau (z = 0 beyond the step), under the grasp's bump
@@ -31,29 +31,9 @@ FRAMES = 40  # frames rendered with and without a patch, for the frame rate
 
 def client(port, out):
     from paraview import servermanager
-    from paraview.simple import Connect, Disconnect, GetActiveViewOrCreate, LoadPlugin, Render, Show
-    import paraview.simple as simple
+    from paraview.simple import Disconnect, Render
 
-    if port:
-        Connect("127.0.0.1", port)
-    for remote in ((False, True) if port else (False,)):
-        LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], remote=remote, ns=vars(simple))
-    from mpi_pipeline import distributed
-    _, upstream = distributed(vars(simple)["FaultStepHorizon"]())
-    chain = vars(simple)["ChainMailDeformation"](Input=upstream)
-    chain.GraspMode = "Nearest To Position"
-    chain.GraspPosition = [10.0, 5.0, 10.0]
-    chain.Displacement = [0.0, 0.0, 8.0]
-    chain.OutputPointsPrecision = "Double"
-    chain.UpdatePipeline()
-    remote_rendering = False
-    if port:  # the view renders on the server (the builtin session needs no view)
-        view = GetActiveViewOrCreate("RenderView")
-        view.ViewSize = [400, 300]
-        view.RemoteRenderThreshold = 0.0
-        Show(chain, view)
-        Render(view)
-        remote_rendering = bool(view.GetClientSideObject().GetUseDistributedRenderingForRender())
+    chain, view, remote_rendering = remote_scene(port)
     patch = servermanager.ProxyManager().SMProxyManager.NewProxy("misc", "GeoShapingContactPatch")
     servermanager.vtkSMPropertyHelper(patch, "Input").Set(chain.SMProxy, 0)
     patch.UpdateVTKObjects()
@@ -106,85 +86,58 @@ def client(port, out):
 
 
 def driver():
-    import tempfile
     import numpy as np
-    import pvserver_process
-    from mpi_driver import ENV, fail, run_client
+    from mpi_driver import fail
 
-    env = {k: v for k, v in ENV.items()
-           if not (k.startswith("OMPI_") or k.startswith("PMIX_") or k.startswith("OPAL_"))}
-    with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as tmp:
-        def client_answer(port, name):  # the client's view shows the server's image in a window
-            return run_client(__file__, port, os.path.join(tmp, name + ".json"), env,
-                              display=bool(port))
-
-        builtin, why = client_answer(0, "builtin")
-        if builtin is None:
-            fail("builtin: " + why)
-        proc, port, log = pvserver_process.start(2, os.path.join(tmp, "pvserver.log"), display=True)
-        try:
-            served, why = client_answer(port, "pvserver")
-        finally:
-            pvserver_process.stop(proc, 20)
-            log.seek(0)
-            server_log = log.read()
-        if served is None:
-            fail("2-rank pvserver: %s\nserver log: %s" % (why, server_log[-2000:]))
-        if "ERR|" in server_log:
-            fail("the server logged an error: " + server_log[-2000:])
-        if not served["remote_rendering"]:
-            fail("the view on the 2-rank pvserver does not render remotely")
-
-        def triangles(values):
-            return sorted(tuple(values[i:i + 9]) for i in range(0, len(values), 9))
-        for centre, one, two in zip(CENTRES, builtin["patches"], served["patches"]):
-            a, b = triangles(one), triangles(two)
-            print("centre %s: %d triangles on one process, %d from 2 ranks" % (centre, len(a), len(b)))
-            if len(one) % 9 or len(two) % 9:
-                fail("centre %s: a patch is not whole triangles" % (centre,))
-            if a != b:
-                fail("centre %s: the ranks' patch differs from one process's" % (centre,))
-        counts = [len(p) // 9 for p in builtin["patches"]]
-        if min(counts[:6]) == 0 or counts[-1] != 0:
-            fail("patches %s: the centres on the surface must meet it, the one off it not" % counts)
-        # MaxTriangles: the NEAREST triangles nearest the centre, the ranks' each kept
-        # theirs then the first process again; the same distances as one process's (the
-        # set may differ where distances tie at the last kept one), distances by vtkTriangle.
-        for centre, every, one, two in zip(CENTRES, builtin["patches"], builtin["nearest"],
-                                           served["nearest"]):
-            a, b = distances(centre, one), distances(centre, two)
-            if len(b) != min(NEAREST, len(every) // 9) or not set(triangles(two)) <= set(triangles(every)):
-                fail("centre %s: %d nearest from 2 ranks of %d" % (centre, len(b), len(every) // 9))
-            if np.abs(np.subtract(a, b)).max(initial=0.0) > 1e-9:
-                fail("centre %s: the nearest triangles' distances differ" % (centre,))
-        print("ok: %d patches equal to one process (%s triangles), the %d nearest too"
-              % (len(CENTRES), counts, NEAREST))
-        for most, name in ((0, "every triangle of the box"), (NEAREST, "the %d nearest" % NEAREST)):
-            ms, transferred, count = served["cost"][str(most)]
-            print("round trip per patch, 2 ranks, loopback, %s: %.2f ms, %.0f bytes, %.0f "
-                  "triangles (builtin %.2f ms)" % (name, ms, transferred, count,
-                                                  builtin["cost"][str(most)][0]))
-        print("frames of the remote-rendering view: %.1f frames/s, %.1f with a patch a frame"
-              % tuple(served["fps"]))
+    builtin, served = builtin_and_served(__file__)
+    def triangles(values):
+        return sorted(tuple(values[i:i + 9]) for i in range(0, len(values), 9))
+    for centre, one, two in zip(CENTRES, builtin["patches"], served["patches"]):
+        a, b = triangles(one), triangles(two)
+        print("centre %s: %d triangles on one process, %d from 2 ranks" % (centre, len(a), len(b)))
+        if len(one) % 9 or len(two) % 9:
+            fail("centre %s: a patch is not whole triangles" % (centre,))
+        if a != b:
+            fail("centre %s: the ranks' patch differs from one process's" % (centre,))
+    counts = [len(p) // 9 for p in builtin["patches"]]
+    if min(counts[:6]) == 0 or counts[-1] != 0:
+        fail("patches %s: the centres on the surface must meet it, the one off it not" % counts)
+    # MaxTriangles: the NEAREST triangles nearest the centre, the ranks' each kept
+    # theirs then the first process again; the same distances as one process's (the
+    # set may differ where distances tie at the last kept one), distances by vtkTriangle.
+    for centre, every, one, two in zip(CENTRES, builtin["patches"], builtin["nearest"],
+                                       served["nearest"]):
+        a, b = distances(centre, one), distances(centre, two)
+        inside = set(triangles(two)) <= set(triangles(every))
+        if len(b) != min(NEAREST, len(every) // 9) or not inside:
+            fail("centre %s: %d nearest from 2 ranks of %d" % (centre, len(b), len(every) // 9))
+        if np.abs(np.subtract(a, b)).max(initial=0.0) > 1e-9:
+            fail("centre %s: the nearest triangles' distances differ" % (centre,))
+    print("ok: %d patches equal to one process (%s triangles), the %d nearest too"
+          % (len(CENTRES), counts, NEAREST))
+    for most, name in ((0, "every triangle of the box"), (NEAREST, "the %d nearest" % NEAREST)):
+        ms, transferred, count = served["cost"][str(most)]
+        print("round trip per patch, 2 ranks, loopback, %s: %.2f ms, %.0f bytes, %.0f "
+              "triangles (builtin %.2f ms)" % (name, ms, transferred, count,
+                                              builtin["cost"][str(most)][0]))
+    print("frames of the remote-rendering view: %.1f frames/s, %.1f with a patch a frame"
+          % tuple(served["fps"]))
 
 
 def distances(centre, values):
     """The sorted squared distances from `centre` to the triangles of `values`."""
+    from vtkmodules.vtkCommonCore import reference
     from vtkmodules.vtkCommonDataModel import vtkTriangle
     triangle, out = vtkTriangle(), []
     for i in range(0, len(values), 9):
         for k in range(3):
             triangle.GetPoints().SetPoint(k, values[i + 3 * k:i + 3 * k + 3])
         closest, pcoords, weights = [0.0] * 3, [0.0] * 3, [0.0] * 3
-        sub, d2 = vtk_reference(0), vtk_reference(0.0)
+        sub, d2 = reference(0), reference(0.0)
         triangle.EvaluatePosition(centre[:3], closest, sub, pcoords, d2, weights)
         out.append(float(d2))
     return sorted(out)
 
-
-def vtk_reference(value):
-    from vtkmodules.vtkCommonCore import reference
-    return reference(value)
 
 if __name__ == "__main__":
     if sys.argv[1:2] == ["client"]:
