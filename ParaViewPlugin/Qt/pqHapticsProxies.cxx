@@ -403,7 +403,7 @@ bool pqHapticsProxies::serverPatch(vtkSMProxy* input, int port, const double cen
   }
   const double ms =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  entry->late = ms > PatchBudgetMilliseconds;
+  entry->late = ms > this->PatchBudget;
   xyz.insert(xyz.end(), entry->last.begin(), entry->last.end());
   ServerPatchFigures& f = this->PatchFigures;
   if (entry->late)

@@ -128,8 +128,10 @@ public:
   };
   const ServerPatchFigures& serverPatchFigures() const { return this->PatchFigures; }
   // A round trip longer than this keeps the last patch for the next frame instead of
-  // asking again (the GUI thread waits for each round trip).
+  // asking again (the GUI thread waits for each round trip); setPatchBudget changes it
+  // (0: every round trip counts as late).
   static constexpr double PatchBudgetMilliseconds = 100.0;
+  void setPatchBudget(double milliseconds) { this->PatchBudget = milliseconds; }
 
   // The malleability the filter's last update used at the grasped vertex, read from
   // the server (works against a remote server); false while there is no grasp yet.
@@ -215,6 +217,7 @@ private:
   };
   std::vector<ServerPatchEntry> ServerPatches;
   ServerPatchFigures PatchFigures;
+  double PatchBudget = PatchBudgetMilliseconds;
   bool DeformationModified = false;
   mutable bool InformationRead = false; // since the filter's last possible update
   bool PaintModified = false;
