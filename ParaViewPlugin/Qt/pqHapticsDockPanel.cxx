@@ -465,6 +465,10 @@ void pqHapticsDockPanel::onFrame()
               .arg(f.serverPatchMilliseconds, 0, 'f', 1)
               .arg(f.serverPatchBytes);
   }
+  if (f.serverPickMilliseconds >= 0.0)
+  {
+    text += QString("\nlast pick on the server: %1 ms").arg(f.serverPickMilliseconds, 0, 'f', 1);
+  }
   if (!f.serverPatchMessage.isEmpty())
   {
     text += "\n" + f.serverPatchMessage;

@@ -514,6 +514,7 @@ void pqHapticsInteractor::onFrame()
     if (hand.kind == Mouse)
     {
       hand.mouse.attach(viewProxy);
+      this->Stats.serverPickMilliseconds = hand.mouse.lastServerPickMilliseconds();
     }
     this->stylusOf(hand, mapping, world);
     this->record(hand, mapping, world);

@@ -63,6 +63,9 @@ public:
     // geometry): its round trips (ms, < 0 when none was asked), the triangles' payload
     // (bytes), and why a patch could not be had or came late (empty: it came in time).
     double serverPatchMilliseconds = -1.0;
+    // The round trip of the mouse's last pick that asked the server's ranks (the view
+    // rendering remotely), ms; < 0 while none did.
+    double serverPickMilliseconds = -1.0;
     long long serverPatchBytes = 0;
     QString serverPatchMessage;
     std::array<long long, 2> recordedSamples{ { 0, 0 } };

@@ -79,7 +79,11 @@ def run_paint(out, read_results, remote_render=False):
             log = f.read()
         assert "GeoShaping test: remote rendering = 1" in log, "the view does not render remotely"
         print("the view renders remotely (the client holds no geometry)")
-    check_session(read_results(prefix + ".txt"), "Edits: 0, redoable 0 (paint stroke redone)")
+    results = read_results(prefix + ".txt")
+    check_session(results, "Edits: 0, redoable 0 (paint stroke redone)")
+    # The dock shows the round trip of the ranks' pick when the view renders remotely.
+    print("dock:", results["label_Figures"])
+    assert ("last pick on the server: " in results["label_Figures"]) == remote_render, results
     painted = {}
     for name in ("paint", "undo", "redo"):
         figures = read_figures("%s-%s.txt" % (prefix, name))
