@@ -355,6 +355,8 @@ void pqHapticsProxies::contactTriangles(const Eigen::Vector3d& world, double rad
 bool pqHapticsProxies::serverPatch(vtkSMProxy* input, int port, const double centre[3],
   double radius, std::size_t nearest, std::vector<double>& xyz)
 {
+  // A question to the server each frame: none of its pushes is an undo step.
+  const geoshaping::undo::Exclude asking;
   this->ServerPatches.erase(std::remove_if(this->ServerPatches.begin(), this->ServerPatches.end(),
                               [](const ServerPatchEntry& e) { return !e.input; }),
     this->ServerPatches.end());
