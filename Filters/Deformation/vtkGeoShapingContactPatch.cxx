@@ -142,7 +142,17 @@ int vtkGeoShapingContactPatch::RequestData(
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
   std::vector<double> mine;
-  if (input && input->GetNumberOfPoints() > 0 && input->GetNumberOfCells() > 0)
+  const bool stylusOk = std::isfinite(this->Center[0]) && std::isfinite(this->Center[1]) &&
+                        std::isfinite(this->Center[2]) && std::isfinite(this->Radius) &&
+                        this->Radius >= 0.0;
+  if (!stylusOk)
+  {
+    // Still joins the gather below: the other processes wait for it.
+    vtkErrorMacro("The stylus (Center " << this->Center[0] << " " << this->Center[1] << " "
+                                        << this->Center[2] << ", Radius " << this->Radius
+                                        << ") is not finite or the radius negative: no triangles.");
+  }
+  if (stylusOk && input && input->GetNumberOfPoints() > 0 && input->GetNumberOfCells() > 0)
   {
     auto* pointSet = vtkPointSet::SafeDownCast(input);
     const vtkMTimeType time =

@@ -11,7 +11,8 @@
  * rank, on the first process, whose Triangles (9 doubles a triangle) the client reads as
  * an information property: one push of the stylus and one pull of the patch a graphics
  * frame when the client holds no geometry. With MaxTriangles only the nearest triangles
- * travel. An empty piece, or one that is not surface
+ * travel. A Center that is not finite or a negative Radius is an error: no triangles
+ * (every process still joins the gather). An empty piece, or one that is not surface
  * cells, selects nothing and still joins the gather. A cell locator per piece is kept
  * and rebuilt when the input's geometry changes. The output is empty.
  */

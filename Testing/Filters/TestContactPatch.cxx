@@ -9,12 +9,14 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkCommand.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
+#include "vtkTestErrorObserver.h"
 #include "vtkTriangle.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -194,6 +196,36 @@ TEST(ContactPatch, TheFilterSendsTheOwnedTrianglesOnce)
   patch->SetCenter(5.0, 5.0, 0.0);
   patch->Update();
   EXPECT_EQ(patch->GetTriangles()->GetNumberOfValues(), 0);
+}
+
+TEST(ContactPatch, AStylusNotFiniteIsAnErrorAndNoTriangles)
+{
+  auto grid = geoshaping::testing::TriangleGridPolyData(20, 10, 1.0, {});
+  const double x = grid->GetPoint(7)[0];
+  vtkNew<vtkGeoShapingContactPatch> patch;
+  vtkNew<vtkTest::ErrorObserver> observer;
+  patch->AddObserver(vtkCommand::ErrorEvent, observer);
+  patch->SetInputData(grid);
+  patch->SetRadius(2.0);
+  for (const std::array<double, 4>& bad :
+    std::vector<std::array<double, 4>>{ { std::nan(""), 5.0, 0.0, 2.0 },
+      { 5.0, 5.0, INFINITY, 2.0 }, { 5.0, 5.0, 0.0, -1.0 }, { 5.0, 5.0, 0.0, std::nan("") } })
+  {
+    observer->Clear();
+    patch->SetCenter(bad[0], bad[1], bad[2]);
+    patch->SetRadius(bad[3]);
+    patch->Update();
+    EXPECT_EQ(patch->GetTriangles()->GetNumberOfValues(), 0);
+    EXPECT_NE(observer->GetErrorMessage().find("no triangles"), std::string::npos)
+      << observer->GetErrorMessage();
+  }
+  EXPECT_EQ(grid->GetPoint(7)[0], x); // the input untouched
+  observer->Clear();
+  patch->SetCenter(5.5, 5.5, 0.0);
+  patch->SetRadius(2.0);
+  patch->Update();
+  EXPECT_EQ(patch->GetTriangles()->GetNumberOfValues(), 9 * 2 * 5 * 5);
+  EXPECT_TRUE(observer->GetErrorMessage().empty());
 }
 
 TEST(ContactPatch, MaxTrianglesKeepsTheNearest)
