@@ -88,17 +88,18 @@ def write_state(path, out, paint_pieces=False):
 
 
 def session(out, tag, steps, state, reverse=False, hand="mouse", ranks=RANKS,
-            remote_render=False):
+            remote_render=False, env=None):
     """One paraview client on a new `ranks`-process server: it connects (--url=cs://),
     or with `reverse` listens and the server connects to it (--url=csrc://, pvserver
     --reverse-connection); ranks=0: a builtin session (one process, no server). The test
     hook loads `state` once connected to every rank, starts the dock with hand 1 `hand`
     (the mouse, or a trace it replays) and plays `steps`. `remote_render`: the hook sets
     the view's Remote Render Threshold to 0 after loading the state, so the server renders
-    and the client holds no geometry (checked here in the client's log). Returns the
-    output prefix. The client and the server are stopped whatever happens."""
+    and the client holds no geometry (checked here in the client's log). `env`: more
+    environment for the client. Returns the output prefix. The client and the server are
+    stopped whatever happens."""
     prefix = out + "-" + tag
-    env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=prefix,
+    env = dict(os.environ, **(env or {}), GEOSHAPING_HAPTICS_TEST_OUTPUT=prefix,
                GEOSHAPING_HAPTICS_REPLAY=hand, GEOSHAPING_HAPTICS_SCRIPT=steps,
                GEOSHAPING_GUI_STATE=state, GEOSHAPING_GUI_SERVER_PROCESSES=str(ranks),
                GEOSHAPING_HAPTICS_TEST_TIMEOUT=str(HOOK_SECONDS))
