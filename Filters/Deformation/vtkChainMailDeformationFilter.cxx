@@ -111,17 +111,40 @@ int vtkChainMailDeformationFilter::RequestData(
   if (n > 0)
   {
     this->WriteOutput(input, output, stale, touched);
+    this->UpdateMarkerMisfit(output);
   }
-  if (this->GetNumberOfInputConnections(1) > 0)
+  const bool obstacles = this->GetNumberOfInputConnections(1) > 0;
+  const bool markers = this->GetNumberOfInputConnections(2) > 0 && !state.Processes;
+  if (obstacles || markers)
   {
-    // What the obstacles held back, for the Information panel (a copy of the input's
-    // field data with one more array; the input's is left as it is).
+    // What the obstacles held back and how far the markers are, for the Information
+    // panel (a copy of the input's field data with more arrays; the input's is left as it
+    // is).
     vtkNew<vtkFieldData> fields;
     fields->ShallowCopy(input->GetFieldData());
-    vtkNew<vtkIdTypeArray> blocked;
-    blocked->SetName("ObstacleBlockedPoints");
-    blocked->InsertNextValue(this->Statistics.NumberOfObstacleBlockedPoints);
-    fields->AddArray(blocked);
+    if (obstacles)
+    {
+      vtkNew<vtkIdTypeArray> blocked;
+      blocked->SetName("ObstacleBlockedPoints");
+      blocked->InsertNextValue(this->Statistics.NumberOfObstacleBlockedPoints);
+      fields->AddArray(blocked);
+    }
+    if (markers)
+    {
+      for (const auto& figure :
+        { std::make_pair("MarkerVerticalMisfitRMS", this->Statistics.MarkerVerticalMisfitRMS),
+          std::make_pair("MarkerVerticalMisfitMax", this->Statistics.MarkerVerticalMisfitMax) })
+      {
+        vtkNew<vtkDoubleArray> value;
+        value->SetName(figure.first);
+        value->InsertNextValue(figure.second);
+        fields->AddArray(value);
+      }
+      vtkNew<vtkIdTypeArray> inside;
+      inside->SetName("MarkersInside");
+      inside->InsertNextValue(this->Statistics.NumberOfMarkersInside);
+      fields->AddArray(inside);
+    }
     output->SetFieldData(fields);
   }
   return 1;

@@ -449,6 +449,18 @@ public:
   vtkIdType GetNumberOfNonFiniteMarkers();
   vtkIdType GetNumberOfMarkersOffSurface();
   vtkIdType GetNumberOfMarkerPinnedPoints();
+  /// How far this update's output is from the markers (any HonourMarkers; one process):
+  /// the RMS and the max |.| of the vertical misfit (Marker Misfit's VerticalMisfit,
+  /// surface minus marker, data units) over the NumberOfMarkersInside markers whose
+  /// vertical line crosses the committed shape, each read on the triangles it crossed
+  /// there (geoshaping::mapped_vertical_misfit: O(markers) a frame, no locator; exact
+  /// while a frame's vertices stay over their markers, always for honoured ones). Also
+  /// in the output's field data as MarkerVerticalMisfitRMS, MarkerVerticalMisfitMax and
+  /// MarkersInside when markers are connected. All 0 without markers, on several
+  /// processes, or when none is inside.
+  double GetMarkerVerticalMisfitRMS() { return this->Statistics.MarkerVerticalMisfitRMS; }
+  double GetMarkerVerticalMisfitMax() { return this->Statistics.MarkerVerticalMisfitMax; }
+  vtkIdType GetNumberOfMarkersInside() { return this->Statistics.NumberOfMarkersInside; }
   ///@}
 
   /// Number of times the adjacency and rest state were (re)built: stays 1 while only
@@ -510,6 +522,9 @@ protected:
     double LastGraspObstacleFraction = std::numeric_limits<double>::quiet_NaN();
     vtkIdType NumberOfObstacleBlockedPoints = 0;
     vtkIdType NumberOfPassObstacleBlockedPoints = 0;
+    double MarkerVerticalMisfitRMS = 0.0;
+    double MarkerVerticalMisfitMax = 0.0;
+    vtkIdType NumberOfMarkersInside = 0;
     double LastGraspDisplacement[3] = { std::numeric_limits<double>::quiet_NaN(),
       std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN() };
   };
@@ -568,6 +583,8 @@ private:
   // or HonourMarkers changed, or with `force` (the committed shape changed); true when
   // the pinned vertices changed.
   bool UpdateMarkers(vtkPointSet* input, bool force);
+  // The frame's misfit figures from `output`'s points and the markers' map.
+  void UpdateMarkerMisfit(vtkPointSet* output);
   // The sliding mask (input array 2 of `input`, the data worked on) into the deformer;
   // false (after an error) when it is refused.
   bool UpdateSliding(vtkPointSet* input);

@@ -67,7 +67,11 @@ struct vtkChainMailDeformationFilter::vtkInternals
   geoshaping::MarkerPins Markers;
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> MarkerSources;
   bool MarkersValid = false;
+  bool MarkersHonoured = false;
   bool MarkersChanged = false;
+  // The markers (any HonourMarkers) mapped to the committed shape's triangles under them,
+  // for the frame's misfit figures (UpdateMarkerMisfit); made with the pins.
+  geoshaping::MarkerCrossingMap MarkerMap;
   // The obstacles the deformer holds were built from (data object, MTime per connection).
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> ObstacleSources;
 

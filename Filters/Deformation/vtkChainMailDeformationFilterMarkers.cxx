@@ -43,18 +43,23 @@ vtkSmartPointer<vtkPointSet> CommittedShape(
 bool vtkChainMailDeformationFilter::UpdateMarkers(vtkPointSet* input, bool force)
 {
   vtkInternals& state = *this->Internals;
+  // Every connection's markers: mapped for the misfit figures whenever connected (on one
+  // process), pinned only with HonourMarkers.
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> sources;
-  if (this->HonourMarkers)
+  const bool honour = this->HonourMarkers;
+  if (honour || !state.Processes)
     for (int i = 0; i < this->GetNumberOfInputConnections(2); ++i)
     {
       vtkDataObject* markers = this->GetInputDataObject(2, i);
       sources.emplace_back(markers, markers ? markers->GetMTime() : 0);
     }
-  if (state.MarkersValid && sources == state.MarkerSources && (!force || sources.empty()))
+  if (state.MarkersValid && sources == state.MarkerSources && honour == state.MarkersHonoured &&
+      (!force || sources.empty()))
   {
     return false;
   }
   state.MarkerSources = sources;
+  state.MarkersHonoured = honour;
   state.MarkersValid = true;
 
   // Every connection's finite and non-finite markers, in order; the z range of the finite.
@@ -77,45 +82,68 @@ bool vtkChainMailDeformationFilter::UpdateMarkers(vtkPointSet* input, bool force
     }
   }
   geoshaping::MarkerPins pins;
+  geoshaping::MarkerCrossingMap map;
   vtkMarkerCrossings crossings;
   const std::size_t count = xyz.size() / 3;
   const double size = input->GetLength();
-  if (count > 0 && input->GetNumberOfPoints() > 0 &&
-      crossings.SetSurface(CommittedShape(input, state.Deformer), zRange))
+  const vtkSmartPointer<vtkPointSet> shape =
+    count > 0 ? CommittedShape(input, state.Deformer) : vtkSmartPointer<vtkPointSet>(input);
+  if (count > 0 && input->GetNumberOfPoints() > 0 && crossings.SetSurface(shape, zRange))
   {
-    vtkPolyData* triangles = crossings.GetTriangles();
+    // The map: each finite marker's crossed triangles, by the input's point ids (the
+    // locator's one line query per marker, made here once).
     vtkNew<vtkIdList> cells, ids;
     Eigen::Vector3d corners[3];
-    pins = geoshaping::pin_markers(
-      xyz.data(), count,
-      [&](const Eigen::Vector3d& m, std::vector<geoshaping::index_t>& out)
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      const Eigen::Vector3d m(xyz.data() + 3 * i);
+      if (!m.allFinite())
+        continue;
+      crossings.Crossed(m.x(), m.y(), cells);
+      for (vtkIdType c = 0; c < cells->GetNumberOfIds(); ++c)
       {
-        crossings.Crossed(m.x(), m.y(), cells);
-        for (vtkIdType c = 0; c < cells->GetNumberOfIds(); ++c)
+        crossings.Corners(cells->GetId(c), ids, corners);
+        for (int k = 0; k < 3; ++k)
+          map.corners.push_back(geoshaping::index_t(crossings.SurfacePointId(ids->GetId(k))));
+      }
+      if (map.corners.size() > map.first.back())
+      {
+        map.xyz.insert(map.xyz.end(), m.data(), m.data() + 3);
+        map.first.push_back(map.corners.size());
+      }
+    }
+    const auto position = [&shape](geoshaping::index_t v)
+    {
+      Eigen::Vector3d x;
+      shape->GetPoint(v, x.data());
+      return x;
+    };
+    if (honour)
+    {
+      // The map's markers come in the order pin_markers asks for them (the finite ones);
+      // the others have no crossing.
+      std::size_t next = 0;
+      pins = geoshaping::pin_markers(
+        xyz.data(), count,
+        [&](const Eigen::Vector3d& m, std::vector<geoshaping::index_t>& out)
         {
-          crossings.Corners(cells->GetId(c), ids, corners);
-          for (int k = 0; k < 3; ++k)
-            out.push_back(geoshaping::index_t(ids->GetId(k)));
-        }
-      },
-      [triangles](geoshaping::index_t v)
-      {
-        Eigen::Vector3d x;
-        triangles->GetPoint(v, x.data());
-        return x;
-      },
-      1e-6 * size);
-    // The triangles' points to the input's.
-    for (geoshaping::index_t& v : pins.vertices)
-      v = geoshaping::index_t(crossings.SurfacePointId(v));
-    std::sort(pins.vertices.begin(), pins.vertices.end());
+          if (next < map.size() && Eigen::Vector3d(map.xyz.data() + 3 * next) == m)
+          {
+            out.insert(out.end(), map.corners.begin() + std::ptrdiff_t(map.first[next]),
+              map.corners.begin() + std::ptrdiff_t(map.first[next + 1]));
+            ++next;
+          }
+        },
+        position, 1e-6 * size);
+    }
   }
-  else
+  else if (honour)
   {
     // No surface to cross (no polygons): every finite marker is outside.
     for (std::size_t i = 0; i < count; ++i)
       ++(Eigen::Vector3d(xyz.data() + 3 * i).allFinite() ? pins.outside : pins.non_finite);
   }
+  state.MarkerMap = std::move(map);
   if (pins.non_finite > 0)
   {
     vtkWarningMacro(<< pins.non_finite << " of " << count
@@ -137,6 +165,24 @@ bool vtkChainMailDeformationFilter::UpdateMarkers(vtkPointSet* input, bool force
   state.MarkersChanged = state.MarkersChanged || changed;
   state.Markers = std::move(pins);
   return changed;
+}
+
+void vtkChainMailDeformationFilter::UpdateMarkerMisfit(vtkPointSet* output)
+{
+  const geoshaping::MarkerCrossingMap& map = this->Internals->MarkerMap;
+  vtkPoints* points = output->GetPoints();
+  if (map.size() == 0 || !points)
+    return;
+  const geoshaping::MisfitSummary summary = geoshaping::mapped_vertical_misfit(map,
+    [points](geoshaping::index_t v)
+    {
+      Eigen::Vector3d x;
+      points->GetPoint(v, x.data());
+      return x;
+    });
+  this->Statistics.MarkerVerticalMisfitRMS = summary.rms;
+  this->Statistics.MarkerVerticalMisfitMax = summary.max;
+  this->Statistics.NumberOfMarkersInside = vtkIdType(summary.inside);
 }
 
 vtkIdType vtkChainMailDeformationFilter::GetNumberOfHonouredMarkers()

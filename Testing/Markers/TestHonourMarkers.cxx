@@ -10,6 +10,7 @@
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -432,4 +433,87 @@ TEST(HonourMarkers, VolumeMeshIsHonouredOnItsBoundary)
   for (const double v : VerticalMisfit(free->GetOutput(), markers))
     largest = std::max(largest, std::abs(v));
   EXPECT_GT(largest, 0.1) << "without HonourMarkers the top face leaves them";
+}
+
+namespace
+{
+// Marker Misfit's MisfitRMS / MisfitMax, but of VerticalMisfit: an independent sum over
+// the inside markers of the filter measured on `surface`.
+std::array<double, 3> VerticalFigures(vtkDataObject* surface, vtkDataObject* markers)
+{
+  double sum = 0.0, max = 0.0, inside = 0.0;
+  for (const double v : VerticalMisfit(surface, markers))
+    if (!std::isnan(v))
+    {
+      sum += v * v;
+      max = std::max(max, std::abs(v));
+      inside += 1.0;
+    }
+  return { inside > 0 ? std::sqrt(sum / inside) : 0.0, max, inside };
+}
+
+double FieldValue(vtkPolyData* out, const char* name)
+{
+  vtkDataArray* a = vtkDataArray::SafeDownCast(out->GetFieldData()->GetAbstractArray(name));
+  return a ? a->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
+}
+} // namespace
+
+// The misfit figures of every frame (issue 38 item 3, the dock's "markers: RMS ..."):
+// markers above and below a tilted plane by known amounts, one outside. At rest the RMS and
+// the max are those amounts' exactly; in the frames of a vertical pull among them and
+// after a commit, they equal Marker Misfit's VerticalMisfit on the output, summed
+// independently; the same in the output's field data; with HonourMarkers on or off.
+TEST(HonourMarkers, FramesReportTheMarkersVerticalMisfit)
+{
+  const auto plane = TiltedPlane();
+  const double size = plane->GetLength();
+  const std::vector<std::array<double, 3>> offsets = { { 9.3, 10.6, 0.5 }, { 11.25, 10.7, -1.25 },
+    { 10.5, 12.2, 2.0 }, { 4.4, 15.1, 0.0 }, { 12.7, 8.05, -0.75 } };
+  Xyz xyz;
+  double sum = 0.0, max = 0.0;
+  for (const auto& o : offsets)
+  {
+    xyz.push_back({ o[0], o[1], Plane(o[0], o[1]) + o[2] });
+    sum += o[2] * o[2];
+    max = std::max(max, std::abs(o[2]));
+  }
+  xyz.push_back({ 40.0, 5.0, 1.0 }); // outside the footprint
+  const auto markers = Points(xyz);
+  for (const bool honour : { false, true })
+  {
+    Shaper shaper(plane, markers, honour);
+    vtkPolyData* out = shaper.Pull(-1, 0, 0, 0);
+    // Surface minus marker: -offset.
+    EXPECT_NEAR(shaper.Filter->GetMarkerVerticalMisfitRMS(), std::sqrt(sum / 5.0), 1e-12 * size);
+    EXPECT_NEAR(shaper.Filter->GetMarkerVerticalMisfitMax(), max, 1e-12 * size);
+    EXPECT_EQ(shaper.Filter->GetNumberOfMarkersInside(), 5);
+    EXPECT_EQ(FieldValue(out, "MarkersInside"), 5.0);
+    for (const double dz : { 1.0, 2.5, -3.0 })
+    {
+      out = shaper.Pull(Vertex(12, 12), 0.0, 0.0, dz);
+      ASSERT_EQ(shaper.Errors(), "");
+      const auto expected = VerticalFigures(out, markers);
+      EXPECT_GT(std::abs(expected[0] - std::sqrt(sum / 5.0)), honour ? -1.0 : 1e-3)
+        << "the pull moved the surface under a marker";
+      EXPECT_NEAR(shaper.Filter->GetMarkerVerticalMisfitRMS(), expected[0], 1e-9 * size) << dz;
+      EXPECT_NEAR(shaper.Filter->GetMarkerVerticalMisfitMax(), expected[1], 1e-9 * size) << dz;
+      EXPECT_EQ(double(shaper.Filter->GetNumberOfMarkersInside()), expected[2]);
+      EXPECT_EQ(
+        FieldValue(out, "MarkerVerticalMisfitRMS"), shaper.Filter->GetMarkerVerticalMisfitRMS());
+      EXPECT_EQ(
+        FieldValue(out, "MarkerVerticalMisfitMax"), shaper.Filter->GetMarkerVerticalMisfitMax());
+    }
+    shaper.Filter->CommitEdit();
+    out = shaper.Pull(Vertex(8, 12), 0.0, 0.0, 1.5);
+    const auto expected = VerticalFigures(out, markers);
+    EXPECT_NEAR(shaper.Filter->GetMarkerVerticalMisfitRMS(), expected[0], 1e-9 * size);
+    EXPECT_NEAR(shaper.Filter->GetMarkerVerticalMisfitMax(), expected[1], 1e-9 * size);
+  }
+  // No markers: no figures, no field data.
+  Shaper none(plane, nullptr, false);
+  vtkPolyData* out = none.Pull(Vertex(10, 11), 0.0, 0.0, 1.0);
+  EXPECT_EQ(none.Filter->GetNumberOfMarkersInside(), 0);
+  EXPECT_EQ(none.Filter->GetMarkerVerticalMisfitRMS(), 0.0);
+  EXPECT_EQ(out->GetFieldData()->GetAbstractArray("MarkersInside"), nullptr);
 }
