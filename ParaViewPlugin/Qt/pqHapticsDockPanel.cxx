@@ -459,6 +459,13 @@ void pqHapticsDockPanel::onFrame()
   {
     text += QString("\nheld back by obstacles: %1").arg(f.obstacleBlockedPoints);
   }
+  if (f.markersInside >= 0)
+  {
+    text += QString("\nmarkers: vertical misfit RMS %1, max %2 (%3 inside)")
+              .arg(f.markerMisfitRMS, 0, 'g', 4)
+              .arg(f.markerMisfitMax, 0, 'g', 4)
+              .arg(f.markersInside);
+  }
   if (f.serverPatchMilliseconds >= 0.0)
   {
     text += QString("\ncontact patch from the server: %1 ms, %2 bytes")

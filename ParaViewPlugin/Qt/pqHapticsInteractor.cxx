@@ -594,6 +594,7 @@ void pqHapticsInteractor::showGrasps(const Eigen::Matrix4d& object)
   const auto drags = [](const Hand& hand)
   { return hand.controller.held() && hand.controller.tool() == interactor::Tool::deform; };
   this->Stats.obstacleBlockedPoints = -1;
+  this->Stats.markersInside = -1;
   if (!this->anyHandDragging())
   {
     for (auto& hand : this->Hands)
@@ -610,6 +611,11 @@ void pqHapticsInteractor::showGrasps(const Eigen::Matrix4d& object)
   if (this->Proxies.hasObstacles())
   {
     this->Stats.obstacleBlockedPoints = this->Proxies.numberOfObstacleBlockedPoints();
+  }
+  long long inside = 0;
+  if (this->Proxies.markerMisfit(this->Stats.markerMisfitRMS, this->Stats.markerMisfitMax, inside))
+  {
+    this->Stats.markersInside = inside;
   }
   for (auto& handPtr : this->Hands)
   {

@@ -54,6 +54,12 @@ public:
     // While a hand drags a surface with obstacles: the vertices they held back this
     // frame (NumberOfObstacleBlockedPoints); -1 otherwise.
     long long obstacleBlockedPoints = -1;
+    // While a hand drags a surface with markers inside its footprint: this frame's
+    // vertical misfit over them (MarkerVerticalMisfitRMS, ...Max, data units) and their
+    // count (NumberOfMarkersInside); markersInside -1 otherwise.
+    double markerMisfitRMS = 0.0;
+    double markerMisfitMax = 0.0;
+    long long markersInside = -1;
     int frames = 0;
     double sceneUnitsPerMetre = 0.0;   // the workspace mapping's scale, first device hand
     long long contactTriangles = 0;    // sent to the servo loop in the last frame (all hands)

@@ -600,6 +600,25 @@ long long pqHapticsProxies::numberOfObstacleBlockedPoints() const
   return vtkSMPropertyHelper(proxy, "NumberOfObstacleBlockedPoints").GetAsIdType();
 }
 
+bool pqHapticsProxies::markerMisfit(double& rms, double& max, long long& inside) const
+{
+  vtkSMProxy* proxy = this->Deformation ? this->Deformation->getProxy() : nullptr;
+  if (!proxy || !proxy->GetProperty("NumberOfMarkersInside"))
+  {
+    return false;
+  }
+  this->readInformation(proxy);
+  const long long count = vtkSMPropertyHelper(proxy, "NumberOfMarkersInside").GetAsIdType();
+  if (count <= 0)
+  {
+    return false;
+  }
+  inside = count;
+  rms = vtkSMPropertyHelper(proxy, "MarkerVerticalMisfitRMS").GetAsDouble();
+  max = vtkSMPropertyHelper(proxy, "MarkerVerticalMisfitMax").GetAsDouble();
+  return true;
+}
+
 void pqHapticsProxies::render()
 {
   this->push();

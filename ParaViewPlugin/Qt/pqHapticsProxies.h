@@ -151,6 +151,10 @@ public:
   bool hasObstacles() const { return !this->obstaclePorts().empty(); }
   // NumberOfObstacleBlockedPoints of the filter's last update, read from the server.
   long long numberOfObstacleBlockedPoints() const;
+  // The filter's last update's misfit figures (MarkerVerticalMisfitRMS, ...Max,
+  // NumberOfMarkersInside), read from the server; false (figures untouched) when no
+  // marker is inside the surface's footprint or the deformation has no markers.
+  bool markerMisfit(double& rms, double& max, long long& inside) const;
   // Pushes the changed properties and brings the deformation's output up to date, without
   // rendering: what the filter did with this frame's pull can then be read before the
   // frame is drawn (render() afterwards finds the pipeline up to date).

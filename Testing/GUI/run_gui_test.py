@@ -336,6 +336,8 @@ def main():
         import dem_checks as scripted
     elif mode.startswith("obstacle_"):
         import obstacle_checks as scripted
+    elif mode.startswith("markers_"):
+        import markers_checks as scripted
     elif mode.startswith("brush_") or mode == "pull_keys":  # brush_checks.SCRIPTS
         import brush_checks as scripted
     if scripted:
