@@ -4,7 +4,9 @@
 // frames interleaved (one without, one with, the order swapped each round) so a loaded
 // machine slows both alike; the median per frame of each. Also the one-off cost of
 // mapping the markers to pins (the first update after the markers change), and a filter
-// with the markers connected but HonourMarkers off (the pipeline's share). Run by hand.
+// with the markers connected but HonourMarkers off (the pipeline's share), and the frame's
+// misfit figures alone (geoshaping::mapped_vertical_misfit over the markers' triangles, the
+// map the filter makes once per change). Run by hand.
 #include "vtkChainMailDeformationFilter.h"
 #include "vtkGocadTSurfReader.h"
 
@@ -12,6 +14,8 @@
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+
+#include "geoshaping/metrics/marker_pins.h"
 
 #include <algorithm>
 #include <chrono>
@@ -65,6 +69,7 @@ int main(int argc, char* argv[])
   {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
+    geoshaping::MarkerCrossingMap crossings; // each marker on the triangle it was put on
     while (points->GetNumberOfPoints() < count)
     {
       vtkIdList* ids = surface->GetCell(cell(random))->GetPointIds();
@@ -79,6 +84,10 @@ int main(int argc, char* argv[])
       for (int c = 0; c < 3; ++c)
         m[c] = (1 - a - b) * p[0][c] + a * p[1][c] + b * p[2][c];
       points->InsertNextPoint(m);
+      crossings.xyz.insert(crossings.xyz.end(), m, m + 3);
+      for (int k = 0; k < 3; ++k)
+        crossings.corners.push_back(geoshaping::index_t(ids->GetId(k)));
+      crossings.first.push_back(crossings.corners.size());
     }
     vtkNew<vtkPolyData> markers;
     markers->SetPoints(points);
@@ -120,6 +129,24 @@ int main(int argc, char* argv[])
       core[0].push_back(without->GetLastDeformationMilliseconds());
       core[1].push_back(with->GetLastDeformationMilliseconds());
     }
+    std::vector<double> figures;
+    vtkPoints* shape = with->GetOutput()->GetPoints();
+    const auto position = [shape](geoshaping::index_t v)
+    {
+      Eigen::Vector3d x;
+      shape->GetPoint(v, x.data());
+      return x;
+    };
+    volatile double sink = 0.0; // the figures are used
+    for (int i = 0; i < rounds; ++i)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      sink = sink + geoshaping::mapped_vertical_misfit(crossings, position).rms;
+      figures.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+          .count());
+    }
+    std::printf("%4d markers: the frame's misfit figures %.4f ms\n", count, Median(figures));
     std::printf("%4d markers (%lld honoured, %lld pinned): update %.4f ms without, %.4f ms "
                 "with (%+.1f%%), %.4f ms connected but off; core frame %.4f / %.4f ms; moved "
                 "%lld vs %lld; update that maps the markers %.3f ms\n",

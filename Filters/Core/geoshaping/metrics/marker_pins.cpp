@@ -44,8 +44,11 @@ MarkerPins pin_markers(const double* markers, std::size_t count,
 std::ptrdiff_t nearest_crossed_triangle(const Eigen::Vector3d& m, const index_t* corners,
   std::size_t count, const std::function<Eigen::Vector3d(index_t)>& position, double& z)
 {
-  std::vector<double> crossings;
-  std::vector<std::ptrdiff_t> candidates;
+  // Kept between calls: a frame asks once per marker, without allocating.
+  thread_local std::vector<double> crossings;
+  thread_local std::vector<std::ptrdiff_t> candidates;
+  crossings.clear();
+  candidates.clear();
   for (std::size_t t = 0; t + 2 < count; t += 3)
   {
     double elevation = 0.0;
