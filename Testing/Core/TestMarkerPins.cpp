@@ -44,3 +44,37 @@ TEST(MarkerPins, TheTriangleOfTheNearestCrossingIsPinned)
   // No markers: nothing pinned.
   EXPECT_TRUE(pin_markers(nullptr, 0, crossed, position, 1e-9).vertices.empty());
 }
+
+// The frame's figures over a map: the same fold, markers 1 above the upper sheet and 2
+// below the lower one, then the upper sheet lifted by 3 at (0, 0) only: its plane at
+// (0.25, 0.25) rises by 3 (1 - 0.25 - 0.25) = 1.5, by hand.
+TEST(MarkerPins, MappedVerticalMisfitReadsEachMarkersNearestCrossing)
+{
+  std::vector<Eigen::Vector3d> vertex = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 10 },
+    { 1, 0, 10 }, { 0, 1, 10 } };
+  const auto position = [&](index_t v) { return vertex[std::size_t(v)]; };
+  MarkerCrossingMap map;
+  for (const double z : { 11.0, -2.0 })
+  {
+    map.xyz.insert(map.xyz.end(), { 0.25, 0.25, z });
+    map.corners.insert(map.corners.end(), { 0, 1, 2, 3, 4, 5 });
+    map.first.push_back(map.corners.size());
+  }
+  MisfitSummary s = mapped_vertical_misfit(map, position);
+  EXPECT_EQ(s.inside, 2u);
+  EXPECT_DOUBLE_EQ(s.rms, std::sqrt((1.0 + 4.0) / 2.0)); // -1 and +2
+  EXPECT_DOUBLE_EQ(s.max, 2.0);
+  vertex[3].z() += 3.0;
+  s = mapped_vertical_misfit(map, position);
+  EXPECT_DOUBLE_EQ(s.rms, std::sqrt((0.5 * 0.5 + 4.0) / 2.0)); // 11.5 - 11 and +2
+  EXPECT_DOUBLE_EQ(s.max, 2.0);
+  // nearest_crossed_triangle names the triangle: the upper for the first marker.
+  double z = 0.0;
+  EXPECT_EQ(nearest_crossed_triangle({ 0.25, 0.25, 11.0 }, map.corners.data(), 6, position, z), 3);
+  EXPECT_DOUBLE_EQ(z, 11.5);
+  EXPECT_EQ(nearest_crossed_triangle({ 0.25, 0.25, 11.0 }, map.corners.data(), 0, position, z), -1);
+  // No markers mapped: nothing inside, zeros.
+  s = mapped_vertical_misfit(MarkerCrossingMap{}, position);
+  EXPECT_EQ(s.inside, 0u);
+  EXPECT_EQ(s.rms, 0.0);
+}
