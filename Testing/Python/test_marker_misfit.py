@@ -1,7 +1,8 @@
 """Marker Misfit through the plugin: markers from a CSV (CSV Reader -> Table To Points)
 and from a GOCAD VSet, against a ChainMail output; the misfit follows a pull. ChainMail
 Deformation's Markers and HonourMarkers: a pull next to honoured wells leaves them on the
-surface."""
+surface. The misfit figures of every frame (MarkerVerticalMisfitRMS / Max,
+NumberOfMarkersInside, the output's field data) against Marker Misfit's VerticalMisfit."""
 import os
 
 from geoshaping_testing import check, load
@@ -69,4 +70,35 @@ for honour in (0, 1):
 check(max(abs(v) for v in shaped[1]) <= 1e-6 * 20 * 2 ** 0.5,
       "honoured wells stay on the surface (%r)" % shaped[1])
 check(max(abs(v) for v in shaped[0]) > 0.1, "unhonoured wells do not (%r)" % shaped[0])
+
+# The frame's figures, HonourMarkers off: the three wells of markers.csv and one outside,
+# against Marker Misfit's VerticalMisfit on the output, at rest and through a vertical pull
+# under the first well.
+far = os.path.join(tmp, "far.csv")
+with open(far, "w") as f:
+    f.write("x,y,z\n10.5,10.25,2\n3.5,4.5,0\n15.25,6.5,-1\n40,40,0\n")
+four = TableToPoints(Input=CSVReader(FileName=[far]), XColumn="x", YColumn="y", ZColumn="z")
+figured = ChainMailDeformation(Input=horizon, Markers=[four])  # noqa: F405
+for grasp, dz in ((-1, 0.0), (10 * 21 + 10, 1.5), (10 * 21 + 10, 3.0)):
+    figured.GraspPointId = grasp
+    figured.Displacement = [0.0, 0.0, dz]
+    measured = sm.Fetch(MarkerMisfit(Input=figured, Markers=four))  # noqa: F405
+    vertical = measured.GetPointData().GetArray("VerticalMisfit")
+    inside = measured.GetPointData().GetArray("Inside")
+    values = [vertical.GetValue(i) for i in range(4) if inside.GetValue(i)]
+    want = ((sum(v * v for v in values) / len(values)) ** 0.5, max(abs(v) for v in values))
+    figured.UpdatePropertyInformation()
+    got = (figured.GetProperty("MarkerVerticalMisfitRMS").GetData(),
+           figured.GetProperty("MarkerVerticalMisfitMax").GetData())
+    count = figured.GetProperty("NumberOfMarkersInside").GetData()
+    check(count == 3 and len(values) == 3, "three wells inside (%r)" % count)
+    check(abs(got[0] - want[0]) <= 1e-12 and abs(got[1] - want[1]) <= 1e-12,
+          "the figures at dz %g are Marker Misfit's (%r, %r)" % (dz, got, want))
+    fields = sm.Fetch(figured).GetFieldData()
+    check(fields.GetArray("MarkerVerticalMisfitRMS").GetValue(0) == got[0]
+          and fields.GetArray("MarkersInside").GetValue(0) == 3, "and in the field data")
+    if dz == 0.0:
+        check(abs(got[0] - (5.0 / 3.0) ** 0.5) < 1e-12 and got[1] == 2.0,
+              "at rest: the wells' offsets 2, 0, 1 (%r)" % (got,))
+check(got[0] < (5.0 / 3.0) ** 0.5, "the pull brought the surface nearer (%r)" % (got,))
 print("marker misfit: ok")
