@@ -431,8 +431,9 @@ public:
   /// markers with a NaN or infinite coordinate (skipped), markers outside the surface's
   /// footprint (not honoured), markers off the surface by more than 1e-6 of its size
   /// (their misfit kept as it is). Grasping a vertex under a marker is refused as
-  /// grasping a pinned vertex is. With HonourMarkers off, or no markers, the filter is
-  /// as without this input, bit for bit.
+  /// grasping a pinned vertex is. With HonourMarkers off, or no markers, the output's
+  /// points are as without this input, bit for bit (connected markers add the misfit
+  /// figures below to its field data).
   void AddMarkersConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(2, output); }
   void SetMarkersConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
   void SetMarkersData(vtkDataObject* data) { this->SetInputDataObject(2, data); }
