@@ -464,6 +464,21 @@ public:
   vtkIdType GetNumberOfMarkersInside() { return this->Statistics.NumberOfMarkersInside; }
   ///@}
 
+  ///@{
+  /// Snap to markers (docs/markers.md, "Snap to markers"; the rule is the core's
+  /// geoshaping/edit/marker_snap.h): an edit command, as CommitEdit is. For each marker
+  /// inside the footprint, in order, the vertex of its crossed triangle nearest to its
+  /// vertical crossing is grasped and moved onto it by one ChainMail frame, the markers
+  /// already snapped pinned (and the PinnedArray's pins; not the honoured markers'), and
+  /// the whole is committed as ONE edit (one record, one UndoEdit). Each snapped marker is
+  /// then the position of a vertex (within a few ulps). Refused with an error, nothing
+  /// changed: on several processes, before an update, without a marker inside. The last
+  /// snap's counts: markers snapped and skipped (corners pinned, an obstacle in the way).
+  void SnapToMarkers();
+  vtkGetMacro(LastSnappedMarkers, vtkIdType);
+  vtkGetMacro(LastSkippedMarkers, vtkIdType);
+  ///@}
+
   /// Number of times the adjacency and rest state were (re)built: stays 1 while only
   /// the grasp, displacement, queue or curves change.
   vtkGetMacro(NumberOfRebuilds, int);
@@ -499,6 +514,8 @@ protected:
   int RelaxationIterations = 0;
   double ObstacleClearance = 0.0;
   bool HonourMarkers = false;
+  vtkIdType LastSnappedMarkers = 0;
+  vtkIdType LastSkippedMarkers = 0;
 
   // What the last update did (the information properties above), in one place: every
   // RequestData starts from FrameStatistics{} and each stage fills its part.

@@ -72,6 +72,8 @@ struct vtkChainMailDeformationFilter::vtkInternals
   // The markers (any HonourMarkers) mapped to the committed shape's triangles under them,
   // for the frame's misfit figures (UpdateMarkerMisfit); made with the pins.
   geoshaping::MarkerCrossingMap MarkerMap;
+  // The vertices shown before a SnapToMarkers, rewritten at the next update.
+  std::vector<geoshaping::index_t> SnapStale;
   // The obstacles the deformer holds were built from (data object, MTime per connection).
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> ObstacleSources;
 

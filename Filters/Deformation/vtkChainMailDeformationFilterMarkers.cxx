@@ -5,6 +5,8 @@
 #include "vtkMarkerCrossings.h"
 #include "vtkPolyData.h"
 
+#include "geoshaping/edit/marker_snap.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -183,6 +185,64 @@ void vtkChainMailDeformationFilter::UpdateMarkerMisfit(vtkPointSet* output)
   this->Statistics.MarkerVerticalMisfitRMS = summary.rms;
   this->Statistics.MarkerVerticalMisfitMax = summary.max;
   this->Statistics.NumberOfMarkersInside = vtkIdType(summary.inside);
+}
+
+void vtkChainMailDeformationFilter::SnapToMarkers()
+{
+  vtkInternals& state = *this->Internals;
+  this->LastSnappedMarkers = 0;
+  this->LastSkippedMarkers = 0;
+  if (state.Processes)
+  {
+    vtkErrorMacro("SnapToMarkers: not on data split across processes yet; nothing changed.");
+    return;
+  }
+  if (!state.GeometryValid || state.Edits.pending())
+  {
+    vtkErrorMacro("SnapToMarkers: the filter is not up to date (update it first); nothing "
+                  "changed.");
+    return;
+  }
+  if (state.MarkerMap.size() == 0)
+  {
+    vtkErrorMacro("SnapToMarkers: no marker inside the surface's footprint (connect well "
+                  "markers to the Markers input); nothing changed.");
+    return;
+  }
+  // The user's pins are kept; the honoured markers' are not (their markers are the
+  // targets): they are made again from the snapped shape at the next update.
+  std::vector<std::uint8_t> pins;
+  if (vtkDataArray* source = state.PinSource)
+  {
+    pins.resize(std::size_t(source->GetNumberOfTuples()));
+    for (vtkIdType i = 0; i < source->GetNumberOfTuples(); ++i)
+      pins[std::size_t(i)] = source->GetComponent(i, 0) != 0.0;
+  }
+  // The frame shown until now is rewritten at the next update.
+  const auto& shown = state.Deformer.moved();
+  state.SnapStale.insert(state.SnapStale.end(), shown.begin(), shown.end());
+  const geoshaping::MarkerSnap snap =
+    geoshaping::snap_to_markers(state.Deformer, state.MarkerMap, pins);
+  this->LastSnappedMarkers = vtkIdType(snap.snapped);
+  this->LastSkippedMarkers = vtkIdType(snap.skipped);
+  if (snap.skipped > 0)
+  {
+    vtkWarningMacro("SnapToMarkers: " << snap.skipped << " of " << state.MarkerMap.size()
+                                      << " markers not snapped (their triangle's corners are "
+                                         "pinned, or an obstacle stopped the pull).");
+  }
+  geoshaping::EditRecipe recipe = vtkChainMailDeformationFilterDetail::Recipe(this, -1);
+  recipe.displacement.setZero(); // not a grasp's: the net result is the record
+  if (snap.snapped == 0 || !state.Edits.commit(state.Deformer, recipe, snap.vertices,
+                             snap.displacements, state.Placement()))
+  {
+    vtkErrorMacro("SnapToMarkers: no marker could be snapped; nothing changed.");
+    return;
+  }
+  state.Invalidate(vtkInternals::Stale::Links);
+  this->Statistics.LastGraspPointId = -1;
+  this->Statistics.LastGraspMalleability = std::numeric_limits<double>::quiet_NaN();
+  this->Modified();
 }
 
 vtkIdType vtkChainMailDeformationFilter::GetNumberOfHonouredMarkers()

@@ -374,6 +374,8 @@ std::vector<int> vtkChainMailDeformationFilter::UpdateEdits(std::vector<int>& st
       vtkErrorMacro("EditHistory: " << error << "; the edits before it are applied.");
     }
   }
+  stale.insert(stale.end(), state.SnapStale.begin(), state.SnapStale.end());
+  state.SnapStale.clear();
   IdList touched = state.Edits.take_touched();
   if (!touched.empty())
   {

@@ -452,7 +452,7 @@ std::array<double, 3> VerticalFigures(vtkDataObject* surface, vtkDataObject* mar
   return { inside > 0 ? std::sqrt(sum / inside) : 0.0, max, inside };
 }
 
-double FieldValue(vtkPolyData* out, const char* name)
+double FieldValue(vtkDataObject* out, const char* name)
 {
   vtkDataArray* a = vtkDataArray::SafeDownCast(out->GetFieldData()->GetAbstractArray(name));
   return a ? a->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
@@ -516,4 +516,67 @@ TEST(HonourMarkers, FramesReportTheMarkersVerticalMisfit)
   EXPECT_EQ(none.Filter->GetNumberOfMarkersInside(), 0);
   EXPECT_EQ(none.Filter->GetMarkerVerticalMisfitRMS(), 0.0);
   EXPECT_EQ(out->GetFieldData()->GetAbstractArray("MarkersInside"), nullptr);
+}
+
+// Snap to markers (issue 38 item 3): markers above and below a tilted plane by up to 2;
+// one SnapToMarkers is one edit after which each marker is within 1e-6 of the size of
+// the surface (Marker Misfit's VerticalMisfit and Misfit on the output); UndoEdit gives the
+// shape before it bit for bit, RedoEdit the snapped one again. Refused without markers.
+TEST(HonourMarkers, SnapToMarkersIsOneEditThatUndoesBitForBit)
+{
+  const auto plane = TiltedPlane();
+  const double size = plane->GetLength();
+  const Xyz xyz = { { 9.3, 10.6, Plane(9.3, 10.6) + 0.5 },
+    { 11.25, 10.7, Plane(11.25, 10.7) - 1.25 }, { 10.5, 12.2, Plane(10.5, 12.2) + 2.0 },
+    { 4.4, 15.1, Plane(4.4, 15.1) + 0.25 }, { 12.7, 8.05, Plane(12.7, 8.05) - 0.75 },
+    { 40.0, 5.0, 1.0 } }; // the last outside
+  const auto markers = Points(xyz);
+  for (const bool honour : { false, true })
+  {
+    Shaper shaper(plane, markers, honour);
+    shaper.Observer->Clear();
+    shaper.Pull(Vertex(3, 3), 0.0, 0.0, 1.0); // an edit before the snap
+    shaper.Filter->CommitEdit();
+    const auto committed = Coordinates(shaper.Pull(-1, 0, 0, 0));
+    shaper.Filter->SnapToMarkers();
+    EXPECT_EQ(shaper.Errors(), "");
+    EXPECT_EQ(shaper.Filter->GetLastSnappedMarkers(), 5);
+    EXPECT_EQ(shaper.Filter->GetLastSkippedMarkers(), 0);
+    EXPECT_EQ(shaper.Filter->GetNumberOfEdits(), 2) << "one edit for the snap";
+    vtkPolyData* out = shaper.Pull(-1, 0, 0, 0);
+    ASSERT_TRUE(AllFinite(out));
+    const auto snapped = Coordinates(out);
+    const auto vertical = VerticalMisfit(out, markers);
+    for (std::size_t k = 0; k < 5; ++k)
+      EXPECT_LE(std::abs(vertical[k]), 1e-6 * size) << "marker " << k << " honour " << honour;
+    EXPECT_TRUE(std::isnan(vertical[5])) << "the marker outside stays outside";
+    vtkNew<vtkMarkerMisfitFilter> normal;
+    normal->SetInputData(0, out);
+    normal->SetMarkersData(markers);
+    normal->Update();
+    EXPECT_LE(FieldValue(normal->GetOutput(), "MisfitMax"), 1e-6 * size);
+    EXPECT_LE(shaper.Filter->GetMarkerVerticalMisfitMax(), 1e-6 * size) << "the dock's figure";
+    EXPECT_NE(snapped, committed);
+
+    shaper.Filter->UndoEdit();
+    EXPECT_EQ(Coordinates(shaper.Pull(-1, 0, 0, 0)), committed) << "undo: bit for bit";
+    EXPECT_NEAR(shaper.Filter->GetMarkerVerticalMisfitMax(), 2.0, 1e-9 * size);
+    shaper.Filter->RedoEdit();
+    EXPECT_EQ(Coordinates(shaper.Pull(-1, 0, 0, 0)), snapped) << "redo: the snap again";
+    shaper.Filter->UndoEdit();
+    shaper.Filter->UndoEdit();
+    EXPECT_EQ(Coordinates(shaper.Pull(-1, 0, 0, 0)), Coordinates(plane));
+  }
+  // No markers: refused, nothing changed.
+  Shaper none(plane, nullptr, false);
+  none.Pull(-1, 0, 0, 0);
+  none.Filter->SnapToMarkers();
+  EXPECT_NE(none.Errors().find("SnapToMarkers: no marker inside"), std::string::npos)
+    << none.Errors();
+  EXPECT_EQ(none.Filter->GetNumberOfEdits(), 0);
+  EXPECT_EQ(Coordinates(none.Pull(-1, 0, 0, 0)), Coordinates(plane));
+  // Before any update: refused.
+  Shaper early(plane, markers, false);
+  early.Filter->SnapToMarkers();
+  EXPECT_NE(early.Errors().find("not up to date"), std::string::npos) << early.Errors();
 }
