@@ -267,6 +267,9 @@ QWidget* pqHapticsDockPanel::buildEdits()
       "Redo the last undone edit (Alt+Shift+Z or Alt+Y while the interactor runs)" },
     { &this->Reset, "Reset", "ResetEdits", interactor::EditCommand::reset,
       "Back to the original surface; every edit stays redoable" },
+    { &this->Snap, "Snap to markers", "SnapToMarkers", interactor::EditCommand::snap,
+      "Move the surface onto the deformation's markers through ChainMail, as one edit "
+      "(one Undo)" },
   };
   int column = 0;
   for (const auto& b : buttons)
@@ -282,7 +285,7 @@ QWidget* pqHapticsDockPanel::buildEdits()
   this->Edits = new QLabel("Edits: 0", box);
   this->Edits->setObjectName("Edits");
   this->Edits->setWordWrap(true); // messages wrap instead of widening the dock
-  grid->addWidget(this->Edits, 1, 0, 1, 3);
+  grid->addWidget(this->Edits, 1, 0, 1, column);
 
   // Alt, not Ctrl: ParaView's own undo stack owns Ctrl+Z / Ctrl+Y (Edit menu). Enabled
   // only while the interactor runs, so they never shadow anything otherwise.

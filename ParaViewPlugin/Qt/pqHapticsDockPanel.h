@@ -66,6 +66,7 @@ private:
   QPushButton* Undo = nullptr;
   QPushButton* Redo = nullptr;
   QPushButton* Reset = nullptr;
+  QPushButton* Snap = nullptr;
   QLabel* Edits = nullptr;
   QList<QShortcut*> Shortcuts;
 };

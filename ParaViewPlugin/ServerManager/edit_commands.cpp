@@ -6,7 +6,7 @@ namespace geoshaping::interactor
 namespace
 {
 constexpr EditCommand all_commands[] = { EditCommand::commit, EditCommand::undo, EditCommand::redo,
-  EditCommand::reset };
+  EditCommand::reset, EditCommand::snap };
 }
 
 const char* command_property(EditCommand command)
@@ -21,6 +21,8 @@ const char* command_property(EditCommand command)
       return "RedoEdit";
     case EditCommand::reset:
       return "ResetEdits";
+    case EditCommand::snap:
+      return "SnapToMarkers";
   }
   return "";
 }
@@ -67,6 +69,7 @@ EditResult follow_edit(EditCommand command, EditProxy& proxy)
   {
     case EditCommand::commit:
     case EditCommand::redo:
+    case EditCommand::snap:
     {
       const std::string record = proxy.last_edit();
       if (server == static_cast<int>(records.size()) + 1 && !record.empty())
@@ -76,7 +79,9 @@ EditResult follow_edit(EditCommand command, EditProxy& proxy)
       }
       else
       {
-        result.message = command == EditCommand::commit ? "nothing to commit" : "nothing to redo";
+        result.message = command == EditCommand::commit ? "nothing to commit"
+                         : command == EditCommand::snap ? "no marker snapped"
+                                                        : "nothing to redo";
       }
       break;
     }

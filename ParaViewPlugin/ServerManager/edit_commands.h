@@ -17,10 +17,12 @@ enum class EditCommand
   commit,
   undo,
   redo,
-  reset
+  reset,
+  snap // SnapToMarkers: one edit the filter makes, followed as a commit is
 };
 
-// The proxy property of a command: "CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits";
+// The proxy property of a command: "CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits",
+// "SnapToMarkers";
 // is_edit_command() is its inverse (false for any other name).
 const char* command_property(EditCommand command);
 bool is_edit_command(const std::string& property, EditCommand& command);
@@ -51,7 +53,7 @@ struct EditResult
 };
 
 // Once the server has run `command`, brings the client's list in step:
-//   commit, redo: append LastEdit if the server's list is now one longer than the
+//   commit, redo, snap: append LastEdit if the server's list is now one longer than the
 //                 client's (a commit with nothing to commit leaves LastEdit at the
 //                 previous edit and the server's list unchanged);
 //   undo:         drop the last record (nothing when the list is empty);

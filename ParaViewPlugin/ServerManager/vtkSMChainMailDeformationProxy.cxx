@@ -124,7 +124,8 @@ void vtkSMChainMailDeformationProxy::PropertyPushed(vtkObject*, unsigned long, v
   this->LastEditMessage = result.message;
   if (result.changed)
   {
-    static const char* const labels[] = { "Commit Edit", "Undo Edit", "Redo Edit", "Reset Edits" };
+    static const char* const labels[] = { "Commit Edit", "Undo Edit", "Redo Edit", "Reset Edits",
+      "Snap to Markers" };
     geoshaping::undo::Step step(labels[static_cast<int>(command)]);
     vtkNew<vtkSMEditHistoryUndoElement> element;
     element->Set(this, before, edits.history());

@@ -5,7 +5,10 @@ dock, drags the plateau up, vertically (key Z). Checked from the hook's snapshot
 (TestHook/pqHapticsTestScript.h): while dragging the dock says "markers: vertical misfit
 RMS r, max m (n inside)" with r, m and n those computed here from the shown surface (a
 marker over a vertex reads it where the vertex is: a vertical pull keeps x and y), and
-different from the rest's 0.5; the release clears the line."""
+different from the rest's 0.5; the release clears the line. Then the dock's "Snap to
+markers": one more edit, after which a vertex of the shown surface lies at each marker
+(within 1e-6 of the surface's size); its Undo gives the released shape bit for bit, its
+Redo the snapped one."""
 import os
 import re
 
@@ -14,7 +17,8 @@ import numpy as np
 from brush_checks import snapshot
 
 SCRIPT = ("wait; press 0.4 0.6; key Z; move 0.4 0.65; move 0.4 0.7; move 0.4 0.75; wait; "
-          "snapshot held; release; wait; snapshot released")
+          "snapshot held; release; wait; snapshot released; snap; wait; snapshot snapped; "
+          "undo; wait; snapshot undone; redo; wait; snapshot redone")
 LINE = re.compile(r"markers: vertical misfit RMS (\S+), max (\S+) \((\d+) inside\)")
 
 
@@ -63,3 +67,19 @@ def check(mode, out):
     print("released: edits %s, dock %r" % (released["edit_history"], released["label_Figures"]))
     assert released["edit_history"] == "1", released
     assert "markers:" not in released["label_Figures"], released
+
+    from gui_setup_markers_rule import markers
+
+    snapped, snapped_points = snapshot(out, "snapped")
+    shape = snapped_points[:, 3:6]
+    size = np.linalg.norm(shape.max(axis=0) - shape.min(axis=0))
+    gaps = [np.linalg.norm(shape - np.array(m), axis=1).min() for _, m in markers(rest)]
+    print("snapped: edits %s, dock %r; farthest marker from a vertex %.3g (size %.4g)" % (
+        snapped["edit_history"], snapped["label_Edits"], max(gaps), size))
+    assert snapped["edit_history"] == "2", snapped
+    assert max(gaps) <= 1e-6 * size, max(gaps)
+    _, before = snapshot(out, "released")
+    _, undone = snapshot(out, "undone")
+    _, redone = snapshot(out, "redone")
+    assert np.array_equal(undone[:, 3:6], before[:, 3:6]), "the dock's Undo is not bit for bit"
+    assert np.array_equal(redone[:, 3:6], shape), "the dock's Redo is not the snap"

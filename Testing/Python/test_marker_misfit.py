@@ -2,7 +2,8 @@
 and from a GOCAD VSet, against a ChainMail output; the misfit follows a pull. ChainMail
 Deformation's Markers and HonourMarkers: a pull next to honoured wells leaves them on the
 surface. The misfit figures of every frame (MarkerVerticalMisfitRMS / Max,
-NumberOfMarkersInside, the output's field data) against Marker Misfit's VerticalMisfit."""
+NumberOfMarkersInside, the output's field data) against Marker Misfit's VerticalMisfit;
+SnapToMarkers as one edit, undone and redone."""
 import os
 
 from geoshaping_testing import check, load
@@ -101,4 +102,31 @@ for grasp, dz in ((-1, 0.0), (10 * 21 + 10, 1.5), (10 * 21 + 10, 3.0)):
         check(abs(got[0] - (5.0 / 3.0) ** 0.5) < 1e-12 and got[1] == 2.0,
               "at rest: the wells' offsets 2, 0, 1 (%r)" % (got,))
 check(got[0] < (5.0 / 3.0) ** 0.5, "the pull brought the surface nearer (%r)" % (got,))
+
+# Snap to markers, a command property as CommitEdit is: one edit (EditHistory one longer),
+# after which the three wells are on the surface; UndoEdit gives the shape before it bit
+# for bit, RedoEdit the snapped one.
+figured.GraspPointId = -1
+figured.Displacement = [0.0, 0.0, 0.0]
+points = sm.Fetch(figured).GetPoints()
+before = [points.GetPoint(i) for i in range(points.GetNumberOfPoints())]
+figured.SMProxy.InvokeCommand("SnapToMarkers")
+check(len(figured.EditHistory) == 1, "the snap is one edit (%d)" % len(figured.EditHistory))
+measured = sm.Fetch(MarkerMisfit(Input=figured, Markers=four))  # noqa: F405
+vertical = measured.GetPointData().GetArray("VerticalMisfit")
+snapped_misfit = [vertical.GetValue(i) for i in range(3)]
+check(max(abs(v) for v in snapped_misfit) <= 1e-6 * 20 * 2 ** 0.5,
+      "snapped: the wells are on the surface (%r)" % snapped_misfit)
+points = sm.Fetch(figured).GetPoints()
+snapped = [points.GetPoint(i) for i in range(points.GetNumberOfPoints())]
+figured.UpdatePropertyInformation()
+check(figured.GetProperty("LastSnappedMarkers").GetData() == 3, "three wells snapped")
+figured.SMProxy.InvokeCommand("UndoEdit")
+points = sm.Fetch(figured).GetPoints()
+check([points.GetPoint(i) for i in range(points.GetNumberOfPoints())] == before,
+      "undo gives the shape before the snap bit for bit")
+figured.SMProxy.InvokeCommand("RedoEdit")
+points = sm.Fetch(figured).GetPoints()
+check([points.GetPoint(i) for i in range(points.GetNumberOfPoints())] == snapped,
+      "redo gives the snap again")
 print("marker misfit: ok")

@@ -129,10 +129,11 @@ bool pqHapticsTestScript::step(std::chrono::steady_clock::time_point since)
       radius->setValue(words[1].toDouble());
     }
   }
-  else if (verb == "undo" || verb == "redo")
+  else if (verb == "undo" || verb == "redo" || verb == "snap")
   {
-    if (auto* button =
-          this->Dock->findChild<QPushButton*>(verb == "undo" ? "UndoEdit" : "RedoEdit"))
+    if (auto* button = this->Dock->findChild<QPushButton*>(verb == "undo"   ? "UndoEdit"
+                                                           : verb == "redo" ? "RedoEdit"
+                                                                            : "SnapToMarkers"))
     {
       button->click();
     }
