@@ -1,13 +1,14 @@
 #pragma once
-// @brief Preparing the contact triangles of a SceneSnapshot on the graphics side: only the
-// triangles nearest to the stylus are sent, since the servo thread tests every one each
-// tick. Their winding does not matter: the proxy (proxy.h) treats them as two-sided.
+// @brief The triangles nearest a point: the contact patch the graphics side sends the
+// haptic servo (only the triangles nearest the stylus, since the servo tests every one
+// each tick) and each rank's part of it on a server (vtkGeoShapingContactPatch). Their
+// winding does not matter: the haptic proxy treats them as two-sided.
 #include <Eigen/Core>
 
 #include <cstddef>
 #include <vector>
 
-namespace geoshaping::haptics
+namespace geoshaping
 {
 
 // Keeps the `max_triangles` triangles nearest to p (distance from p to the triangle),
@@ -15,4 +16,4 @@ namespace geoshaping::haptics
 void keep_nearest(
   std::vector<Eigen::Vector3d>& triangles, const Eigen::Vector3d& p, std::size_t max_triangles);
 
-} // namespace geoshaping::haptics
+} // namespace geoshaping
