@@ -378,7 +378,6 @@ public:
   /// mask that is not numeric point data with one value per point, and on several
   /// processes a rigid region owned by several of them or the refinement with obstacles.
   void AddObstacleConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
-  void SetObstacleConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void AddObstacleData(vtkDataObject* data) { this->AddInputDataObject(1, data); }
   void RemoveAllObstacleConnections() { this->SetInputConnection(1, nullptr); }
   int GetNumberOfObstacleConnections() { return this->GetNumberOfInputConnections(1); }

@@ -36,14 +36,8 @@ public:
   Eigen::Vector3d control(const Eigen::Vector3d& position, bool readable,
     const ForceResult& rendered, bool hold, const ForceParams& params, const DeviceLimits& limits);
 
-  // J: the rendered force's work on the stylus observed so far (quantised positions),
-  // and the scene's work it allows.
-  double observed_work() const { return this->work_; }
-  double scene_work() const { return this->scene_work_; }
-  // N: the damper's force in the last force sent.
-  const Eigen::Vector3d& damping_force() const { return this->damper_; }
-
 private:
+  // What control() carries from tick to tick: W is work_, C scene_work_, f damper_.
   Eigen::Vector3d last_position_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d last_force_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d damper_ = Eigen::Vector3d::Zero();
