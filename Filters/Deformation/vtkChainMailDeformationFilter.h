@@ -503,9 +503,10 @@ private:
   // Geometry and topology into the deformer, when they changed (on any process).
   bool UpdateGeometry(vtkPointSet* input);
   // The deformer over this process's piece of a new geometry, its points numbered by
-  // `gids` or, when no process has any, by coordinates (Parallel.cxx).
+  // their GlobalIds (`globalIds`) or, when no process has any, by coordinates
+  // (vtkGeoShapingAdapter::IdentifyPiece).
   bool SetUpPiece(
-    vtkPointSet* input, const double* xyz, geoshaping::Adjacency adjacency, vtkDataArray* gids);
+    vtkPointSet* input, const double* xyz, geoshaping::Adjacency adjacency, bool globalIds);
   void BuildOutputCaches(vtkPointSet* input, const double* xyz);
   // The grasped point's name (GraspPointId's naming), -1 for none: GraspPointId, or the
   // point nearest GraspPosition over every process.

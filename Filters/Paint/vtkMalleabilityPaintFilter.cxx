@@ -1,6 +1,5 @@
 #include "vtkMalleabilityPaintFilter.h"
 
-#include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkGeoShapingAdapter.h"
 #include "vtkGeoShapingControllerExchange.h"
@@ -43,6 +42,15 @@ namespace
 {
 // The message tags of this filter's exchange (not the deformation filter's, 914300).
 constexpr int PaintTag = 914400;
+// What a refusal on several processes leaves, and what cells BuildAdjacency skipped cost.
+constexpr const char* NoGeodesicDab = "no geodesic dab is applied on any process.";
+constexpr const char* GeodesicSkips = "geodesic paths do not follow their edges.";
+
+double MillisecondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+    .count();
+}
 
 bool SameDab(const geoshaping::Dab& a, const geoshaping::Dab& b)
 {
@@ -332,13 +340,39 @@ int vtkMalleabilityPaintFilter::RequestData(
     vtkErrorMacro("Input and output must be vtkPointSet.");
     return 0;
   }
+  // The same stages on one process and on several (geodesic dabs, docs/mpi.md): on several
+  // the ghost ring is made and every refusal agreed, each stage collective.
+  const char* name = this->SelectInput(input, output);
+  if (!name || !this->CheckData(input, name))
+  {
+    return 1;
+  }
+  if (!this->PaintPins && !this->Distributed() && this->PaintIncrementally(input, output, name))
+  {
+    ++this->NumberOfIncrementalUpdates;
+    this->Internals->KeepOutput(output);
+    return 1;
+  }
+  vtkSmartPointer<vtkFloatArray> painted = this->StartingArray(input, name);
+  if (!this->ApplyDabs(input, painted->GetPointer(0)))
+  {
+    this->KeepShownOutput(input, output);
+    return 1;
+  }
+  this->ApplyPointDabs(input->GetNumberOfPoints(), painted->GetPointer(0));
+  this->WriteOutput(input, output, painted);
+  return 1;
+}
+
+const char* vtkMalleabilityPaintFilter::SelectInput(vtkPointSet*& input, vtkPointSet* output)
+{
   // Geodesic dabs on several processes need the ghost ring: made here when the input lacks
   // it (collective), and the output is then the input with the ring, painted.
-  const bool distributed = this->Distributed();
   std::string ringError;
-  vtkPointSet* ringed = distributed ? this->Internals->GhostRing.Ensure(input,
-                                        vtkMultiProcessController::GetGlobalController(), ringError)
-                                    : input;
+  vtkPointSet* ringed = this->Distributed()
+                          ? this->Internals->GhostRing.Ensure(
+                              input, vtkMultiProcessController::GetGlobalController(), ringError)
+                          : input;
   input = ringed ? ringed : input;
   output->ShallowCopy(input);
   this->NumberOfAppliedDabs = 0;
@@ -351,7 +385,7 @@ int vtkMalleabilityPaintFilter::RequestData(
   {
     vtkErrorMacro(<< (this->PaintPins ? "PinnedArrayName" : "MalleabilityArrayName")
                   << " is empty; output is the input.");
-    return 1;
+    return nullptr;
   }
   if (this->PaintPins && this->MalleabilityArrayName &&
       strcmp(name, this->MalleabilityArrayName) == 0)
@@ -359,31 +393,35 @@ int vtkMalleabilityPaintFilter::RequestData(
     vtkErrorMacro("PaintPins would overwrite the malleability array '"
                   << name << "' with a pin mask: give PinnedArrayName another name; output "
                   << "is the input.");
-    return 1;
+    return nullptr;
   }
+  if (!ringed) // the same on every process
+  {
+    vtkErrorMacro(<< ringError << "; output is the input.");
+    return nullptr;
+  }
+  return name;
+}
+
+bool vtkMalleabilityPaintFilter::CheckData(vtkPointSet* input, const char* name)
+{
   const vtkIdType n = input->GetNumberOfPoints();
   // With several processes painting geodesically, a process that stops alone would leave
   // the others waiting in a collective: the data checks are agreed on by all.
   bool badData = false;
-  if (!ringed) // the same on every process
-  {
-    vtkErrorMacro(<< ringError << "; output is the input.");
-    return 1;
-  }
-  else if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
+  if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
   {
     vtkErrorMacro("Input has " << n << " points; painting supports at most 2^31 - 1.");
     badData = true;
   }
-  vtkAbstractArray* named = input->GetPointData()->GetAbstractArray(name);
-  vtkDataArray* source = vtkDataArray::SafeDownCast(named);
+  vtkDataArray* source = input->GetPointData()->GetArray(name);
   if (!badData && source && source->GetNumberOfTuples() != n)
   {
     vtkErrorMacro("Point array '" << name << "' has " << source->GetNumberOfTuples()
                                   << " values for " << n << " points; output is the input.");
     badData = true;
   }
-  if (distributed)
+  if (this->Distributed())
   {
     vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController(), PaintTag);
     bool all = true;
@@ -393,22 +431,19 @@ int vtkMalleabilityPaintFilter::RequestData(
       vtkErrorMacro("Another process refused its piece; output is the input.");
     badData = !all;
   }
-  if (badData)
-  {
-    return 1;
-  }
+  return !badData;
+}
 
-  if (!this->PaintPins && !distributed && this->PaintIncrementally(input, output, name))
-  {
-    ++this->NumberOfIncrementalUpdates;
-    this->Internals->KeepOutput(output);
-    return 1;
-  }
-
-  // The array to paint: a clamped float copy of the input's, or InitialMalleability.
+vtkSmartPointer<vtkFloatArray> vtkMalleabilityPaintFilter::StartingArray(
+  vtkPointSet* input, const char* name)
+{
+  // A clamped float copy of the input's array, or InitialMalleability.
+  const vtkIdType n = input->GetNumberOfPoints();
   auto malleability = vtkSmartPointer<vtkFloatArray>::New();
   malleability->SetName(name);
   malleability->SetNumberOfTuples(n);
+  vtkAbstractArray* named = input->GetPointData()->GetAbstractArray(name);
+  vtkDataArray* source = vtkDataArray::SafeDownCast(named);
   if (named && !source)
   {
     vtkWarningMacro("Point array '"
@@ -444,44 +479,49 @@ int vtkMalleabilityPaintFilter::RequestData(
   {
     malleability->Fill(this->PaintPins ? 0.0 : this->InitialMalleability);
   }
-  if (!this->ApplyDabs(input, m))
-  {
-    // Keep what was shown: the executive would otherwise empty the output on an abort.
-    output->ShallowCopy(this->Internals->LastOutput ? this->Internals->LastOutput.Get()
-                                                    : static_cast<vtkPointSet*>(input));
-    this->SetAbortOutput(false);
-    this->SetAbortExecute(0);
-    this->Internals->Painted = nullptr; // the painter's open stroke is not that array's
-    vtkErrorMacro("Painting was aborted after "
-                  << this->NumberOfAppliedDabs << " of " << this->Internals->Dabs.size()
-                  << " dabs; the output is the previous one (change a property to paint again).");
-    return 1;
-  }
-  this->ApplyPointDabs(n, m);
+  return malleability;
+}
+
+void vtkMalleabilityPaintFilter::KeepShownOutput(vtkPointSet* input, vtkPointSet* output)
+{
+  // Keep what was shown: the executive would otherwise empty the output on an abort.
+  output->ShallowCopy(this->Internals->LastOutput ? this->Internals->LastOutput.Get() : input);
+  this->SetAbortOutput(false);
+  this->SetAbortExecute(0);
+  this->Internals->Painted = nullptr; // the painter's open stroke is not that array's
+  vtkErrorMacro("Painting was aborted after "
+                << this->NumberOfAppliedDabs << " of " << this->Internals->Dabs.size()
+                << " dabs; the output is the previous one (change a property to paint again).");
+}
+
+void vtkMalleabilityPaintFilter::WriteOutput(
+  vtkPointSet* input, vtkPointSet* output, vtkFloatArray* painted)
+{
+  vtkInternals& in = *this->Internals;
+  const char* name = painted->GetName();
   if (this->PaintPins)
   {
+    const vtkIdType n = painted->GetNumberOfTuples();
     vtkNew<vtkUnsignedCharArray> pins;
     pins->SetName(name);
     pins->SetNumberOfTuples(n);
     for (vtkIdType i = 0; i < n; ++i)
-      pins->SetValue(i, m[i] >= 0.5f ? 1 : 0);
+      pins->SetValue(i, painted->GetValue(i) >= 0.5f ? 1 : 0);
     output->GetPointData()->AddArray(pins);
-    this->Internals->Painted = nullptr; // the painter's open stroke is the mask's
+    in.Painted = nullptr; // the painter's open stroke is the mask's
   }
   else
   {
-    output->GetPointData()->AddArray(malleability);
+    output->GetPointData()->AddArray(painted);
     output->GetPointData()->SetActiveScalars(name);
-    vtkInternals& in = *this->Internals;
     // Recording from the start: consumers see the same rule on every later update.
-    vtkSparseArrayChanges::ValuesChanged(malleability, nullptr, 0);
-    in.Painted = malleability;
+    vtkSparseArrayChanges::ValuesChanged(painted, nullptr, 0);
+    in.Painted = painted;
     in.PaintedFrom = in.Signature(input, this, name);
     in.AppliedDabList = in.Dabs;
     in.AppliedPointDabs = in.PointDabs;
   }
-  this->Internals->KeepOutput(output);
-  return 1;
+  in.KeepOutput(output);
 }
 
 bool vtkMalleabilityPaintFilter::PaintIncrementally(
@@ -564,17 +604,10 @@ bool vtkMalleabilityPaintFilter::ApplyDabs(
   if (mode == geoshaping::DistanceMode::geodesic)
   {
     in.UpdateIds(input); // the nearest vertex's tie rule
-  }
-  if (mode == geoshaping::DistanceMode::geodesic && !in.AdjacencyValid)
-  {
-    vtkIdType skipped = 0;
-    in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
-    in.AdjacencyValid = true;
-    if (skipped > 0)
+    if (!in.AdjacencyValid)
     {
-      vtkWarningMacro(<< skipped
-                      << " cells are of an unsupported type or have invalid point "
-                         "ids; geodesic paths do not follow their edges.");
+      in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(this, input, "", GeodesicSkips);
+      in.AdjacencyValid = true;
     }
   }
 
@@ -606,46 +639,60 @@ bool vtkMalleabilityPaintFilter::ApplyDabs(
         return !this->CheckAbort();
       });
   }
-  this->LastPaintMilliseconds =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  this->ReportPainting(report, first, MillisecondsSince(start));
+  return !report.aborted;
+}
+
+void vtkMalleabilityPaintFilter::ReportPainting(
+  const geoshaping::PaintReport& report, std::size_t first, double milliseconds)
+{
+  const std::vector<geoshaping::Dab>& dabs = this->Internals->Dabs;
+  this->LastPaintMilliseconds = milliseconds;
   this->NumberOfAppliedDabs = static_cast<int>(report.applied);
   this->NumberOfRejectedDabs = static_cast<int>(report.rejected.size());
   this->NumberOfPaintedValues = static_cast<vtkIdType>(report.painted);
-  if (!report.rejected.empty())
+  if (report.rejected.empty())
   {
-    std::ostringstream msg;
-    msg << report.rejected.size() << " of " << dabs.size()
-        << " dabs were skipped (the others are applied):";
-    const std::size_t shown = std::min<std::size_t>(report.rejected.size(), 10);
-    for (std::size_t i = 0; i < shown; ++i)
-    {
-      const geoshaping::Dab& d = dabs[report.rejected[i].first];
-      msg << "\n  dab " << first + report.rejected[i].first << " (" << d.center.x() << " "
-          << d.center.y() << " " << d.center.z() << " " << d.radius << " " << d.value << " "
-          << d.strength << "): " << report.rejected[i].second;
-    }
-    if (shown < report.rejected.size())
-      msg << "\n  ...";
-    vtkErrorMacro(<< msg.str());
+    return;
   }
-  return !report.aborted;
+  std::ostringstream msg;
+  msg << report.rejected.size() << " of " << dabs.size() - first
+      << " dabs were skipped (the others are applied):";
+  const std::size_t shown = std::min<std::size_t>(report.rejected.size(), 10);
+  for (std::size_t i = 0; i < shown; ++i)
+  {
+    const std::size_t k = first + report.rejected[i].first;
+    const geoshaping::Dab& d = dabs[k];
+    msg << "\n  dab " << k << " (" << d.center.x() << " " << d.center.y() << " " << d.center.z()
+        << " " << d.radius << " " << d.value << " " << d.strength
+        << "): " << report.rejected[i].second;
+  }
+  if (shown < report.rejected.size())
+    msg << "\n  ...";
+  vtkErrorMacro(<< msg.str());
 }
 
 bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
   vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched)
 {
-  vtkInternals& in = *this->Internals;
   vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController(), PaintTag);
-  const vtkIdType n = input->GetNumberOfPoints();
+  if (!this->SetUpPieces(input, ex))
+  {
+    return true; // refused on every process: no dab is applied
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const geoshaping::PaintReport report = this->PaintPieces(input, m, first, touched, ex);
+  this->ReportPainting(report, first, MillisecondsSince(start));
+  return true;
+}
 
+bool vtkMalleabilityPaintFilter::SetUpPieces(vtkPointSet* input, geoshaping::Exchange& ex)
+{
+  vtkInternals& in = *this->Internals;
+  const vtkIdType n = input->GetNumberOfPoints();
   // Local checks and whether the piece changed, agreed on by every process.
-  std::string problem;
   vtkDataArray* gids = vtkGeoShapingAdapter::PointGlobalIds(input);
-  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
-  if (n > 0 && gids && (gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
-    problem = "a point GlobalIds array that is not one value per point";
-  else if (n > 0 && ghosts && ghosts->GetNumberOfTuples() != n)
-    problem = "a vtkGhostType point array that is not one value per point";
+  std::string problem = vtkGeoShapingAdapter::PieceArraysProblem(input);
   const bool stale = !in.Geodesic || in.GeometryPoints != input->GetPoints() ||
                      in.GeometrySize != n ||
                      in.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
@@ -659,95 +706,67 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
     in.GeometrySize = 0;
     in.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
   }
-  bool ok = true, anyStale = false, withIds = false, withoutIds = false;
-  for (const auto& v : ex.all_gather({ problem.empty() ? 1 : 0, stale ? 1 : 0,
-         n == 0 ? 0
-         : gids ? 1
-                : 2 }))
+  const auto pieces =
+    vtkGeoShapingAdapter::AgreeOnPieces(&ex, problem.empty(), stale, n, gids != nullptr);
+  if (!problem.empty())
+    vtkErrorMacro("Process " << ex.piece() << ": " << problem << "; " << NoGeodesicDab);
+  else if (!pieces.Refusal.empty())
+    vtkErrorMacro(<< pieces.Refusal << "; " << NoGeodesicDab);
+  if (!pieces.Ok)
   {
-    ok = ok && v[0] != 0;
-    anyStale = anyStale || v[1] != 0;
-    withIds = withIds || v[2] == 1;
-    withoutIds = withoutIds || v[2] == 2;
-  }
-  if (ok && withIds && withoutIds)
-  {
-    vtkErrorMacro("Point GlobalIds on some processes and not on others; no geodesic dab is "
-                  "applied on any process.");
     in.Geodesic.reset();
-    return true;
+    return false;
   }
-  if (!ok)
-  {
-    if (!problem.empty())
-      vtkErrorMacro("Process " << ex.piece() << ": " << problem
-                               << "; no geodesic dab is applied on any process.");
-    else
-      vtkErrorMacro("Another process refused its piece; no geodesic dab is applied.");
-    in.Geodesic.reset();
-    return true;
-  }
-  if (anyStale)
-  {
-    std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
-    // Without vtkGhostType this is the one process holding points (GhostRing): all owned.
-    for (vtkIdType i = 0; i < n; ++i)
-      owned[std::size_t(i)] =
-        !ghosts || (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
-    if (withIds)
-      in.UpdateIds(input);
-    else
-    {
-      // None anywhere: numbered by coordinates, whatever the partition, a seam point that
-      // several processes claim owned by the lowest (coordinate_ids.h, as the deformation
-      // filter does).
-      const std::vector<std::uint8_t> claimed = std::move(owned);
-      geoshaping::index_t coincident = 0;
-      in.Ids = geoshaping::coordinate_ids(
-        in.Xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
-      in.IdSource = nullptr;
-      in.IdTime = 0;
-      in.IdsFromCoordinates = true;
-      const std::string split = geoshaping::coincident_points_refusal(coincident, ex);
-      if (!split.empty())
-      {
-        vtkErrorMacro(<< split << "; no geodesic dab is applied on any process.");
-        in.Geodesic.reset();
-        return true;
-      }
-    }
-    in.Adjacency = {};
-    in.Adjacency.offsets.assign(1, 0);
-    if (n > 0)
-    {
-      vtkIdType skipped = 0;
-      in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
-      if (skipped > 0)
-        vtkWarningMacro(<< skipped
-                        << " cells are of an unsupported type or have invalid point "
-                           "ids; geodesic paths do not follow their edges.");
-    }
-    in.AdjacencyValid = true;
-    in.Geodesic = std::make_unique<geoshaping::PartitionedGeodesic>();
-    in.Geodesic->set_piece(
-      in.Xyz.data(), geoshaping::index_t(n), &in.Adjacency, in.Ids.data(), owned.data(), ex);
-  }
+  return !pieces.AnyChanged || this->SetUpPiece(input, pieces.WithIds, ex);
+}
 
-  const auto start = std::chrono::steady_clock::now();
+bool vtkMalleabilityPaintFilter::SetUpPiece(
+  vtkPointSet* input, bool globalIds, geoshaping::Exchange& ex)
+{
+  vtkInternals& in = *this->Internals;
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkDataArray* gids = globalIds ? vtkGeoShapingAdapter::PointGlobalIds(input) : nullptr;
+  in.IdSource = gids;
+  in.IdTime = gids ? gids->GetMTime() : 0;
+  in.IdsFromCoordinates = !gids;
+  std::vector<std::uint8_t> owned;
+  std::string refusal;
+  if (!vtkGeoShapingAdapter::IdentifyPiece(
+        input, in.Xyz.data(), globalIds, ex, in.Ids, owned, refusal))
+  {
+    vtkErrorMacro(<< refusal << "; " << NoGeodesicDab);
+    in.Geodesic.reset();
+    return false;
+  }
+  in.Adjacency = {};
+  in.Adjacency.offsets.assign(1, 0);
+  if (n > 0)
+    in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(this, input, "", GeodesicSkips);
+  in.AdjacencyValid = true;
+  in.Geodesic = std::make_unique<geoshaping::PartitionedGeodesic>();
+  in.Geodesic->set_piece(
+    in.Xyz.data(), geoshaping::index_t(n), &in.Adjacency, in.Ids.data(), owned.data(), ex);
+  return true;
+}
+
+geoshaping::PaintReport vtkMalleabilityPaintFilter::PaintPieces(vtkPointSet* input, float* m,
+  std::size_t first, std::vector<vtkIdType>* touched, geoshaping::Exchange& ex)
+{
+  vtkInternals& in = *this->Internals;
+  const vtkIdType n = input->GetNumberOfPoints();
   const auto falloff = static_cast<geoshaping::Falloff>(this->Falloff);
   geoshaping::Reach reach;
   geoshaping::StrokeAccumulator stroke; // the rule of one process (brush.h)
   std::vector<geoshaping::index_t> written;
   std::int64_t painted = 0;
-  std::vector<std::pair<std::size_t, std::string>> rejected;
-  int applied = 0;
+  geoshaping::PaintReport report;
   for (std::size_t i = first; i < in.Dabs.size(); ++i)
   {
     const geoshaping::Dab& dab = in.Dabs[i];
     const char* why = geoshaping::validate_dab(dab);
     if (*why)
     {
-      rejected.emplace_back(i, why); // the same on every process
+      report.rejected.emplace_back(i - first, why); // the same on every process
       continue;
     }
     in.Geodesic->compute(dab.center, dab.radius, n > 0 ? in.Nearest(dab.center) : -1, reach, ex);
@@ -762,26 +781,13 @@ bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
       painted += in.Geodesic->pieces().owned(stroke.members()[k]);
     if (touched)
       touched->insert(touched->end(), written.begin(), written.end());
-    ++applied;
+    ++report.applied;
   }
   std::int64_t total = 0;
   for (const auto& v : ex.all_gather({ painted }))
     total += v[0];
-  this->LastPaintMilliseconds =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  this->NumberOfAppliedDabs = applied;
-  this->NumberOfRejectedDabs = static_cast<int>(rejected.size());
-  this->NumberOfPaintedValues = vtkIdType(total);
-  if (!rejected.empty())
-  {
-    std::ostringstream msg;
-    msg << rejected.size() << " of " << in.Dabs.size() - first
-        << " dabs were skipped (the others are applied):";
-    for (std::size_t k = 0; k < rejected.size() && k < 10; ++k)
-      msg << "\n  dab " << rejected[k].first << ": " << rejected[k].second;
-    vtkErrorMacro(<< msg.str());
-  }
-  return true;
+  report.painted = std::size_t(total);
+  return report;
 }
 
 void vtkMalleabilityPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
