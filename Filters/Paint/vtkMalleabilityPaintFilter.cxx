@@ -1,10 +1,8 @@
-#include "vtkMalleabilityPaintFilter.h"
+#include "vtkMalleabilityPaintFilterInternals.h"
 
 #include "vtkFloatArray.h"
 #include "vtkGeoShapingAdapter.h"
 #include "vtkGeoShapingControllerExchange.h"
-#include "vtkGeoShapingGhostRing.h"
-#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -16,112 +14,33 @@
 #include "vtkSmartPointer.h"
 #include "vtkSparseArrayChanges.h"
 #include "vtkSparsePointChanges.h"
-#include "vtkStaticPointLocator.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "geoshaping/deform/transfer_function.h"
 #include "geoshaping/paint/brush.h"
 #include "geoshaping/parallel/coordinate_ids.h"
-#include "geoshaping/parallel/partitioned_geodesic.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <functional>
 #include <limits>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkMalleabilityPaintFilter);
 
+using namespace vtkMalleabilityPaintFilterDetail;
+
 namespace
 {
-// The message tags of this filter's exchange (not the deformation filter's, 914300).
-constexpr int PaintTag = 914400;
-// What a refusal on several processes leaves, and what cells BuildAdjacency skipped cost.
-constexpr const char* NoGeodesicDab = "no geodesic dab is applied on any process.";
-constexpr const char* GeodesicSkips = "geodesic paths do not follow their edges.";
-
-double MillisecondsSince(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-    .count();
-}
-
 bool SameDab(const geoshaping::Dab& a, const geoshaping::Dab& b)
 {
   return a.center == b.center && a.radius == b.radius && a.value == b.value &&
          a.strength == b.strength;
 }
 } // namespace
-
-struct vtkMalleabilityPaintFilter::vtkInternals
-{
-  // Geodesic dabs on several processes: the input's ghost ring, made when it lacks one.
-  vtkGeoShapingGhostRing GhostRing;
-  // The last painted output (shallow): what an aborted painting leaves in place, since
-  // the executive empties the output before each execution.
-  vtkSmartPointer<vtkPointSet> LastOutput;
-  void KeepOutput(vtkPointSet* output)
-  {
-    this->LastOutput = vtk::TakeSmartPointer(output->NewInstance());
-    this->LastOutput->ShallowCopy(output);
-  }
-  std::vector<geoshaping::Dab> Dabs;
-  std::vector<double> PointDabs; // id value weight
-
-  // Geometry the locator, points and adjacency were built from.
-  vtkPoints* GeometryPoints = nullptr;
-  vtkIdType GeometrySize = -1;
-  vtkMTimeType GeometryTime = 0;
-  bool GeometryValid = false;
-  std::vector<double> Xyz;
-  // Built on first use (geodesic dabs, single-dab reach): Euclidean strokes go through the
-  // painter's own vertex grid instead.
-  vtkSmartPointer<vtkStaticPointLocator> Locator;
-  vtkStaticPointLocator* GetLocator();
-  bool AdjacencyValid = false;
-  geoshaping::Adjacency Adjacency;
-  // Kept between updates: its vertex grid (built once per geometry) and the open stroke
-  // of the array in Painted, which appended dabs continue.
-  std::unique_ptr<geoshaping::Painter> Painter;
-
-  // The last painted array, what it was painted from (input geometry, source array,
-  // settings) and the dabs applied to it: an update that only appends dabs continues it.
-  vtkSmartPointer<vtkFloatArray> Painted;
-  std::vector<std::uintptr_t> PaintedFrom;
-  std::vector<geoshaping::Dab> AppliedDabList;
-  std::vector<double> AppliedPointDabs;
-
-  // What the painted array was painted from, apart from the dabs.
-  static std::vector<std::uintptr_t> Signature(
-    vtkPointSet* input, vtkMalleabilityPaintFilter* self, const char* name);
-
-  // Rebuilds what depends on the geometry when it changed; false on bad points.
-  bool Update(vtkPointSet* input, vtkMalleabilityPaintFilter* self);
-  geoshaping::PointQueries Queries();
-
-  // The id a tie for the nearest vertex goes by: the point GlobalIds when the input has
-  // them (one per point), else the points' coordinate ids (coordinate_ids.h, the
-  // numbering several processes use); copied when that array changes, numbered when the
-  // geometry changes.
-  vtkDataArray* IdSource = nullptr;
-  vtkMTimeType IdTime = 0;
-  bool IdsFromCoordinates = false;
-  std::vector<std::int64_t> Ids; // empty: the point ids
-  void UpdateIds(vtkPointSet* input);
-  // The vertex nearest p, ties to the lowest id (-1 when there is none).
-  geoshaping::index_t Nearest(const Eigen::Vector3d& p);
-  vtkNew<vtkIdList> Found;
-
-  // Geodesic painting on data split across processes: the pieces' label exchange, set
-  // up when the geometry or the ids change on any process.
-  std::unique_ptr<geoshaping::PartitionedGeodesic> Geodesic;
-};
 
 void vtkMalleabilityPaintFilter::vtkInternals::UpdateIds(vtkPointSet* input)
 {
@@ -309,25 +228,6 @@ bool vtkMalleabilityPaintFilter::GetDab(int i, double dab[6])
     d.strength };
   std::copy(values, values + 6, dab);
   return true;
-}
-
-bool vtkMalleabilityPaintFilter::Distributed() const
-{
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  return this->DistanceMode == GEODESIC && controller && controller->GetNumberOfProcesses() > 1;
-}
-
-int vtkMalleabilityPaintFilter::ComputeInputUpdateExtent(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  if (!this->Superclass::ComputeInputUpdateExtent(request, inputVector, outputVector))
-    return 0;
-  if (this->Distributed())
-  {
-    // One ring of ghosts: every neighbour of an owned point is on this process.
-    vtkGeoShapingAdapter::RequestGhostRing(inputVector, outputVector);
-  }
-  return 1;
 }
 
 int vtkMalleabilityPaintFilter::RequestData(
@@ -670,124 +570,6 @@ void vtkMalleabilityPaintFilter::ReportPainting(
   if (shown < report.rejected.size())
     msg << "\n  ...";
   vtkErrorMacro(<< msg.str());
-}
-
-bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
-  vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched)
-{
-  vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController(), PaintTag);
-  if (!this->SetUpPieces(input, ex))
-  {
-    return true; // refused on every process: no dab is applied
-  }
-  const auto start = std::chrono::steady_clock::now();
-  const geoshaping::PaintReport report = this->PaintPieces(input, m, first, touched, ex);
-  this->ReportPainting(report, first, MillisecondsSince(start));
-  return true;
-}
-
-bool vtkMalleabilityPaintFilter::SetUpPieces(vtkPointSet* input, geoshaping::Exchange& ex)
-{
-  vtkInternals& in = *this->Internals;
-  const vtkIdType n = input->GetNumberOfPoints();
-  // Local checks and whether the piece changed, agreed on by every process.
-  vtkDataArray* gids = vtkGeoShapingAdapter::PointGlobalIds(input);
-  std::string problem = vtkGeoShapingAdapter::PieceArraysProblem(input);
-  const bool stale = !in.Geodesic || in.GeometryPoints != input->GetPoints() ||
-                     in.GeometrySize != n ||
-                     in.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
-                     in.IdSource != gids || (gids && in.IdTime != gids->GetMTime());
-  if (problem.empty() && n > 0 && !in.Update(input, this))
-    problem = "non-finite point coordinates";
-  if (n == 0)
-  {
-    // Remembered like any other piece, or it would look changed at every update.
-    in.GeometryPoints = input->GetPoints();
-    in.GeometrySize = 0;
-    in.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
-  }
-  const auto pieces =
-    vtkGeoShapingAdapter::AgreeOnPieces(&ex, problem.empty(), stale, n, gids != nullptr);
-  if (!problem.empty())
-    vtkErrorMacro("Process " << ex.piece() << ": " << problem << "; " << NoGeodesicDab);
-  else if (!pieces.Refusal.empty())
-    vtkErrorMacro(<< pieces.Refusal << "; " << NoGeodesicDab);
-  if (!pieces.Ok)
-  {
-    in.Geodesic.reset();
-    return false;
-  }
-  return !pieces.AnyChanged || this->SetUpPiece(input, pieces.WithIds, ex);
-}
-
-bool vtkMalleabilityPaintFilter::SetUpPiece(
-  vtkPointSet* input, bool globalIds, geoshaping::Exchange& ex)
-{
-  vtkInternals& in = *this->Internals;
-  const vtkIdType n = input->GetNumberOfPoints();
-  vtkDataArray* gids = globalIds ? vtkGeoShapingAdapter::PointGlobalIds(input) : nullptr;
-  in.IdSource = gids;
-  in.IdTime = gids ? gids->GetMTime() : 0;
-  in.IdsFromCoordinates = !gids;
-  std::vector<std::uint8_t> owned;
-  std::string refusal;
-  if (!vtkGeoShapingAdapter::IdentifyPiece(
-        input, in.Xyz.data(), globalIds, ex, in.Ids, owned, refusal))
-  {
-    vtkErrorMacro(<< refusal << "; " << NoGeodesicDab);
-    in.Geodesic.reset();
-    return false;
-  }
-  in.Adjacency = {};
-  in.Adjacency.offsets.assign(1, 0);
-  if (n > 0)
-    in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(this, input, "", GeodesicSkips);
-  in.AdjacencyValid = true;
-  in.Geodesic = std::make_unique<geoshaping::PartitionedGeodesic>();
-  in.Geodesic->set_piece(
-    in.Xyz.data(), geoshaping::index_t(n), &in.Adjacency, in.Ids.data(), owned.data(), ex);
-  return true;
-}
-
-geoshaping::PaintReport vtkMalleabilityPaintFilter::PaintPieces(vtkPointSet* input, float* m,
-  std::size_t first, std::vector<vtkIdType>* touched, geoshaping::Exchange& ex)
-{
-  vtkInternals& in = *this->Internals;
-  const vtkIdType n = input->GetNumberOfPoints();
-  const auto falloff = static_cast<geoshaping::Falloff>(this->Falloff);
-  geoshaping::Reach reach;
-  geoshaping::StrokeAccumulator stroke; // the rule of one process (brush.h)
-  std::vector<geoshaping::index_t> written;
-  std::int64_t painted = 0;
-  geoshaping::PaintReport report;
-  for (std::size_t i = first; i < in.Dabs.size(); ++i)
-  {
-    const geoshaping::Dab& dab = in.Dabs[i];
-    const char* why = geoshaping::validate_dab(dab);
-    if (*why)
-    {
-      report.rejected.emplace_back(i - first, why); // the same on every process
-      continue;
-    }
-    in.Geodesic->compute(dab.center, dab.radius, n > 0 ? in.Nearest(dab.center) : -1, reach, ex);
-    if (stroke.continues(dab))
-      stroke.move(dab.center);
-    else
-      stroke.begin(dab, falloff);
-    written.clear();
-    const std::size_t before = stroke.members().size();
-    stroke.add(reach, m, &written);
-    for (std::size_t k = before; k < stroke.members().size(); ++k)
-      painted += in.Geodesic->pieces().owned(stroke.members()[k]);
-    if (touched)
-      touched->insert(touched->end(), written.begin(), written.end());
-    ++report.applied;
-  }
-  std::int64_t total = 0;
-  for (const auto& v : ex.all_gather({ painted }))
-    total += v[0];
-  report.painted = std::size_t(total);
-  return report;
 }
 
 void vtkMalleabilityPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
