@@ -19,6 +19,7 @@ REFUSALS = {
     "relaxation": (r"RelaxationIterations > 0", r"relaxation"),
     "obstacles": (r"GetNumberOfInputConnections\(1\)", r"obstacle"),
     "the Priority and Max Violation queues": (r"CandidateQueue != FIFO", r"Max\s+Violation"),
+    "honoured markers": (r"HonourMarkers", r"markers"),
 }
 # What runs distributed: a refusal list naming it is false.
 RUNS = [r"\bedit", r"\bcommit", r"\bundo", r"GraspPosition", r"grasp by position",

@@ -9,7 +9,7 @@ vtkChainMailDeformationFilter::vtkChainMailDeformationFilter()
   : Internals(new vtkInternals)
 {
   this->ThreadedSuperstepThreshold = vtkIdType(this->Internals->Deformer.threaded_threshold());
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Malleability");
 }
 
@@ -91,6 +91,7 @@ int vtkChainMailDeformationFilter::RequestData(
     return 1;
   }
   const vtkIdType n = input->GetNumberOfPoints();
+  this->UpdateMarkers(input, false); // before the pins, which it joins
   // The obstacles are collective on several processes (every piece to every process).
   if (!state.AllAgree(n == 0 || this->UpdateMalleabilityAndPins(input)) ||
       !(state.Processes ? this->UpdateObstaclesParallel(input, *state.Processes)
@@ -100,6 +101,12 @@ int vtkChainMailDeformationFilter::RequestData(
   }
   std::vector<int> stale; // the last frame, shown until rewritten
   const std::vector<int> touched = this->UpdateEdits(stale);
+  // The committed shape changed (a commit, undo, redo, replay): the markers' triangles
+  // are found again in it, and the pins follow.
+  if (!touched.empty() && this->UpdateMarkers(input, true))
+  {
+    this->UpdateMalleabilityAndPins(input);
+  }
   this->Deform(input, stale);
   if (n > 0)
   {
@@ -151,6 +158,8 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
   os << indent << "ObstacleClearance: " << this->ObstacleClearance << "\n";
   os << indent << "NumberOfObstacleConnections: " << this->GetNumberOfInputConnections(1) << "\n";
+  os << indent << "HonourMarkers: " << this->HonourMarkers << "\n";
+  os << indent << "NumberOfMarkersConnections: " << this->GetNumberOfInputConnections(2) << "\n";
   os << indent << "NumberOfEdits: " << this->Internals->Edits.records().size() << "\n";
   os << indent << "NumberOfRebuilds: " << this->NumberOfRebuilds << "\n";
 }

@@ -68,8 +68,8 @@
  * partitioned_envelope.h, the same bits as one process). Edits (commit, undo, redo,
  * EditHistory) and a grasp nearest to GraspPosition work there too. Not distributed
  * yet, refused with the same error on every process (output = input): the other
- * refinement solvers or the LINK region, relaxation, obstacles, the Priority and Max
- * Violation queues.
+ * refinement solvers or the LINK region, relaxation, obstacles, honoured markers
+ * (HonourMarkers with markers), the Priority and Max Violation queues.
  */
 #ifndef vtkChainMailDeformationFilter_h
 #define vtkChainMailDeformationFilter_h
@@ -416,6 +416,40 @@ public:
   }
   ///@}
 
+  ///@{
+  /// Well markers (docs/markers.md, "Honoured while shaping"): the points of the data
+  /// sets on input port 2, optional, any number of connections (a vtkPointSet: ParaView's
+  /// CSV Reader then Table To Points, a GOCAD VSet). With HonourMarkers on (default off) each
+  /// marker whose vertical line crosses the surface (Marker Misfit's Inside) keeps its vertical
+  /// misfit in every frame and after a commit: the three corners of the triangle under it
+  /// (geoshaping/metrics/marker_pins.h) are pinned, joined to the PinnedArray's pins, so
+  /// a marker on the surface stays on it and a pull near a well bends around it. The map
+  /// from markers to pins is made from the committed shape (input + committed edits)
+  /// once per input geometry and markers and again when a commit, undo or redo changes
+  /// that shape, never per frame. Not refused, with one warning each (counts below):
+  /// markers with a NaN or infinite coordinate (skipped), markers outside the surface's
+  /// footprint (not honoured), markers off the surface by more than 1e-6 of its size
+  /// (their misfit kept as it is). Grasping a vertex under a marker is refused as
+  /// grasping a pinned vertex is. With HonourMarkers off, or no markers, the filter is
+  /// as without this input, bit for bit.
+  void AddMarkersConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(2, output); }
+  void SetMarkersConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
+  void SetMarkersData(vtkDataObject* data) { this->SetInputDataObject(2, data); }
+  void RemoveAllMarkersConnections() { this->SetInputConnection(2, nullptr); }
+  vtkSetMacro(HonourMarkers, bool);
+  vtkGetMacro(HonourMarkers, bool);
+  vtkBooleanMacro(HonourMarkers, bool);
+  /// Figures of the markers the filter honours (all 0 with HonourMarkers off): markers
+  /// honoured, markers outside the footprint, markers skipped for a non-finite
+  /// coordinate, honoured markers off the surface by more than 1e-6 of its size, and
+  /// the vertices pinned under them.
+  vtkIdType GetNumberOfHonouredMarkers();
+  vtkIdType GetNumberOfMarkersOutside();
+  vtkIdType GetNumberOfNonFiniteMarkers();
+  vtkIdType GetNumberOfMarkersOffSurface();
+  vtkIdType GetNumberOfMarkerPinnedPoints();
+  ///@}
+
   /// Number of times the adjacency and rest state were (re)built: stays 1 while only
   /// the grasp, displacement, queue or curves change.
   vtkGetMacro(NumberOfRebuilds, int);
@@ -450,6 +484,7 @@ protected:
   int RefinementSolver = REFINEMENT_ENVELOPE;
   int RelaxationIterations = 0;
   double ObstacleClearance = 0.0;
+  bool HonourMarkers = false;
 
   // What the last update did (the information properties above), in one place: every
   // RequestData starts from FrameStatistics{} and each stage fills its part.
@@ -528,6 +563,11 @@ private:
   // everywhere, and the sliding mask of `input`; false (after an error, on every process)
   // when refused.
   bool UpdateObstaclesParallel(vtkPointSet* input, geoshaping::Exchange& exchange);
+  // The markers of port 2 to the vertices pinned under them in the committed shape
+  // (vtkChainMailDeformationFilterMarkers.cxx), made again when the geometry, the markers
+  // or HonourMarkers changed, or with `force` (the committed shape changed); true when
+  // the pinned vertices changed.
+  bool UpdateMarkers(vtkPointSet* input, bool force);
   // The sliding mask (input array 2 of `input`, the data worked on) into the deformer;
   // false (after an error) when it is refused.
   bool UpdateSliding(vtkPointSet* input);

@@ -30,6 +30,7 @@
 #include "geoshaping/deform/chainmail_deformer.h"
 #include "geoshaping/edit/edit_session.h"
 #include "geoshaping/mesh/sparse_normals.h"
+#include "geoshaping/metrics/marker_pins.h"
 #include "geoshaping/parallel/partitioned_chainmail.h"
 #include "geoshaping/parallel/partitioned_envelope.h"
 #include "geoshaping/passes/frame_passes.h"
@@ -60,6 +61,13 @@ struct vtkChainMailDeformationFilter::vtkInternals
   vtkMTimeType PinTime = 0;
   vtkDataArray* SlidingSource = nullptr;
   vtkMTimeType SlidingTime = 0;
+  // Honoured markers (port 2): the vertices pinned under them and the counts
+  // (geoshaping/metrics/marker_pins.h), made from MarkerSources (data object, MTime per
+  // connection; empty with HonourMarkers off); MarkersChanged until the pins take them.
+  geoshaping::MarkerPins Markers;
+  std::vector<std::pair<vtkDataObject*, vtkMTimeType>> MarkerSources;
+  bool MarkersValid = false;
+  bool MarkersChanged = false;
   // The obstacles the deformer holds were built from (data object, MTime per connection).
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> ObstacleSources;
 
@@ -318,6 +326,7 @@ inline void vtkChainMailDeformationFilter::vtkInternals::Invalidate(Stale level)
   this->GeometryValid = false;
   this->MalleabilitySource = nullptr;
   this->PinSource = nullptr;
+  this->MarkersValid = false;
   this->SlidingSource = nullptr;
   this->MalleabilityDefault = -1.0;
   this->Locator = nullptr;

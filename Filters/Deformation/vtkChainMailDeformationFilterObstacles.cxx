@@ -15,6 +15,8 @@ int vtkChainMailDeformationFilter::FillInputPortInformation(int port, vtkInforma
 {
   if (port == 0)
     return this->Superclass::FillInputPortInformation(port, info);
+  // Port 1 the obstacles, port 2 the markers (HonourMarkers: the points of any data set,
+  // as ParaView's Pipeline Connection gives an empty polydata when nothing is chosen).
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);

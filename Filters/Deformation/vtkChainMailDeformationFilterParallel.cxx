@@ -78,6 +78,16 @@ bool vtkChainMailDeformationFilter::SelectInput(vtkPointSet*& input, vtkPointSet
              !vtkChainMailDeformationFilterDetail::IsEmptyObstacle(this->GetInputDataObject(1, i));
     return !state.AllAgree(!mine);
   };
+  const auto markers = [this, &state]()
+  {
+    bool mine = false;
+    for (int i = 0; i < this->GetNumberOfInputConnections(2); ++i)
+    {
+      vtkDataSet* data = vtkDataSet::SafeDownCast(this->GetInputDataObject(2, i));
+      mine = mine || (data && data->GetNumberOfPoints() > 0);
+    }
+    return !state.AllAgree(!mine);
+  };
   std::string refused;
   if (this->RefinementIterations > 0 &&
       (this->RefinementSolver != REFINEMENT_ENVELOPE || this->ValidRegionFrame != AXES))
@@ -91,6 +101,8 @@ bool vtkChainMailDeformationFilter::SelectInput(vtkPointSet*& input, vtkPointSet
   else if (this->RefinementIterations > 0 && this->GetNumberOfInputConnections(1) > 0 &&
            obstacles())
     refused = "refinement with Obstacles (the passes' obstacle gate is not distributed)";
+  else if (this->HonourMarkers && this->GetNumberOfInputConnections(2) > 0 && markers())
+    refused = "HonourMarkers with markers (the markers' pins are found in one process)";
   else if (this->CandidateQueue != FIFO && this->CandidateQueue != FIFO_PRIORITY)
     refused = std::string("the ") +
               geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) +

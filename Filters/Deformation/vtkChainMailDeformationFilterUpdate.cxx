@@ -10,6 +10,7 @@
 #include "geoshaping/mesh/huge_pages.h"
 #include "geoshaping/parallel/coordinate_ids.h"
 
+#include <algorithm>
 #include <cmath>
 #include <future>
 
@@ -308,21 +309,27 @@ bool vtkChainMailDeformationFilter::UpdateMalleabilityAndPins(vtkPointSet* input
     state.MalleabilityDefault = this->DefaultMalleability;
     state.Invalidate(vtkInternals::Stale::Links);
   }
-  if (pins != state.PinSource || (pins && pins->GetMTime() != state.PinTime))
+  // The pins: the PinnedArray's joined to those under the honoured markers.
+  const std::vector<geoshaping::index_t>& underMarkers = state.Markers.vertices;
+  if (pins != state.PinSource || (pins && pins->GetMTime() != state.PinTime) ||
+      state.MarkersChanged)
   {
-    if (pins)
+    if (pins || !underMarkers.empty())
     {
       std::vector<std::uint8_t> mask(static_cast<std::size_t>(n));
-      for (vtkIdType i = 0; i < n; ++i)
+      for (vtkIdType i = 0; pins && i < n; ++i)
         mask[i] = pins->GetComponent(i, 0) != 0.0;
+      for (geoshaping::index_t v : underMarkers)
+        mask[std::size_t(v)] = 1;
       state.Deformer.set_pinned(mask.data());
-      state.PinTime = pins->GetMTime();
+      state.PinTime = pins ? pins->GetMTime() : 0;
     }
     else
     {
       state.Deformer.set_pinned(nullptr);
     }
     state.PinSource = pins;
+    state.MarkersChanged = false;
     state.Invalidate(vtkInternals::Stale::Links);
   }
   return true;
@@ -453,6 +460,10 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
     state.Deformer.set_threads(this->NumberOfThreads);
     state.Deformer.set_threaded_threshold(std::size_t(this->ThreadedSuperstepThreshold));
     r = state.Deformer.deform(v, d);
+    if (!r.ok && state.Deformer.pinned(v) &&
+        std::binary_search(state.Markers.vertices.begin(), state.Markers.vertices.end(), v))
+      r.message += " under an honoured marker (HonourMarkers): grasp a vertex off the markers' "
+                   "triangles";
     this->Statistics.LastFrameThreads = r.threaded_supersteps > 0 ? state.Deformer.threads() : 1;
     this->Statistics.LastFrameSupersteps = vtkIdType(r.supersteps);
     this->Statistics.LastFrameThreadedSupersteps = vtkIdType(r.threaded_supersteps);

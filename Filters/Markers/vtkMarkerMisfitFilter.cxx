@@ -1,7 +1,7 @@
 #include "vtkMarkerMisfitFilter.h"
+#include "vtkMarkerCrossings.h"
 
 #include "vtkCellArray.h"
-#include "vtkDataSetSurfaceFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -15,7 +15,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
-#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -44,30 +43,13 @@ vtkIdType FirstNonFinite(vtkPoints* points)
   return -1;
 }
 
-// The surface's polygons as triangles (a volume mesh's boundary first).
-vtkSmartPointer<vtkPolyData> Triangles(vtkDataSet* surface)
-{
-  vtkNew<vtkDataSetSurfaceFilter> boundary;
-  boundary->SetInputData(surface);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(boundary->GetOutputPort());
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  triangles->Update();
-  return triangles->GetOutput();
-}
-
-// `f` of the corners of triangle `cell` of `mesh`.
+// `f` of the corners of triangle `cell` of the crossings' triangles.
 template<typename F>
-double Triangle(vtkPolyData* mesh, vtkIdType cell, vtkIdList* ids, F&& f)
+double Triangle(vtkMarkerCrossings& crossings, vtkIdType cell, vtkIdList* ids, F&& f)
 {
-  mesh->GetCellPoints(cell, ids);
-  double a[3], b[3], c[3];
-  mesh->GetPoint(ids->GetId(0), a);
-  mesh->GetPoint(ids->GetId(1), b);
-  mesh->GetPoint(ids->GetId(2), c);
-  return f(Eigen::Vector3d(a[0], a[1], a[2]), Eigen::Vector3d(b[0], b[1], b[2]),
-    Eigen::Vector3d(c[0], c[1], c[2]));
+  Eigen::Vector3d corner[3];
+  crossings.Corners(cell, ids, corner);
+  return f(corner[0], corner[1], corner[2]);
 }
 
 vtkNew<vtkDoubleArray> Scalar(const char* name, double value)
@@ -139,24 +121,17 @@ int vtkMarkerMisfitFilter::RequestData(
       "Surface point " << badPoint << " has a non-finite coordinate; no misfit computed.");
     return 0;
   }
-  const vtkSmartPointer<vtkPolyData> mesh = Triangles(surface);
-  if (mesh->GetNumberOfPolys() == 0)
+  vtkMarkerCrossings crossed;
+  double markerBounds[6];
+  markers->GetBounds(markerBounds);
+  if (!crossed.SetSurface(surface, markerBounds + 4))
   {
     vtkErrorMacro("The surface (input 0) has no polygons to measure the markers against.");
     return 0;
   }
 
   // Stage 2: per marker, the nearest surface point and the vertical line's crossings.
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(mesh);
-  locator->BuildLocator();
-  double bounds[6], markerBounds[6];
-  mesh->GetBounds(bounds);
-  markers->GetBounds(markerBounds);
-  const double diagonal = std::max(mesh->GetLength(), 1.0);
-  const double zLow = std::min(bounds[4], markerBounds[4]) - diagonal;
-  const double zHigh = std::max(bounds[5], markerBounds[5]) + diagonal;
-  const double tolerance = 1e-9 * diagonal;
+  vtkStaticCellLocator* locator = crossed.GetLocator();
 
   vtkNew<vtkDoubleArray> vertical, misfit;
   vertical->SetName("VerticalMisfit");
@@ -166,7 +141,6 @@ int vtkMarkerMisfitFilter::RequestData(
   vertical->SetNumberOfValues(numMarkers);
   misfit->SetNumberOfValues(numMarkers);
   inside->SetNumberOfValues(numMarkers);
-  vtkNew<vtkPoints> hits;
   vtkNew<vtkIdList> hitCells, triangle;
   std::vector<double> crossings;
   std::vector<double> misfits(numMarkers);
@@ -180,17 +154,16 @@ int vtkMarkerMisfitFilter::RequestData(
     int subId = 0;
     locator->FindClosestPoint(m, c, cell, subId, dist2);
     const Eigen::Vector3d marker(m[0], m[1], m[2]);
-    misfits[i] = Triangle(mesh, cell, triangle,
+    misfits[i] = Triangle(crossed, cell, triangle,
       [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& d)
       { return geoshaping::normal_misfit(marker, a, b, d); });
 
     // The locator finds the triangles the line crosses; the core evaluates their
     // elevation at the marker exactly (VTK's own intersection loses ~1e-3 m at UTM sizes).
-    const double low[3] = { m[0], m[1], zLow }, high[3] = { m[0], m[1], zHigh };
-    locator->IntersectWithLine(low, high, tolerance, hits, hitCells);
+    crossed.Crossed(m[0], m[1], hitCells);
     crossings.clear();
     for (vtkIdType h = 0; h < hitCells->GetNumberOfIds(); ++h)
-      Triangle(mesh, hitCells->GetId(h), triangle,
+      Triangle(crossed, hitCells->GetId(h), triangle,
         [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& d)
         {
           double z = 0.0;

@@ -23,6 +23,8 @@
 #include <vtkSMSourceProxy.h>
 #include <vtkSmartPointer.h>
 
+#include <chrono>
+
 namespace interactor = geoshaping::interactor;
 
 interactor::DisplayTransform pqHapticsDisplayTransform(vtkSMProxy* repr)
@@ -103,8 +105,8 @@ bool rendersRemotely(vtkSMRenderViewProxy* view)
 }
 }
 
-bool pqHapticsPickSurface(
-  vtkSMRenderViewProxy* view, const int display[2], Eigen::Vector3d& world, Eigen::Vector3d& normal)
+bool pqHapticsPickSurface(vtkSMRenderViewProxy* view, const int display[2], Eigen::Vector3d& world,
+  Eigen::Vector3d& normal, double* serverMilliseconds)
 {
   vtkRenderer* renderer = view ? view->GetRenderer() : nullptr;
   if (!renderer)
@@ -140,7 +142,15 @@ bool pqHapticsPickSurface(
   if (rendersRemotely(view))
   {
     // The client holds no geometry: every process meets the ray with its piece.
-    if (!serverPick(view, input.GetAsProxy(0), input.GetOutputPort(0), nearEnd, farEnd, p, n))
+    const auto start = std::chrono::steady_clock::now();
+    const bool hit =
+      serverPick(view, input.GetAsProxy(0), input.GetOutputPort(0), nearEnd, farEnd, p, n);
+    if (serverMilliseconds)
+    {
+      *serverMilliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
+    if (!hit)
     {
       return false;
     }

@@ -17,5 +17,7 @@ geoshaping::interactor::DisplayTransform pqHapticsDisplayTransform(vtkSMProxy* r
 // PickingHelper, on the server), and the point found is carried back. ParaView's own
 // ConvertDisplayToPointOnSurface meets the world ray with the data's cell, which misses
 // under any Scale but 1 (a vertical exaggeration). False when no surface shows there.
+// `serverMilliseconds`, when given: the round trip of the ranks' ray pick when the view
+// renders remotely (GeoShapingRayPick), else left as it is.
 bool pqHapticsPickSurface(vtkSMRenderViewProxy* view, const int display[2], Eigen::Vector3d& world,
-  Eigen::Vector3d& normal);
+  Eigen::Vector3d& normal, double* serverMilliseconds = nullptr);

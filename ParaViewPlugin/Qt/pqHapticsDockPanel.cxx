@@ -459,5 +459,19 @@ void pqHapticsDockPanel::onFrame()
   {
     text += QString("\nheld back by obstacles: %1").arg(f.obstacleBlockedPoints);
   }
+  if (f.serverPatchMilliseconds >= 0.0)
+  {
+    text += QString("\ncontact patch from the server: %1 ms, %2 bytes")
+              .arg(f.serverPatchMilliseconds, 0, 'f', 1)
+              .arg(f.serverPatchBytes);
+  }
+  if (f.serverPickMilliseconds >= 0.0)
+  {
+    text += QString("\nlast pick on the server: %1 ms").arg(f.serverPickMilliseconds, 0, 'f', 1);
+  }
+  if (!f.serverPatchMessage.isEmpty())
+  {
+    text += "\n" + f.serverPatchMessage;
+  }
   this->Figures->setText(text);
 }

@@ -461,13 +461,24 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
   const haptics::DeviceSample& sample = hand.latest.sample;
   if (hand.latest.device_ok)
   {
-    this->Proxies.contactTriangles(
-      stylus, ContactReachMetres * hand.mapping.scale(), !anyDragging, scene.contact_triangles);
+    this->Proxies.contactTriangles(stylus, ContactReachMetres * hand.mapping.scale(), !anyDragging,
+      MaxContactTriangles, scene.contact_triangles);
     for (Eigen::Vector3d& p : scene.contact_triangles)
     {
       p = hand.mapping.to_device(p);
     }
     haptics::keep_nearest(scene.contact_triangles, sample.position, MaxContactTriangles);
+    const pqHapticsProxies::ServerPatchFigures& patch = this->Proxies.serverPatchFigures();
+    if (patch.milliseconds >= 0.0)
+    {
+      this->Stats.serverPatchMilliseconds =
+        std::max(this->Stats.serverPatchMilliseconds, 0.0) + patch.milliseconds;
+      this->Stats.serverPatchBytes += patch.bytes;
+    }
+    if (!patch.message.empty())
+    {
+      this->Stats.serverPatchMessage = QString::fromStdString(patch.message);
+    }
   }
   this->Stats.contactTriangles += (long long)(scene.contact_triangles.size() / 3);
   this->Stats.contactTicks += hand.latest.in_contact ? 1 : 0;
@@ -487,6 +498,9 @@ void pqHapticsInteractor::onFrame()
   const Eigen::Matrix4d object = this->Proxies.objectMatrix();
   const Eigen::Matrix4d toObject = object.inverse();
   this->Stats.contactTriangles = 0;
+  this->Stats.serverPatchMilliseconds = -1.0;
+  this->Stats.serverPatchBytes = 0;
+  this->Stats.serverPatchMessage.clear();
   for (auto& handPtr : this->Hands)
   {
     if (!handPtr)
@@ -500,6 +514,7 @@ void pqHapticsInteractor::onFrame()
     if (hand.kind == Mouse)
     {
       hand.mouse.attach(viewProxy);
+      this->Stats.serverPickMilliseconds = hand.mouse.lastServerPickMilliseconds();
     }
     this->stylusOf(hand, mapping, world);
     this->record(hand, mapping, world);

@@ -59,6 +59,15 @@ public:
     long long contactTriangles = 0;    // sent to the servo loop in the last frame (all hands)
     long long maxContactTriangles = 0; // the most sent in one frame since start
     long long contactTicks = 0;        // device snapshots taken in contact since start
+    // The contact patch asked of the server in the last frame (the client holds no
+    // geometry): its round trips (ms, < 0 when none was asked), the triangles' payload
+    // (bytes), and why a patch could not be had or came late (empty: it came in time).
+    double serverPatchMilliseconds = -1.0;
+    // The round trip of the mouse's last pick that asked the server's ranks (the view
+    // rendering remotely), ms; < 0 while none did.
+    double serverPickMilliseconds = -1.0;
+    long long serverPatchBytes = 0;
+    QString serverPatchMessage;
     std::array<long long, 2> recordedSamples{ { 0, 0 } };
     // Per device hand: the force its last published scene asks for at the stylus, at rest
     // (haptics::force_at_rest: what the servo renders while the scene is fresh, whatever

@@ -87,7 +87,7 @@ private:
 bool pqHapticsMouse::pointOnSurface(
   const int display[2], Eigen::Vector3d& world, Eigen::Vector3d& normal) const
 {
-  return pqHapticsPickSurface(this->View, display, world, normal);
+  return pqHapticsPickSurface(this->View, display, world, normal, &this->ServerPickMilliseconds);
 }
 
 geoshaping::interactor::StylusState pqHapticsMouse::stylus(

@@ -48,6 +48,9 @@ public:
   // the mouse is off the surface or out of the view. A pick, made again only when the
   // mouse or the camera has moved since the last one.
   bool hover(Eigen::Vector3d& world);
+  // The round trip of the last pick that asked the server's ranks (the view rendering
+  // remotely: GeoShapingRayPick), ms; < 0 while none did.
+  double lastServerPickMilliseconds() const { return this->ServerPickMilliseconds; }
 
 private:
   bool onEvent(vtkObject* caller, unsigned long event, void*);
@@ -59,6 +62,7 @@ private:
   geoshaping::interactor::StylusState State; // the pressed point, or the painting point
   geoshaping::interactor::PullControl Pull;
   bool Paint = false;
+  mutable double ServerPickMilliseconds = -1.0;
   Eigen::Vector3d Up = Eigen::Vector3d::UnitZ(); // the scene's vertical at the last frame
   // Hovering: the mouse's pixel in the view (none: out of it), and the last pick there.
   bool InView = false;

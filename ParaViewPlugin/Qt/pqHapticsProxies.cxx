@@ -6,13 +6,14 @@
 #include <pqOutputPort.h>
 #include <pqPipelineSource.h>
 #include <pqRenderView.h>
+#include <pqServer.h>
 #include <pqServerManagerModel.h>
 
-#include "ContactPatch.h"
 #include "pqHapticsDisplay.h"
 #include "pqHapticsUndo.h"
 #include "undo_step.h"
 #include "vtkGeoShapingAdapter.h"
+#include "vtkGeoShapingContactPatch.h"
 #include "vtkSMChainMailDeformationProxy.h"
 
 #include <vtkAlgorithm.h>
@@ -28,16 +29,27 @@
 #include <vtkPoints.h>
 #include <vtkSMPropertyHelper.h>
 #include <vtkSMRenderViewProxy.h>
+#include <vtkSMSessionProxyManager.h>
 #include <vtkSMSourceProxy.h>
 #include <vtkTransform.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <string>
 
 namespace
 {
+// Whether `a` is a rotation times a uniform scale (a similarity): distances keep their
+// order through it. Within 1e-12 of its scale.
+bool similarity(const Eigen::Matrix3d& a)
+{
+  const Eigen::Matrix3d g = a.transpose() * a;
+  const double s = g.trace() / 3.0;
+  return s > 0.0 && (g - s * Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= 1e-12 * s;
+}
+
 bool isA(pqPipelineSource* source, const char* xmlName)
 {
   return source && source->getProxy() && source->getProxy()->GetXMLName() &&
@@ -275,13 +287,15 @@ vtkStaticCellLocator* pqHapticsProxies::cellLocator(vtkDataSet* data)
   return entry->locator;
 }
 
-void pqHapticsProxies::contactTriangles(
-  const Eigen::Vector3d& world, double radius, bool withShown, std::vector<Eigen::Vector3d>& out)
+void pqHapticsProxies::contactTriangles(const Eigen::Vector3d& world, double radius, bool withShown,
+  std::size_t nearest, std::vector<Eigen::Vector3d>& out)
 {
+  this->PatchFigures = ServerPatchFigures();
   if (!this->View || !world.allFinite() || !(radius > 0.0))
   {
     return;
   }
+  const bool remote = this->View->getServer() && this->View->getServer()->isRemote();
   // The deformation's upstream: the same surface before the deformation (the
   // deformation itself is left out or not by `withShown`).
   std::vector<vtkSMProxy*> upstream =
@@ -306,7 +320,8 @@ void pqHapticsProxies::contactTriangles(
     auto* data = algorithm && port < algorithm->GetNumberOfOutputPorts()
                    ? vtkDataSet::SafeDownCast(algorithm->GetOutputDataObject(port))
                    : nullptr;
-    if (!data || data->GetNumberOfCells() == 0)
+    const bool held = data && data->GetNumberOfCells() > 0;
+    if (!held && !remote)
     {
       continue;
     }
@@ -320,13 +335,88 @@ void pqHapticsProxies::contactTriangles(
     // The Frobenius norm bounds the inverse's largest stretch: a box that holds the ball.
     const double local = radius * inverse.topLeftCorner<3, 3>().norm();
     xyz.clear();
-    geoshaping::contact::AppendTrianglesNear(
-      data, this->cellLocator(data), centre.data(), local, xyz);
+    if (held)
+    {
+      vtkGeoShapingContactPatch::AppendTrianglesNear(
+        data, this->cellLocator(data), centre.data(), local, xyz);
+    }
+    else if (!this->serverPatch(source->getProxy(), port, centre.data(), local,
+               similarity(m.topLeftCorner<3, 3>()) ? nearest : 0, xyz))
+    {
+      continue;
+    }
     for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
     {
       out.push_back((m * Eigen::Vector4d(xyz[i], xyz[i + 1], xyz[i + 2], 1.0)).hnormalized());
     }
   }
+}
+
+bool pqHapticsProxies::serverPatch(vtkSMProxy* input, int port, const double centre[3],
+  double radius, std::size_t nearest, std::vector<double>& xyz)
+{
+  // A question to the server each frame: none of its pushes is an undo step.
+  const geoshaping::undo::Exclude asking;
+  this->ServerPatches.erase(std::remove_if(this->ServerPatches.begin(), this->ServerPatches.end(),
+                              [](const ServerPatchEntry& e) { return !e.input; }),
+    this->ServerPatches.end());
+  auto entry = std::find_if(this->ServerPatches.begin(), this->ServerPatches.end(),
+    [&](const ServerPatchEntry& e) { return e.input == input && e.port == port; });
+  if (entry == this->ServerPatches.end())
+  {
+    vtkSmartPointer<vtkSMSourceProxy> patch;
+    patch.TakeReference(vtkSMSourceProxy::SafeDownCast(
+      input->GetSessionProxyManager()->NewProxy("misc", "GeoShapingContactPatch")));
+    if (!patch)
+    {
+      this->PatchFigures.message = "no contact patch from the server: it has no "
+                                   "GeoShapingContactPatch (load the plugin on the server too)";
+      return false;
+    }
+    vtkSMPropertyHelper(patch, "Input").Set(input, static_cast<unsigned int>(port));
+    entry = this->ServerPatches.insert(this->ServerPatches.end(), ServerPatchEntry());
+    entry->input = input;
+    entry->port = port;
+    entry->patch = patch;
+  }
+  if (entry->late)
+  {
+    // The last round trip came late: this frame feels the last patch, the next asks again.
+    entry->late = false;
+    xyz.insert(xyz.end(), entry->last.begin(), entry->last.end());
+    this->PatchFigures.message = "the contact patch from the server came late: the last "
+                                 "patch kept every other frame";
+    return true;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  vtkSMSourceProxy* patch = entry->patch;
+  vtkSMPropertyHelper(patch, "Center").Set(centre, 3);
+  vtkSMPropertyHelper(patch, "Radius").Set(radius);
+  vtkSMPropertyHelper(patch, "MaxTriangles").Set(int(std::min<std::size_t>(nearest, VTK_INT_MAX)));
+  patch->UpdateVTKObjects();
+  patch->UpdatePipeline();
+  patch->UpdatePropertyInformation();
+  vtkSMPropertyHelper triangles(patch, "Triangles");
+  const unsigned int n = triangles.GetNumberOfElements() / 9 * 9;
+  entry->last.resize(n);
+  if (n > 0)
+  {
+    triangles.Get(entry->last.data(), n);
+  }
+  const double ms =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  entry->late = ms > this->PatchBudget;
+  xyz.insert(xyz.end(), entry->last.begin(), entry->last.end());
+  ServerPatchFigures& f = this->PatchFigures;
+  if (entry->late)
+  {
+    f.message = "the contact patch from the server came late (" + std::to_string(int(ms)) +
+                " ms): the next frame keeps it";
+  }
+  f.milliseconds = std::max(f.milliseconds, 0.0) + ms;
+  f.bytes += 8 * (long long)n;
+  f.triangles += (long long)(n / 9);
+  return true;
 }
 
 vtkStaticPointLocator* pqHapticsProxies::shownLocator()

@@ -19,12 +19,14 @@
 #include <vtkWeakPointer.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 class pqOutputPort;
 class vtkDataSet;
 class vtkPointSet;
 class vtkSMProxy;
+class vtkSMSourceProxy;
 
 // The first pipeline source of the session whose proxy is `xmlName` and, given a view, the
 // first of them shown in it (else the first); nullptr when there is none.
@@ -104,11 +106,32 @@ public:
   // (both scene coordinates), appended to `out` in scene coordinates, 3 vertices each.
   // Every visible representation counts, each through its own Position/Orientation/
   // Scale, except the deformation's upstream (the same surface, undeformed) and, unless
-  // `withShown`, the deformation's own output. Builtin sessions only: against a remote
-  // server the client holds no data and nothing is appended. Cell locators are cached
-  // per dataset and rebuilt when its geometry changes.
-  void contactTriangles(
-    const Eigen::Vector3d& world, double radius, bool withShown, std::vector<Eigen::Vector3d>& out);
+  // `withShown`, the deformation's own output. The client's own data where it holds it
+  // (builtin sessions; cell locators cached per dataset, rebuilt when its geometry
+  // changes); against a server, whose client holds none, each surface's patch is asked of
+  // the server's processes (a GeoShapingContactPatch proxy per surface, one round trip
+  // each: docs/haptics.md, "The contact patch on a server"), the same triangles; of a
+  // surface shown through a similarity (rotation, uniform scale: distances keep their
+  // order) only the `nearest` nearest to `world` travel (0: all), those the caller's
+  // keep_nearest would keep.
+  void contactTriangles(const Eigen::Vector3d& world, double radius, bool withShown,
+    std::size_t nearest, std::vector<Eigen::Vector3d>& out);
+  // The server's patches of the last contactTriangles call (milliseconds < 0: none asked,
+  // the client held the data); `message` says when a patch could not be had (no
+  // GeoShapingContactPatch on the server) or came late (the last patch kept then).
+  struct ServerPatchFigures
+  {
+    double milliseconds = -1.0; // the round trips of the call, summed
+    long long bytes = 0;        // the triangles' payload pulled (8 bytes a coordinate)
+    long long triangles = 0;
+    std::string message;
+  };
+  const ServerPatchFigures& serverPatchFigures() const { return this->PatchFigures; }
+  // A round trip longer than this keeps the last patch for the next frame instead of
+  // asking again (the GUI thread waits for each round trip); setPatchBudget changes it
+  // (0: every round trip counts as late).
+  static constexpr double PatchBudgetMilliseconds = 100.0;
+  void setPatchBudget(double milliseconds) { this->PatchBudget = milliseconds; }
 
   // The malleability the filter's last update used at the grasped vertex, read from
   // the server (works against a remote server); false while there is no grasp yet.
@@ -179,6 +202,22 @@ private:
     vtkMTimeType time = 0;
   };
   std::vector<CellLocatorEntry> CellLocators;
+  // The contact patch of `input`'s output `port` asked of the server's processes
+  // (vtkGeoShapingContactPatch), appended to `xyz` in its data coordinates; false when
+  // the server has no such proxy.
+  bool serverPatch(vtkSMProxy* input, int port, const double centre[3], double radius,
+    std::size_t nearest, std::vector<double>& xyz);
+  struct ServerPatchEntry
+  {
+    vtkWeakPointer<vtkSMProxy> input;
+    int port = 0;
+    vtkSmartPointer<vtkSMSourceProxy> patch;
+    std::vector<double> last; // the last patch, kept when the next round trip is skipped
+    bool late = false;        // the last round trip took more than PatchBudgetMilliseconds
+  };
+  std::vector<ServerPatchEntry> ServerPatches;
+  ServerPatchFigures PatchFigures;
+  double PatchBudget = PatchBudgetMilliseconds;
   bool DeformationModified = false;
   mutable bool InformationRead = false; // since the filter's last possible update
   bool PaintModified = false;

@@ -87,18 +87,24 @@ def write_state(path, out, paint_pieces=False):
     simple.SaveState(path)
 
 
-def session(out, tag, steps, state, reverse=False, hand="mouse", ranks=RANKS):
+def session(out, tag, steps, state, reverse=False, hand="mouse", ranks=RANKS,
+            remote_render=False, env=None):
     """One paraview client on a new `ranks`-process server: it connects (--url=cs://),
     or with `reverse` listens and the server connects to it (--url=csrc://, pvserver
     --reverse-connection); ranks=0: a builtin session (one process, no server). The test
     hook loads `state` once connected to every rank, starts the dock with hand 1 `hand`
-    (the mouse, or a trace it replays) and plays `steps`. Returns the output prefix.
-    The client and the server are stopped whatever happens."""
+    (the mouse, or a trace it replays) and plays `steps`. `remote_render`: the hook sets
+    the view's Remote Render Threshold to 0 after loading the state, so the server renders
+    and the client holds no geometry (checked here in the client's log). `env`: more
+    environment for the client. Returns the output prefix. The client and the server are
+    stopped whatever happens."""
     prefix = out + "-" + tag
-    env = dict(os.environ, GEOSHAPING_HAPTICS_TEST_OUTPUT=prefix,
+    env = dict(os.environ, **(env or {}), GEOSHAPING_HAPTICS_TEST_OUTPUT=prefix,
                GEOSHAPING_HAPTICS_REPLAY=hand, GEOSHAPING_HAPTICS_SCRIPT=steps,
                GEOSHAPING_GUI_STATE=state, GEOSHAPING_GUI_SERVER_PROCESSES=str(ranks),
                GEOSHAPING_HAPTICS_TEST_TIMEOUT=str(HOOK_SECONDS))
+    if remote_render:
+        env["GEOSHAPING_GUI_REMOTE_RENDER"] = "1"
     client_log = open(prefix + ".client.log", "w+")
     server_log = prefix + ".server.log"
     # Under xvfb-run: a pvserver without a display makes paraview 5.11 show "Server
@@ -139,6 +145,11 @@ def session(out, tag, steps, state, reverse=False, hand="mouse", ranks=RANKS):
         if log:
             log.seek(0)
             print("server (%s):" % tag, log.read()[-2000:])
+    if remote_render:
+        with open(prefix + ".client.log") as f:
+            assert "GeoShaping test: remote rendering = 1" in f.read(), \
+                "%s: the view does not render remotely" % tag
+        print("%s: the view renders remotely (the client holds no geometry)" % tag)
     return prefix
 
 
@@ -250,6 +261,37 @@ def check_shape(out, prefix, name):
              figures["last_grasp_point_id"], figures["last_grasp_malleability"]))
     assert same(shape, expected), "%s: the ranks' points differ from one process" % name
     return shape, figures, moved, malleability, owned_moved
+
+
+# A pull grasped over rank 1's piece (the lower plateau, x > 50); with remote rendering
+# the pick asks the ranks (docs/mpi.md, "Picking on several ranks").
+RANK1_PULL = ("press 0.62 0.5; move 0.62 0.52; move 0.62 0.54; move 0.62 0.56; "
+               "move 0.62 0.58; wait; dump drag; release; wait; dump commit")
+
+
+def run_pull_rank1(out, read_results, remote_render):
+    """run_gui_test.py pvserver_pull_rank1 / pvserver_remote_pull_rank1: the mouse grasps
+    a point of rank 1's piece, the client rendering or the server (Remote Render
+    Threshold 0), pulls it 40 px up and lets go. Every rank's points equal one process's
+    from the same grasp, Displacement and EditHistory, bit for bit, after the drag and
+    after the commit; the grasped point is rank 1's and both ranks' pieces moved."""
+    prepare(out)
+    write_state(out + "-scene.pvsm", out)
+    prefix = session(out, "pull", RANK1_PULL, out + "-scene.pvsm", remote_render=remote_render)
+    check_session(read_results(prefix + ".txt"), "Edits: 1, redoable 0")
+    _, figures, moved, malleability, by_rank = check_shape(out, prefix, "drag")
+    grasp = int(figures["last_grasp_point_id"])
+    _, pieces = gathered(out, "drag")
+    owner = [r for r, (gid, _, mine) in enumerate(pieces) if grasp in set(gid[mine].tolist())]
+    print("drag: grasp %d owned by rank %s, %d moved (%s owned per rank)"
+          % (grasp, owner, moved, by_rank))
+    assert owner == [1], "the grasp is not on rank 1's piece: %s" % owner
+    assert moved > 20 and min(by_rank) > 0, "the pull must move points of both ranks"
+    assert float(figures["last_grasp_malleability"]) == malleability, figures
+    _, committed, moved_after, _, _ = check_shape(out, prefix, "commit")
+    assert committed["edit_history"] == "1" and moved_after == moved, committed
+    print("GUI pull over rank 1 (%s rendering) on a %d-rank pvserver passed"
+          % ("remote" if remote_render else "local", RANKS))
 
 
 def run(out, read_results):

@@ -13,10 +13,17 @@ on a distributed server"), with the harness of gui_pvserver.py:
   the release commits and the dock's Undo undoes. Every rank's points equal one
   process's; the force the stylus is asked to render while it holds the drag is finite
   and equal to a builtin (one-process) paraview's on the same trace and to
-  k(m) (anchor - stylus) computed here; touching without a grasp is felt in one process
-  only (on a server the client holds no triangles to send the servo)."""
-import os
-
+  k(m) (anchor - stylus) computed here; touching the plateau without a grasp is felt as
+  in one process (the contact patch asked of the ranks, docs/haptics.md "The contact
+  patch on a server").
+- touch (pvserver_touch, pvserver_touch_remote): a replayed stylus comes down 2 mm into
+  the lower plateau, rank 1's piece, without a button; the force the servo is asked for
+  equals a builtin paraview's on the same trace within 1e-9 N (800 N/m x 2 mm along the
+  normal), with the client rendering (the default threshold) or the server rendering
+  (Remote Render Threshold 0, checked in the client's log), and the dock shows the
+  patch's round trip; with the client rendering every patch is taken as late (a budget
+  of 0 ms): every other frame keeps the last patch, the dock says so, the force is the
+  same."""
 import numpy as np
 
 import gui_pvserver as harness
@@ -54,23 +61,17 @@ def one_process_paint(figures):
 
 
 def run_paint(out, read_results, remote_render=False):
-    """`remote_render`: the test hook sets the view's Remote Render Threshold to 0 after
-    loading the state, so the server renders and the client holds no geometry (the pick
-    asks the ranks); checked in the client's log."""
+    """`remote_render`: the server renders and the client holds no geometry (the pick
+    asks the ranks; harness.session)."""
     prepare(out)
     harness.write_state(out + "-scene.pvsm", out, paint_pieces=True)
-    if remote_render:  # the test hook sets the view's threshold to 0 after the state
-        os.environ["GEOSHAPING_GUI_REMOTE_RENDER"] = "1"
-    try:
-        prefix = harness.session(out, "paint", PAINT_STEPS, out + "-scene.pvsm")
-    finally:
-        os.environ.pop("GEOSHAPING_GUI_REMOTE_RENDER", None)
-    if remote_render:
-        with open(prefix + ".client.log") as f:
-            log = f.read()
-        assert "GeoShaping test: remote rendering = 1" in log, "the view does not render remotely"
-        print("the view renders remotely (the client holds no geometry)")
-    check_session(read_results(prefix + ".txt"), "Edits: 0, redoable 0 (paint stroke redone)")
+    prefix = harness.session(out, "paint", PAINT_STEPS, out + "-scene.pvsm",
+                             remote_render=remote_render)
+    results = read_results(prefix + ".txt")
+    check_session(results, "Edits: 0, redoable 0 (paint stroke redone)")
+    # The dock shows the round trip of the ranks' pick when the view renders remotely.
+    print("dock:", results["label_Figures"])
+    assert ("last pick on the server: " in results["label_Figures"]) == remote_render, results
     painted = {}
     for name in ("paint", "undo", "redo"):
         figures = read_figures("%s-%s.txt" % (prefix, name))
@@ -183,12 +184,67 @@ def run_stylus(out, read_results):
     assert np.array_equal(felt, felt_alone), (felt, felt_alone)
     assert np.allclose(felt, pull, rtol=0, atol=1e-9), (felt, pull)
     assert np.linalg.norm(felt) < 3.3, "saturated: the stiffness would not show"
-    # Touching the plateau without a grasp: one process sends the servo the triangles near
-    # the stylus (800 N/m x 2 mm along the normal); a client of a server holds none
-    # (docs/mpi.md), so the stylus feels nothing there.
-    touch, touch_alone = read_figures(ranks + "-touch.txt"), read_figures(one + "-one_touch.txt")
-    print("touch force: %d ranks %s, one process %s" % (RANKS, force(touch), force(touch_alone)))
-    assert np.array_equal(force(touch), np.zeros(3)) and touch["in_contact_last_scene"] == "0"
-    assert touch_alone["in_contact_last_scene"] == "1", touch_alone
-    assert np.allclose(force(touch_alone), 800.0 * DEPTH * normal, rtol=0, atol=1e-3)
+    # Touching the plateau without a grasp: the servo gets the triangles near the stylus
+    # (800 N/m x 2 mm along the normal), on the server from the ranks' pieces.
+    check_touch(read_figures(ranks + "-touch.txt"), read_figures(one + "-one_touch.txt"), normal)
     print("GUI stylus test on a %d-rank pvserver passed" % RANKS)
+
+
+def check_touch(touch, touch_alone, normal):
+    """The force at rest of a touch without a grasp on the server (`touch`) equals one
+    process's (`touch_alone`) within 1e-9 N, and is the penalty contact k_c d along the
+    surface's normal; the dock shows the server patch's round trip."""
+    print("touch force: %d ranks %s, one process %s" % (RANKS, force(touch), force(touch_alone)))
+    print("  dock: %s" % touch.get("label_Figures"))
+    for figures in (touch, touch_alone):
+        assert figures["in_contact_last_scene"] == "1" and figures["force_status"] == "ok", figures
+    assert np.allclose(force(touch_alone), 800.0 * DEPTH * normal, rtol=0, atol=1e-3)
+    assert np.allclose(force(touch), force(touch_alone), rtol=0, atol=1e-9), (touch, touch_alone)
+    # The round trip ("contact patch from the server: ms, bytes"), or in a frame that kept
+    # the last patch, why ("the contact patch from the server came late").
+    assert "contact patch from the server" in touch["label_Figures"], touch["label_Figures"]
+    assert "contact patch from the server" not in touch_alone["label_Figures"], touch_alone
+
+
+# A point of the lower plateau (z = 0 for x > 53), rank 1's piece, far enough from the
+# seam (x = 50) that the patch (13.4 scene units each way: ContactReachMetres) is all
+# rank 1's.
+TOUCH_POINT = [70.0, 30.0, 0.0]
+TOUCH_STEPS = "until 7; dump touch"
+
+
+def run_touch(out, read_results, remote_render=False):
+    """A stylus 1 cm above TOUCH_POINT (0-2 s), 2 mm into it at 3 s and still to 9 s, no
+    button; the dump in the middle of the still stretch, on the 2-rank server (the view
+    rendering remotely with `remote_render`) and in a builtin session."""
+    prepare(out)
+    harness.write_state(out + "-scene.pvsm", out)
+    x, y, z, scale = device_axes()
+    rel = [(p - f) / scale for p, f in zip(TOUCH_POINT, CAMERA["focal_point"])]
+    point = np.array([sum(a[i] * rel[i] for i in range(3)) for a in (x, y, z)])
+    normal = np.array([a[2] for a in (x, y, z)])
+    above, below = point + 0.01 * normal, point - DEPTH * normal
+
+    def sample(t):
+        f = min(1.0, max(0.0, t - 2.0))
+        return list(above + f * (below - above)), 0
+
+    write_trace(out + ".trace", "touch the lower plateau", 9.0, sample)
+    # Remote rendering: the test hook sets the view's threshold to 0 after the state. Local
+    # rendering: every patch counts as late (a budget of 0 ms), so every other frame
+    # keeps the last one, which must change nothing but the dock's message.
+    late = {} if remote_render else {"GEOSHAPING_HAPTICS_PATCH_BUDGET_MS": "0"}
+    ranks = harness.session(out, "ranks", TOUCH_STEPS, out + "-scene.pvsm", hand=out + ".trace",
+                            remote_render=remote_render, env=late)
+    one = harness.session(out, "one", TOUCH_STEPS.replace("dump ", "dump one_"),
+                          out + "-scene.pvsm", hand=out + ".trace", ranks=0)
+    check_session(read_results(ranks + ".txt"), "Edits: 0, redoable 0")
+    check_session(read_results(one + ".txt"), "Edits: 0, redoable 0", ranks=0)
+    touch = read_figures(ranks + "-touch.txt")
+    _, _, moved, _, by_rank = check_shape(out, ranks, "touch")
+    assert moved == 0, "touching must not deform"
+    check_touch(touch, read_figures(one + "-one_touch.txt"), normal)
+    if not remote_render:  # every patch late (whether one is late otherwise is the machine's)
+        assert "came late" in touch["label_Figures"], touch["label_Figures"]
+    print("GUI touch test (rank 1's piece, %s rendering) on a %d-rank pvserver passed"
+          % ("remote" if remote_render else "local", RANKS))

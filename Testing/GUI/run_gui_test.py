@@ -314,11 +314,19 @@ def main():
         import gui_pvserver
         gui_pvserver.run(out, read_results)
         return
-    if mode in ("pvserver_paint", "pvserver_paint_remote", "pvserver_stylus"):
+    if mode in ("pvserver_pull_rank1", "pvserver_remote_pull_rank1"):
+        import gui_pvserver
+        gui_pvserver.run_pull_rank1(out, read_results, remote_render=mode.startswith(
+            "pvserver_remote"))
+        return
+    if mode in ("pvserver_paint", "pvserver_paint_remote", "pvserver_stylus", "pvserver_touch",
+                "pvserver_touch_remote"):
         import gui_pvserver_hands
         hands = gui_pvserver_hands
         if mode == "pvserver_stylus":
             hands.run_stylus(out, read_results)
+        elif mode.startswith("pvserver_touch"):
+            hands.run_touch(out, read_results, remote_render=mode == "pvserver_touch_remote")
         else:
             hands.run_paint(out, read_results, remote_render=mode == "pvserver_paint_remote")
         return

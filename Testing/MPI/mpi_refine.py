@@ -8,7 +8,8 @@ mpi_deform.py does, deforms it with ChainMailDeformation and one envelope refine
 Arguments: SCENE OUT [SOLVER] (surface or slab; SOLVER Envelope by default: another one is
 refused on more than one rank, and the output is the undeformed input; "Obstacles" keeps
 Envelope and connects an obstacle below the scene: the refinement with obstacles is refused on more
-than one rank)."""
+than one rank; "Markers" keeps Envelope and honours three markers: HonourMarkers with markers
+is refused on more than one rank)."""
 import json
 import os
 import sys
@@ -23,7 +24,8 @@ scene, out = sys.argv[1], sys.argv[2]
 solver = sys.argv[3] if len(sys.argv) > 3 else "Envelope"
 obstacles = solver == "Obstacles"
 nearest = solver == "Nearest"  # the same point grasped by GraspMode Nearest To Position
-solver = "Envelope" if obstacles or nearest else solver
+markers = solver == "Markers"
+solver = "Envelope" if obstacles or nearest or markers else solver
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
@@ -51,6 +53,9 @@ chain.RefinementSolver = solver
 if obstacles:
     chain.Obstacles = [Plane(Origin=[-1e3, -1e3, -1e3], Point1=[1e3, -1e3, -1e3],  # noqa: F405
                              Point2=[-1e3, 1e3, -1e3])]
+if markers:
+    chain.Markers = [PointSource(NumberOfPoints=3)]  # noqa: F405
+    chain.HonourMarkers = 1
 
 ids.UpdatePipeline()
 whole = ids.GetClientSideObject().GetOutputDataObject(0)

@@ -39,9 +39,12 @@ def socket_bytes(port):
     return total
 
 
-def client(port, out):
-    from paraview import servermanager
-    from paraview.simple import Connect, Disconnect, GetActiveViewOrCreate, LoadPlugin, Render, Show
+def remote_scene(port):
+    """In a client (port 0: builtin session): the deformed fault-step horizon, distributed
+    over the server's ranks, and with a server its render view rendering remotely
+    (Remote Render Threshold 0). Returns (the deformation, the view or None, whether the
+    view renders remotely)."""
+    from paraview.simple import Connect, GetActiveViewOrCreate, LoadPlugin, Render, Show
     import paraview.simple as simple
 
     if port:
@@ -56,14 +59,55 @@ def client(port, out):
     chain.Displacement = [0.0, 0.0, 8.0]
     chain.OutputPointsPrecision = "Double"
     chain.UpdatePipeline()
-    remote_rendering = False
-    if port:  # the view renders on the server (the builtin session needs no view)
-        view = GetActiveViewOrCreate("RenderView")
-        view.ViewSize = [400, 300]
-        view.RemoteRenderThreshold = 0.0
-        Show(chain, view)
-        Render(view)
-        remote_rendering = bool(view.GetClientSideObject().GetUseDistributedRenderingForRender())
+    if not port:  # the builtin session needs no view
+        return chain, None, False
+    view = GetActiveViewOrCreate("RenderView")
+    view.ViewSize = [400, 300]
+    view.RemoteRenderThreshold = 0.0
+    Show(chain, view)
+    Render(view)
+    return chain, view, bool(view.GetClientSideObject().GetUseDistributedRenderingForRender())
+
+
+def builtin_and_served(script):
+    """`script`'s client run in a builtin session and on a new `mpiexec -n 2 pvserver`
+    (its view rendering remotely, checked): (its builtin answer, its served answer), or
+    the test fails."""
+    import tempfile
+    import pvserver_process
+    from mpi_driver import ENV, fail, run_client
+
+    env = {k: v for k, v in ENV.items()
+           if not (k.startswith("OMPI_") or k.startswith("PMIX_") or k.startswith("OPAL_"))}
+    with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as tmp:
+        def client_answer(port, name):  # the client's view shows the server's image in a window
+            return run_client(script, port, os.path.join(tmp, name + ".json"), env,
+                              display=bool(port))
+
+        builtin, why = client_answer(0, "builtin")
+        if builtin is None:
+            fail("builtin: " + why)
+        proc, port, log = pvserver_process.start(2, os.path.join(tmp, "pvserver.log"), display=True)
+        try:
+            served, why = client_answer(port, "pvserver")
+        finally:
+            pvserver_process.stop(proc, 20)
+            log.seek(0)
+            server_log = log.read()
+        if served is None:
+            fail("2-rank pvserver: %s\nserver log: %s" % (why, server_log[-2000:]))
+        if "ERR|" in server_log:
+            fail("the server logged an error: " + server_log[-2000:])
+        if not served["remote_rendering"]:
+            fail("the view on the 2-rank pvserver does not render remotely")
+    return builtin, served
+
+
+def client(port, out):
+    from paraview import servermanager
+    from paraview.simple import Disconnect
+
+    chain, _, remote_rendering = remote_scene(port)
     pick = servermanager.ProxyManager().SMProxyManager.NewProxy("misc", "GeoShapingRayPick")
     servermanager.vtkSMPropertyHelper(pick, "Input").Set(chain.SMProxy, 0)
     pick.UpdateVTKObjects()
@@ -95,54 +139,31 @@ def client(port, out):
 
 def driver():
     import numpy as np
-    import pvserver_process
-    from mpi_driver import ENV, fail, run_client
+    from mpi_driver import fail
 
-    env = {k: v for k, v in ENV.items()
-           if not (k.startswith("OMPI_") or k.startswith("PMIX_") or k.startswith("OPAL_"))}
-    with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as tmp:
-        def client_answer(port, name):  # the client's view shows the server's image in a window
-            return run_client(__file__, port, os.path.join(tmp, name + ".json"), env,
-                              display=bool(port))
-
-        builtin, why = client_answer(0, "builtin")
-        if builtin is None:
-            fail("builtin: " + why)
-        proc, port, log = pvserver_process.start(2, os.path.join(tmp, "pvserver.log"), display=True)
-        try:
-            served, why = client_answer(port, "pvserver")
-        finally:
-            pvserver_process.stop(proc, 20)
-            log.seek(0)
-            server_log = log.read()
-        if served is None:
-            fail("2-rank pvserver: %s\nserver log: %s" % (why, server_log[-2000:]))
-        if "ERR|" in server_log:
-            fail("the server logged an error: " + server_log[-2000:])
-        if not served["remote_rendering"]:
-            fail("the view on the 2-rank pvserver does not render remotely")
-        b = np.array(builtin["bounds"])
-        size = np.linalg.norm(b[1::2] - b[0::2])
-        ranks = [0, 0]
-        for ray, one, two in zip(RAYS, builtin["picks"], served["picks"]):
-            if one["hit"] != two["hit"]:
-                fail("ray %s: hit %d on one process, %d on two" % (ray, one["hit"], two["hit"]))
-            if not one["hit"]:
-                continue
-            ranks[two["rank"]] += 1
-            if one["id"] != two["id"]:
-                fail("ray %s: point %d on one process, %d on two" % (ray, one["id"], two["id"]))
-            for key in ("point", "normal"):
-                scale = size if key == "point" else 1.0
-                if np.abs(np.subtract(one[key], two[key])).max() > 1e-9 * scale:
-                    fail("ray %s: %s %s on one process, %s on two" % (ray, key, one[key], two[key]))
-        print("surface bounds %s" % b)
-        if min(ranks) < 5:
-            fail("hits per rank %s: the rays must cross both pieces" % ranks)
-        print("ok: %d hits over rank 0's piece, %d over rank 1's, %d misses: equal to one process"
-              % (ranks[0], ranks[1], len(RAYS) - sum(ranks)))
-        print("round trip per pick, 2 ranks, loopback: %.2f ms, %.0f bytes (builtin %.2f ms)"
-              % (served["ms"], served["bytes"], builtin["ms"]))
+    builtin, served = builtin_and_served(__file__)
+    b = np.array(builtin["bounds"])
+    size = np.linalg.norm(b[1::2] - b[0::2])
+    ranks = [0, 0]
+    for ray, one, two in zip(RAYS, builtin["picks"], served["picks"]):
+        if one["hit"] != two["hit"]:
+            fail("ray %s: hit %d on one process, %d on two" % (ray, one["hit"], two["hit"]))
+        if not one["hit"]:
+            continue
+        ranks[two["rank"]] += 1
+        if one["id"] != two["id"]:
+            fail("ray %s: point %d on one process, %d on two" % (ray, one["id"], two["id"]))
+        for key in ("point", "normal"):
+            scale = size if key == "point" else 1.0
+            if np.abs(np.subtract(one[key], two[key])).max() > 1e-9 * scale:
+                fail("ray %s: %s %s on one process, %s on two" % (ray, key, one[key], two[key]))
+    print("surface bounds %s" % b)
+    if min(ranks) < 5:
+        fail("hits per rank %s: the rays must cross both pieces" % ranks)
+    print("ok: %d hits over rank 0's piece, %d over rank 1's, %d misses: equal to one process"
+          % (ranks[0], ranks[1], len(RAYS) - sum(ranks)))
+    print("round trip per pick, 2 ranks, loopback: %.2f ms, %.0f bytes (builtin %.2f ms)"
+          % (served["ms"], served["bytes"], builtin["ms"]))
 
 
 if __name__ == "__main__":

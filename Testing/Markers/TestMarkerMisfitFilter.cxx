@@ -1,5 +1,6 @@
 // vtkMarkerMisfitFilter against misfits worked by hand (a tilted plane, a box) and against
 // markers sampled on a real CRESCENT surface and moved by known amounts.
+#include "marker_samples.h"
 #include "vtkMarkerMisfitFilter.h"
 
 #include "vtkCellArray.h"
@@ -7,7 +8,6 @@
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
-#include "vtkGocadTSurfReader.h"
 #include "vtkHexahedron.h"
 #include "vtkIdList.h"
 #include "vtkMath.h"
@@ -24,9 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <limits>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -59,16 +57,7 @@ Result Misfit(vtkDataObject* surface, vtkDataObject* markers)
   return { filter->GetOutput(), capture->GetErrorMessage(), capture->GetWarningMessage() };
 }
 
-vtkSmartPointer<vtkPolyData> Points(const std::vector<std::array<double, 3>>& xyz)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (const auto& p : xyz)
-    points->InsertNextPoint(p.data());
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  return data;
-}
+using markers_testing::Points;
 
 // z = 0.1 x + 0.2 y + 5 over [0, 10]^2, 10 x 10 squares cut into triangles.
 double Plane(double x, double y)
@@ -200,46 +189,13 @@ TEST(MarkerMisfitFilter, BadInputIsRefusedAndLeftUntouched)
 // z they read VerticalMisfit = -dz and |Misfit| <= |dz| with the opposite sign.
 TEST(MarkerMisfitFilter, MarkersSampledOnARealSurfaceReadTheirKnownOffsets)
 {
-  const std::string path = std::string(GEOSHAPING_CFM_DIR) + "/mccrory_2012_cascadia_interface.ts";
-  if (!std::filesystem::exists(path))
+  std::string path;
+  const auto samples = markers_testing::SampleCascadia(7, 200, 50, 1.0, path);
+  if (!samples.surface)
     GTEST_SKIP() << "CRESCENT data absent: " << path;
-  vtkNew<vtkGocadTSurfReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkPolyData* surface = reader->GetOutput();
-  ASSERT_GT(surface->GetNumberOfPolys(), 1000);
-  const double size = surface->GetLength();
-  double edge = 0.0;
-  {
-    double a[3], b[3];
-    surface->GetPoint(surface->GetCell(0)->GetPointId(0), a);
-    surface->GetPoint(surface->GetCell(0)->GetPointId(1), b);
-    edge = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-  }
-  std::mt19937 random(7);
-  std::uniform_int_distribution<vtkIdType> cell(0, surface->GetNumberOfCells() - 1);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<std::array<double, 3>> xyz;
-  std::vector<double> dz;
-  for (int k = 0; k < 200; ++k)
-  {
-    vtkIdList* ids = surface->GetCell(cell(random))->GetPointIds();
-    double u = unit(random), v = unit(random);
-    if (u + v > 1.0)
-      u = 1.0 - u, v = 1.0 - v;
-    double p0[3], p1[3], p2[3];
-    surface->GetPoint(ids->GetId(0), p0);
-    surface->GetPoint(ids->GetId(1), p1);
-    surface->GetPoint(ids->GetId(2), p2);
-    const double offset = k < 50 ? 0.0 : (unit(random) - 0.5) * 0.2 * edge;
-    std::array<double, 3> m;
-    for (int c = 0; c < 3; ++c)
-      m[c] = (1 - u - v) * p0[c] + u * p1[c] + v * p2[c];
-    m[2] += offset;
-    xyz.push_back(m);
-    dz.push_back(offset);
-  }
-  const Result r = Misfit(surface, Points(xyz));
+  const auto& dz = samples.dz;
+  const double size = samples.size;
+  const Result r = Misfit(samples.surface, Points(samples.xyz));
   ASSERT_EQ(r.Errors, "");
   const double tolerance = 1e-9 * size;
   for (vtkIdType i = 0; i < 200; ++i)

@@ -1,5 +1,7 @@
 """Marker Misfit through the plugin: markers from a CSV (CSV Reader -> Table To Points)
-and from a GOCAD VSet, against a ChainMail output; the misfit follows a pull."""
+and from a GOCAD VSet, against a ChainMail output; the misfit follows a pull. ChainMail
+Deformation's Markers and HonourMarkers: a pull next to honoured wells leaves them on the
+surface."""
 import os
 
 from geoshaping_testing import check, load
@@ -44,4 +46,27 @@ again = MarkerMisfit(Input=horizon, Markers=vset)  # noqa: F405
 out = sm.Fetch(again)
 values = [out.GetPointData().GetArray("VerticalMisfit").GetValue(i) for i in range(3)]
 check(values == [-2.0, 0.0, 1.0], "a VSet's markers read the same (%r)" % values)
+
+# Honoured while shaping: three wells on the horizon, a pull next to them. With
+# HonourMarkers they stay on it (Marker Misfit on the output reads 0); without, not.
+on_csv = os.path.join(tmp, "on.csv")
+with open(on_csv, "w") as f:
+    f.write("x,y,z\n3.5,4.5,0\n6.25,4.75,0\n4.5,6.5,0\n")
+wells = TableToPoints(Input=CSVReader(FileName=[on_csv]), XColumn="x", YColumn="y",
+                      ZColumn="z")
+shaped = {}
+for honour in (0, 1):
+    pull = ChainMailDeformation(Input=horizon, Markers=[wells], HonourMarkers=honour)  # noqa: F405
+    pull.GraspPointId = 5 * 21 + 5
+    pull.Displacement = [0.0, 0.0, 4.0]
+    out = sm.Fetch(MarkerMisfit(Input=pull, Markers=wells))  # noqa: F405
+    vertical = out.GetPointData().GetArray("VerticalMisfit")
+    shaped[honour] = [vertical.GetValue(i) for i in range(3)]
+    pull.UpdatePropertyInformation()
+    if honour:
+        honoured = pull.GetProperty("NumberOfHonouredMarkers").GetData()
+        check(honoured == 3, "three wells honoured (%r)" % honoured)
+check(max(abs(v) for v in shaped[1]) <= 1e-6 * 20 * 2 ** 0.5,
+      "honoured wells stay on the surface (%r)" % shaped[1])
+check(max(abs(v) for v in shaped[0]) > 0.1, "unhonoured wells do not (%r)" % shaped[0])
 print("marker misfit: ok")

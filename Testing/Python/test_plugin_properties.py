@@ -31,8 +31,9 @@ while not it.IsAtEnd():
     it.Next()
 check(sorted(shown) == sorted(["Input", "Obstacles", "MalleabilityArray", "ValidRegionFrame",
                                "StretchRange", "CompressionRange", "ShearRange", "PinnedArray",
+                               "Markers", "HonourMarkers",
                                "CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"]),
-      "the panel's default view shows the 12 shaping properties (%s)" % sorted(shown))
+      "the panel's default view shows the 14 shaping properties (%s)" % sorted(shown))
 check(all(chain.SMProxy.GetProperty(n).GetPanelVisibility() == "never"
           for n in ["StretchCurve", "CompressionCurve", "ShearCurve"]),
       "one way to give the transfer curve in the panel: the ranges (curves from Python)")
@@ -76,10 +77,12 @@ for i in range(sm_chain.GetNumberOfPropertyGroups()):
     groups[group.GetXMLLabel()] = [sm_chain.GetPropertyName(group.GetProperty(k))
                                    for k in range(group.GetNumberOfProperties())]
 check(list(groups) == ["Malleability", "Grasp", "How the pull spreads", "Pins", "Refinement",
-                       "Obstacles", "Editing", "Diagnostics"],
+                       "Obstacles", "Markers", "Editing", "Diagnostics"],
       "ChainMailDeformation's groups: %s" % list(groups))
 check(groups["Obstacles"] == ["Obstacles", "ObstacleClearance", "SlidingArray"],
       "the obstacles group holds the surfaces, the clearance and the sliding mask")
+check(groups["Markers"] == ["Markers", "HonourMarkers"],
+      "the markers group holds the wells and the switch that honours them")
 check(groups["Grasp"] == ["GraspMode", "GraspPointId", "GraspPosition", "Displacement"] and
       groups["Editing"] == ["CommitEdit", "UndoEdit", "RedoEdit", "ResetEdits"],
       "the grasp and edit groups hold their properties")

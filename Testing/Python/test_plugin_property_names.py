@@ -8,7 +8,8 @@ proxies they are used on: a display (`repr`, `display`) -> the ChainMailDeformat
 representation in a render view; ParaView's picking helper (`helper`, the mouse's pick:
 pqHapticsDisplay.cxx) -> a PickingHelper; a `viewProxy` -> the render view (the DEM
 Surface's view, pqDEMSurfaceBehavior.cxx); any other proxy -> one of the plugin's own
-proxies (the filters and the GeoShapingRayPick of the remote pick)."""
+proxies (the filters, the GeoShapingRayPick of the remote pick and the
+GeoShapingContactPatch of the remote contact patch)."""
 import glob
 import os
 import re
@@ -40,7 +41,8 @@ pins = MalleabilityPaint(Input=plane, PaintPins=1)  # noqa: F405
 view = CreateRenderView()
 display = Show(chain, view)
 ray_pick = servermanager.ProxyManager().NewProxy("misc", "GeoShapingRayPick")  # noqa: F405
-filters = [chain, paint, pins, ray_pick]
+patch = servermanager.ProxyManager().NewProxy("misc", "GeoShapingContactPatch")  # noqa: F405
+filters = [chain, paint, pins, ray_pick, patch]
 picking = servermanager.ProxyManager().NewProxy("misc", "PickingHelper")  # noqa: F405
 
 

@@ -1,8 +1,6 @@
-// ChainMail's order promises on real irregular meshes (issue 36): the CRESCENT CFM faults
-// and the Cascadia interface, GOCAD TSurf files read in place from GEOSHAPING_CFM_DIR
-// (never copied into the repository; every test here is skipped, saying so, when the
-// folder holds none), and a tetrahedral slab extruded from one of them. Global ids are
-// the filter's without GlobalIds: coordinate_ids() (coordinate_ids.h).
+// ChainMail's order promises on real irregular meshes (issue 36; the meshes and the scene:
+// real_meshes.h; every test here is skipped, saying so, when the data folder holds none).
+// Global ids are the filter's without GlobalIds: coordinate_ids() (coordinate_ids.h).
 //
 // Guarded promises (docs/deformer.md, "Order"):
 // - With the Link region, rotating the surface and the pull rotates the result, over
@@ -14,9 +12,8 @@
 // coordinates differs by whole edge lengths).
 #include "geoshaping/deform/chainmail_deformer.h"
 #include "geoshaping/parallel/coordinate_ids.h"
+#include "real_meshes.h"
 #include "test_pieces.h"
-
-#include "vtkGocadTSurfParser.h"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +21,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numeric>
 #include <random>
 #include <string>
@@ -34,205 +30,10 @@ using namespace geoshaping;
 
 namespace
 {
-
-struct RealMesh
-{
-  std::string name;
-  std::vector<double> xyz;
-  Adjacency adjacency;
-  double edge = 0.0; // mean edge length
-};
-
-Eigen::Vector3d point(const std::vector<double>& xyz, index_t v)
-{
-  return { xyz[3 * std::size_t(v)], xyz[3 * std::size_t(v) + 1], xyz[3 * std::size_t(v) + 2] };
-}
-
-double mean_edge(const std::vector<double>& xyz, const Adjacency& adj)
-{
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (index_t v = 0; v < adj.size(); ++v)
-    for (const index_t* w = adj.begin(v); w != adj.end(v); ++w)
-    {
-      sum += (point(xyz, v) - point(xyz, *w)).norm();
-      ++count;
-    }
-  return count ? sum / double(count) : 0.0;
-}
-
-// A TSurf file's points (local coordinates: the first point subtracted, so the tests'
-// rotations do not stretch rounding over UTM-sized values) and its triangles' edges.
-bool read_tsurf(const std::string& path, RealMesh& m)
-{
-  std::ifstream in(path);
-  vtkGocadTSurfData data;
-  std::string error;
-  if (!in || !vtkGocadTSurfParse(in, data, error) || data.GetNumberOfPoints() < 3)
-    return false;
-  m.name = path.substr(path.find_last_of('/') + 1);
-  m.xyz = data.Points;
-  for (std::size_t i = 3; i < m.xyz.size(); ++i)
-    m.xyz[i] -= m.xyz[i % 3];
-  m.xyz[0] = m.xyz[1] = m.xyz[2] = 0.0;
-  AdjacencyBuilder builder(index_t(data.GetNumberOfPoints()));
-  for (std::size_t t = 0; t + 2 < data.Triangles.size(); t += 3)
-    builder.add_cell(CellKind::triangle, &data.Triangles[t], 3);
-  m.adjacency = builder.build();
-  m.edge = mean_edge(m.xyz, m.adjacency);
-  return true;
-}
-
-// A tetrahedral slab under a surface: `layers` more copies of it, each 0.8 mean edge
-// lengths below the last (along -z), each triangle's prism cut into three tetrahedra by
-// the order of its vertex ids (a split both neighbours of a face agree on).
-RealMesh slab_under(const RealMesh& s, const std::vector<std::int64_t>& triangles, int layers)
-{
-  RealMesh m;
-  m.name = s.name + " (tetrahedral slab)";
-  const index_t n = index_t(s.xyz.size() / 3);
-  for (int l = 0; l <= layers; ++l)
-    for (index_t v = 0; v < n; ++v)
-    {
-      Eigen::Vector3d p = point(s.xyz, v);
-      p.z() -= 0.8 * s.edge * l;
-      m.xyz.insert(m.xyz.end(), { p.x(), p.y(), p.z() });
-    }
-  AdjacencyBuilder builder(n * index_t(layers + 1));
-  for (int l = 0; l < layers; ++l)
-    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
-    {
-      std::int64_t a[3] = { triangles[t], triangles[t + 1], triangles[t + 2] };
-      std::sort(a, a + 3);
-      const std::int64_t top = std::int64_t(n) * l, bottom = top + n;
-      const std::int64_t tets[3][4] = { { a[0] + top, a[1] + top, a[2] + top, a[2] + bottom },
-        { a[0] + top, a[1] + top, a[1] + bottom, a[2] + bottom },
-        { a[0] + top, a[0] + bottom, a[1] + bottom, a[2] + bottom } };
-      for (const auto& tet : tets)
-        builder.add_cell(CellKind::tetra, tet, 4);
-    }
-  m.adjacency = builder.build();
-  m.edge = mean_edge(m.xyz, m.adjacency);
-  return m;
-}
-
-std::vector<RealMesh> real_meshes()
-{
-  std::vector<RealMesh> out;
-  for (const char* file : { "mccrory_2012_cascadia_interface.ts", "Almanor.ts",
-         "Uhtanum_Ridge_-_Gable_Mountain.ts", "Southern_Whidbey_Island_north.ts", "Yaquina.ts" })
-  {
-    RealMesh m;
-    if (read_tsurf(std::string(GEOSHAPING_CFM_DIR) + "/" + file, m))
-      out.push_back(std::move(m));
-  }
-  // The slab under Devils Mountain (369 points, 3 layers).
-  {
-    std::ifstream in(std::string(GEOSHAPING_CFM_DIR) + "/Devils_Mountain.ts");
-    vtkGocadTSurfData data;
-    std::string error;
-    RealMesh s;
-    if (in && vtkGocadTSurfParse(in, data, error) &&
-        read_tsurf(std::string(GEOSHAPING_CFM_DIR) + "/Devils_Mountain.ts", s))
-      out.push_back(slab_under(s, data.Triangles, 3));
-  }
-  return out;
-}
-
-const std::vector<RealMesh>& meshes()
-{
-  static const std::vector<RealMesh> m = real_meshes();
-  return m;
-}
-
-#define SKIP_WITHOUT_DATA()                                                                        \
-  if (meshes().empty())                                                                            \
-  GTEST_SKIP() << "no CRESCENT CFM files in '" GEOSHAPING_CFM_DIR                                  \
-                  "' (set GEOSHAPING_CFM_DIR to the folder of the *.ts files)"
-
-// The scene on a mesh, in terms that turn with it: the grasp is the vertex nearest the
-// centroid; malleability is painted by distance r from the grasp in three bands (0.8 for
-// r < 4 mean edge lengths, 0.35 for r < 9, 0.6 beyond) with a rigid disc (0) of radius
-// 2.5 around the vertex nearest 6 from the grasp; `uniform`: 0.5 everywhere. Distances
-// only, so a rotation or translation paints the same values on the same ids.
-struct Scene
-{
-  index_t grasp = 0;
-  index_t second = 0; // pulled after the commit: the vertex nearest 5 edges behind the grasp
-  std::vector<float> malleability;
-  Eigen::Vector3d pull; // 12 mean edge lengths, a fixed random direction
-};
-
-Scene scene(const RealMesh& m, bool uniform)
-{
-  Scene s;
-  const index_t n = index_t(m.xyz.size() / 3);
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  for (index_t v = 0; v < n; ++v)
-    c += point(m.xyz, v);
-  c /= double(n);
-  double best = INFINITY;
-  for (index_t v = 0; v < n; ++v)
-    if ((point(m.xyz, v) - c).norm() < best)
-    {
-      best = (point(m.xyz, v) - c).norm();
-      s.grasp = v;
-    }
-  const Eigen::Vector3d g = point(m.xyz, s.grasp);
-  // The rigid disc's centre: the vertex nearest 6 edges from the grasp.
-  index_t disc = s.grasp;
-  best = INFINITY;
-  for (index_t v = 0; v < n; ++v)
-    if (std::abs((point(m.xyz, v) - g).norm() - 6.0 * m.edge) < best)
-    {
-      best = std::abs((point(m.xyz, v) - g).norm() - 6.0 * m.edge);
-      disc = v;
-    }
-  s.malleability.assign(std::size_t(n), 0.5f);
-  if (!uniform)
-    for (index_t v = 0; v < n; ++v)
-    {
-      const double r = (point(m.xyz, v) - g).norm() / m.edge;
-      float& a = s.malleability[std::size_t(v)];
-      a = r < 4.0 ? 0.8f : (r < 9.0 ? 0.35f : 0.6f);
-      if ((point(m.xyz, v) - point(m.xyz, disc)).norm() < 2.5 * m.edge)
-        a = 0.0f;
-    }
-  s.malleability[std::size_t(s.grasp)] = uniform ? 0.5f : 0.8f;
-  s.pull = 12.0 * m.edge * Eigen::Vector3d(0.3, -0.5, 0.81).normalized();
-  const Eigen::Vector3d behind = g - 5.0 * m.edge * s.pull.normalized();
-  best = INFINITY;
-  for (index_t v = 0; v < n; ++v)
-    if (v != s.grasp && (point(m.xyz, v) - behind).norm() < best)
-    {
-      best = (point(m.xyz, v) - behind).norm();
-      s.second = v;
-    }
-  return s;
-}
-
-Eigen::Matrix3d random_rotation(std::mt19937& rng)
-{
-  std::normal_distribution<double> n(0.0, 1.0);
-  Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
-  q.normalize();
-  return q.toRotationMatrix();
-}
-
-// x -> R x + t on every point.
-std::vector<double> moved(
-  const std::vector<double>& xyz, const Eigen::Matrix3d& R, const Eigen::Vector3d& t)
-{
-  std::vector<double> out(xyz.size());
-  for (std::size_t i = 0; i < xyz.size(); i += 3)
-  {
-    const Eigen::Vector3d p = R * Eigen::Vector3d(xyz[i], xyz[i + 1], xyz[i + 2]) + t;
-    out[i] = p.x();
-    out[i + 1] = p.y();
-    out[i + 2] = p.z();
-  }
-  return out;
-}
+using geoshaping::testing::moved;
+using geoshaping::testing::random_rotation;
+using geoshaping::testing::real_meshes;
+using geoshaping::testing::RealMesh;
 
 // An edit session as the filter drives it: global ids from coordinates, three frames of
 // a growing pull, commit, then two frames pulling `second` back. Returns every vertex's position
@@ -280,12 +81,12 @@ const char* frame_label(ValidRegionFrame f)
 // Rotating the mesh and the pull rotates every frame of the session (Link region).
 TEST(Promises, LinkResultTurnsWithTheMeshAndThePull)
 {
-  SKIP_WITHOUT_DATA();
+  SKIP_WITHOUT_REAL_MESHES();
   std::mt19937 rng(36);
-  for (const RealMesh& m : meshes())
+  for (const RealMesh& m : real_meshes())
     for (bool uniform : { false, true })
     {
-      const Scene s = scene(m, uniform);
+      const auto s = geoshaping::testing::real_scene(m, uniform);
       for (QueueKind q : { QueueKind::fifo, QueueKind::fifo_priority, QueueKind::max_violation })
       {
         const auto base = session(
@@ -310,10 +111,10 @@ TEST(Promises, LinkResultTurnsWithTheMeshAndThePull)
 // Translating the mesh and permuting its point ids change nothing (Axes and Link).
 TEST(Promises, TranslationAndRenumberingChangeNothing)
 {
-  SKIP_WITHOUT_DATA();
-  for (const RealMesh& m : meshes())
+  SKIP_WITHOUT_REAL_MESHES();
+  for (const RealMesh& m : real_meshes())
   {
-    const Scene s = scene(m, false);
+    const auto s = geoshaping::testing::real_scene(m, false);
     const index_t n = index_t(m.xyz.size() / 3);
     // Renumbering: new id perm[v] for old v, rows rebuilt (so their order changes too).
     std::vector<index_t> perm(static_cast<std::size_t>(n));
@@ -366,10 +167,10 @@ TEST(Promises, TranslationAndRenumberingChangeNothing)
 // global ids being the coordinates' (coordinate_ids.h), as the filter's without GlobalIds.
 TEST(Promises, PiecesGiveTheWholeMeshsBits)
 {
-  SKIP_WITHOUT_DATA();
-  for (const RealMesh& m : meshes())
+  SKIP_WITHOUT_REAL_MESHES();
+  for (const RealMesh& m : real_meshes())
   {
-    const Scene s = scene(m, false);
+    const auto s = geoshaping::testing::real_scene(m, false);
     const index_t n = index_t(m.xyz.size() / 3);
     const std::vector<std::int64_t> gid = coordinate_ids(m.xyz.data(), n);
     const std::vector<double> steps = { 0.4, 0.8, 1.2 };

@@ -72,6 +72,13 @@ pqHapticsTestHook::pqHapticsTestHook(
   // such edit is a release's commit.
   QObject::connect(dock->interactor(), &pqHapticsInteractor::editsChanged, this,
     [this]() { this->Commits += this->Dock->interactor()->lastEditResult().changed ? 1 : 0; });
+  // GEOSHAPING_HAPTICS_PATCH_BUDGET_MS: how long a server's contact patch may take before
+  // the next frame keeps it (0: every one is late).
+  if (qEnvironmentVariableIsSet("GEOSHAPING_HAPTICS_PATCH_BUDGET_MS"))
+  {
+    dock->interactor()->proxies().setPatchBudget(
+      qEnvironmentVariable("GEOSHAPING_HAPTICS_PATCH_BUDGET_MS").toDouble());
+  }
   const QStringList stall = qEnvironmentVariable("GEOSHAPING_HAPTICS_STALL").split(',');
   if (stall.size() == 2)
   {

@@ -525,6 +525,10 @@ void pqHapticsTestScript::dump(const QString& name)
     }
   }
   pqHapticsTestScript::writeForce(out, this->Dock->interactor()->figures().force[0]);
+  // What the dock's figures say (the server patch's round trip among them), on one line.
+  const QLabel* label = this->Dock->findChild<QLabel*>("Figures");
+  out << "label_Figures = " << (label ? label->text().replace('\n', " / ") : QString("(missing)"))
+      << "\n";
 }
 
 void pqHapticsTestScript::writeForce(

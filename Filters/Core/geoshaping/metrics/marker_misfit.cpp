@@ -9,16 +9,20 @@
 namespace geoshaping
 {
 
+std::ptrdiff_t nearest_crossing(double marker_z, const std::vector<double>& crossings)
+{
+  std::ptrdiff_t nearest = crossings.empty() ? -1 : 0;
+  for (std::size_t i = 1; i < crossings.size(); ++i)
+    if (std::abs(crossings[i] - marker_z) < std::abs(crossings[std::size_t(nearest)] - marker_z))
+      nearest = std::ptrdiff_t(i);
+  return nearest;
+}
+
 double vertical_misfit(double marker_z, const std::vector<double>& crossings, bool& inside)
 {
-  inside = !crossings.empty();
-  if (!inside)
-    return 0.0;
-  double nearest = crossings.front();
-  for (const double z : crossings)
-    if (std::abs(z - marker_z) < std::abs(nearest - marker_z))
-      nearest = z;
-  return nearest - marker_z;
+  const std::ptrdiff_t nearest = nearest_crossing(marker_z, crossings);
+  inside = nearest >= 0;
+  return inside ? crossings[std::size_t(nearest)] - marker_z : 0.0;
 }
 
 bool plane_elevation(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,

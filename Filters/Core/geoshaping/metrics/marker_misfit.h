@@ -44,6 +44,11 @@ namespace geoshaping
 bool plane_elevation(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
   double x, double y, double& z);
 
+// The index in `crossings` of the elevation nearest to marker_z (the first of equally near
+// ones), -1 when there is none: the crossing VerticalMisfit reads, and the one whose
+// triangle HonourMarkers pins (marker_pins.h).
+std::ptrdiff_t nearest_crossing(double marker_z, const std::vector<double>& crossings);
+
 // The surface minus the marker along z (above): `crossings` are the elevations where the
 // vertical line through the marker meets the surface. `inside` is set to whether there is
 // one; the result is 0 when there is none.
