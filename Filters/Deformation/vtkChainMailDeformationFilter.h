@@ -433,7 +433,6 @@ public:
   /// grasping a pinned vertex is. With HonourMarkers off, or no markers, the filter is
   /// as without this input, bit for bit.
   void AddMarkersConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(2, output); }
-  void SetMarkersConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
   void SetMarkersData(vtkDataObject* data) { this->SetInputDataObject(2, data); }
   void RemoveAllMarkersConnections() { this->SetInputConnection(2, nullptr); }
   vtkSetMacro(HonourMarkers, bool);
