@@ -4,6 +4,7 @@
 
 #include "pqHapticsBrushPanel.h"
 #include "pqHapticsDockRows.h"
+#include "pqHapticsMarkers.h"
 
 #include "geoshaping/haptics/openhaptics_device.h"
 #include "geoshaping/paint/brush.h"
@@ -286,6 +287,23 @@ QWidget* pqHapticsDockPanel::buildEdits()
   this->Edits->setObjectName("Edits");
   this->Edits->setWordWrap(true); // messages wrap instead of widening the dock
   grid->addWidget(this->Edits, 1, 0, 1, column);
+  // The markers as spheres coloured by misfit (a Marker Misfit filter, pqHapticsMarkers.h).
+  auto* showMarkers = new QPushButton("Show markers", box);
+  showMarkers->setObjectName("ShowMarkerMisfit");
+  showMarkers->setToolTip("Draw the deformation's markers as spheres coloured by their misfit "
+                          "(adds a Marker Misfit filter)");
+  QObject::connect(showMarkers, &QPushButton::clicked, this,
+    [this]()
+    {
+      this->Interactor->proxies().refresh();
+      QString why;
+      if (!pqHapticsMarkers::show(this->Interactor->proxies().deformation(),
+            pqActiveObjects::instance().activeView(), why))
+      {
+        this->Edits->setText(why);
+      }
+    });
+  grid->addWidget(showMarkers, 2, 0, 1, 2);
 
   // Alt, not Ctrl: ParaView's own undo stack owns Ctrl+Z / Ctrl+Y (Edit menu). Enabled
   // only while the interactor runs, so they never shadow anything otherwise.

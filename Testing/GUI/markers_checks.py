@@ -8,7 +8,9 @@ marker over a vertex reads it where the vertex is: a vertical pull keeps x and y
 different from the rest's 0.5; the release clears the line. Then the dock's "Snap to
 markers": one more edit, after which a vertex of the shown surface lies at each marker
 (within 1e-6 of the surface's size); its Undo gives the released shape bit for bit, its
-Redo the snapped one."""
+Redo the snapped one. Before the snap, the dock's "Show markers" draws them: a Marker
+Misfit filter shown as Point Gaussian spheres coloured by Misfit on a range symmetric
+about 0."""
 import os
 import re
 
@@ -17,7 +19,8 @@ import numpy as np
 from brush_checks import snapshot
 
 SCRIPT = ("wait; press 0.4 0.6; key Z; move 0.4 0.65; move 0.4 0.7; move 0.4 0.75; wait; "
-          "snapshot held; release; wait; snapshot released; snap; wait; snapshot snapped; "
+          "snapshot held; release; wait; snapshot released; showmarkers; wait; wait; "
+          "snapshot shown; snap; wait; snapshot snapped; "
           "undo; wait; snapshot undone; redo; wait; snapshot redone")
 LINE = re.compile(r"markers: vertical misfit RMS (\S+), max (\S+) \((\d+) inside\)")
 
@@ -69,6 +72,20 @@ def check(mode, out):
     assert "markers:" not in released["label_Figures"], released
 
     from gui_setup_markers_rule import markers
+
+    shown_markers, _ = snapshot(out, "shown")
+    print("shown: %s as %s coloured by %s, range %s, visible %s" % (
+        shown_markers.get("marker_misfit_points"),
+        shown_markers.get("marker_misfit_representation"),
+        shown_markers.get("marker_misfit_color"), shown_markers.get("marker_misfit_range"),
+        shown_markers.get("marker_misfit_visible")))
+    assert "MarkerMisfit1" in shown_markers["pipeline"].split(","), shown_markers["pipeline"]
+    assert shown_markers["marker_misfit_representation"] == "Point Gaussian", shown_markers
+    assert shown_markers["marker_misfit_color"] == "Misfit", shown_markers
+    assert shown_markers["marker_misfit_visible"] == "1", shown_markers
+    assert int(shown_markers["marker_misfit_points"]) == len(markers(rest)), shown_markers
+    low, high = [float(v) for v in shown_markers["marker_misfit_range"].split()]
+    assert low == -high and high > 1.0, (low, high)
 
     snapped, snapped_points = snapshot(out, "snapped")
     shape = snapped_points[:, 3:6]

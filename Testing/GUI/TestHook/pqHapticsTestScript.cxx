@@ -8,9 +8,11 @@
 #include <pqActiveObjects.h>
 #include <pqApplicationCore.h>
 #include <pqCoreUtilities.h>
+#include <pqDataRepresentation.h>
 #include <pqInputSelectorWidget.h>
 #include <pqLoadDataReaction.h>
 #include <pqObjectBuilder.h>
+#include <pqOutputPort.h>
 #include <pqPipelineBrowserWidget.h>
 #include <pqPipelineSource.h>
 #include <pqPropertiesPanel.h>
@@ -30,6 +32,7 @@
 #include <vtkMapper.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkPVDataInformation.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
 #include <vtkProperty.h>
@@ -39,6 +42,7 @@
 #include <vtkSMProxy.h>
 #include <vtkSMRenderViewProxy.h>
 #include <vtkSMSourceProxy.h>
+#include <vtkSMTransferFunctionProxy.h>
 #include <vtkSphereSource.h>
 
 #include <QVTKOpenGLNativeWidget.h>
@@ -129,11 +133,13 @@ bool pqHapticsTestScript::step(std::chrono::steady_clock::time_point since)
       radius->setValue(words[1].toDouble());
     }
   }
-  else if (verb == "undo" || verb == "redo" || verb == "snap")
+  else if (verb == "undo" || verb == "redo" || verb == "snap" || verb == "showmarkers")
   {
-    if (auto* button = this->Dock->findChild<QPushButton*>(verb == "undo"   ? "UndoEdit"
-                                                           : verb == "redo" ? "RedoEdit"
-                                                                            : "SnapToMarkers"))
+    const char* name = verb == "undo"   ? "UndoEdit"
+                       : verb == "redo" ? "RedoEdit"
+                       : verb == "snap" ? "SnapToMarkers"
+                                        : "ShowMarkerMisfit";
+    if (auto* button = this->Dock->findChild<QPushButton*>(name))
     {
       button->click();
     }
@@ -405,6 +411,27 @@ void pqHapticsTestScript::snapshot(const QString& name)
           << vtkSMPropertyHelper(proxy, "NumberOfObstacleBlockedPoints").GetAsIdType() << "\n";
     }
     out << "pipeline = " << pipelineRows() << "\n";
+    if (pqPipelineSource* misfit = pqHapticsFindSource("MarkerMisfit"))
+    {
+      // How the markers are drawn (pqHapticsMarkers.h) and their Misfit range.
+      pqDataRepresentation* repr = view ? misfit->getRepresentation(0, view) : nullptr;
+      vtkSMProxy* r = repr ? repr->getProxy() : nullptr;
+      out << "marker_misfit_representation = "
+          << (r ? vtkSMPropertyHelper(r, "Representation").GetAsString() : "(none)") << "\n";
+      out << "marker_misfit_color = "
+          << (r ? vtkSMPropertyHelper(r, "ColorArrayName").GetAsString(4) : "(none)") << "\n";
+      out << "marker_misfit_visible = " << (r ? vtkSMPropertyHelper(r, "Visibility").GetAsInt() : 0)
+          << "\n";
+      vtkSMProxy* lut = r ? vtkSMPropertyHelper(r, "LookupTable", true).GetAsProxy() : nullptr;
+      double range[2] = { 0.0, 0.0 };
+      if (lut)
+      {
+        vtkSMTransferFunctionProxy::GetRange(lut, range);
+      }
+      out << "marker_misfit_range = " << range[0] << " " << range[1] << "\n";
+      out << "marker_misfit_points = "
+          << misfit->getOutputPort(0)->getDataInformation()->GetNumberOfPoints() << "\n";
+    }
     pqHapticsWriteShown(out);
     pqHapticsWriteDrawnGrasp(out, deformation, shown);
     // The cursors shown (the view's visible sphere actors other than the data) and the

@@ -17,6 +17,8 @@
 //   exaggeration S     types S into the dock's vertical exaggeration
 //   undo | redo        clicks the dock's Undo / Redo
 //   snap               clicks the dock's Snap to markers
+//   showmarkers        clicks the dock's Show markers (the snapshot then writes how the
+//                      Marker Misfit filter is drawn: marker_misfit_*)
 //   editundo | editredo  Edit > Undo / Redo (ParaView's undo stack, Ctrl+Z / Ctrl+Y)
 //   until T            waits until T s have passed since the dock started (`since` of
 //                      step(): a replayed trace's clock starts inside the dock's start,
