@@ -88,6 +88,14 @@ def prepare(mode, out, env):
         env["GEOSHAPING_GUI_FALLOFF"] = "Constant"  # every vertex under a dab gets its share
 
 
+def mouse_script(env, script, setup):
+    """The mouse replays `script` (TestHook/pqHapticsTestScript.h) on the scene of the
+    paraview --script `setup` (a file beside this one)."""
+    env["GEOSHAPING_HAPTICS_REPLAY"] = "mouse"
+    env["GEOSHAPING_HAPTICS_SCRIPT"] = script
+    env["GEOSHAPING_GUI_SETUP"] = os.path.join(os.path.dirname(os.path.abspath(__file__)), setup)
+
+
 def snapshot(out, name):
     """(key = value texts, per-point array: x y z sx sy sz m)"""
     assert os.path.exists(out + "-%s.csv" % name), "no snapshot " + name

@@ -11,12 +11,11 @@ markers": one more edit, after which a vertex of the shown surface lies at each 
 Redo the snapped one. Before the snap, the dock's "Show markers" draws them: a Marker
 Misfit filter shown as Point Gaussian spheres coloured by Misfit on a range symmetric
 about 0."""
-import os
 import re
 
 import numpy as np
 
-from brush_checks import snapshot
+from brush_checks import mouse_script, snapshot
 
 SCRIPT = ("wait; press 0.4 0.6; key Z; move 0.4 0.65; move 0.4 0.7; move 0.4 0.75; wait; "
           "snapshot held; release; wait; snapshot released; showmarkers; wait; wait; "
@@ -26,10 +25,7 @@ LINE = re.compile(r"markers: vertical misfit RMS (\S+), max (\S+) \((\d+) inside
 
 
 def prepare(mode, out, env):
-    here = os.path.dirname(os.path.abspath(__file__))
-    env["GEOSHAPING_HAPTICS_REPLAY"] = "mouse"
-    env["GEOSHAPING_HAPTICS_SCRIPT"] = SCRIPT
-    env["GEOSHAPING_GUI_SETUP"] = os.path.join(here, "gui_setup_markers.py")
+    mouse_script(env, SCRIPT, "gui_setup_markers.py")
 
 
 def expected_figures(rest, shown):

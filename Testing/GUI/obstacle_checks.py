@@ -5,11 +5,10 @@ the fault-step horizon's plateau (z = 20) up into it. Checked from the hook's sn
 (TestHook/pqHapticsTestScript.h): the Pipeline Browser shows each filter once, no vertex
 crosses the plane (computed here), the dock shows the count held back, the grasp marker
 sits on the grasped vertex with a line to the cursor, and the release clears both."""
-import os
 
 import numpy as np
 
-from brush_checks import snapshot, vector
+from brush_checks import mouse_script, snapshot, vector
 
 CEILING = 25.0
 SCRIPT = ("obstacle Ceiling; wait; snapshot chosen; press 0.4 0.6; move 0.4 0.65; "
@@ -18,10 +17,7 @@ SCRIPT = ("obstacle Ceiling; wait; snapshot chosen; press 0.4 0.6; move 0.4 0.65
 
 
 def prepare(mode, out, env):
-    here = os.path.dirname(os.path.abspath(__file__))
-    env["GEOSHAPING_HAPTICS_REPLAY"] = "mouse"
-    env["GEOSHAPING_HAPTICS_SCRIPT"] = SCRIPT
-    env["GEOSHAPING_GUI_SETUP"] = os.path.join(here, "gui_setup_obstacle.py")
+    mouse_script(env, SCRIPT, "gui_setup_obstacle.py")
 
 
 def check(mode, out):
