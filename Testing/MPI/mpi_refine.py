@@ -9,7 +9,9 @@ Arguments: SCENE OUT [SOLVER] (surface or slab; SOLVER Envelope by default: anot
 refused on more than one rank, and the output is the undeformed input; "Obstacles" keeps
 Envelope and connects an obstacle below the scene: the refinement with obstacles is refused on more
 than one rank; "Markers" keeps Envelope and honours three markers: HonourMarkers with markers
-is refused on more than one rank)."""
+is refused on more than one rank; "Snap" keeps Envelope, connects three markers (not
+honoured) and, after the pull, sends SnapToMarkers: refused on more than one rank; the
+command releases the grasp, so the output is the input)."""
 import json
 import os
 import sys
@@ -25,7 +27,8 @@ solver = sys.argv[3] if len(sys.argv) > 3 else "Envelope"
 obstacles = solver == "Obstacles"
 nearest = solver == "Nearest"  # the same point grasped by GraspMode Nearest To Position
 markers = solver == "Markers"
-solver = "Envelope" if obstacles or nearest or markers else solver
+snap = solver == "Snap"
+solver = "Envelope" if obstacles or nearest or markers or snap else solver
 controller = vtkMultiProcessController.GetGlobalController()
 rank, nranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 LoadPlugin(os.environ["GEOSHAPING_PLUGIN"], ns=globals())
@@ -53,9 +56,9 @@ chain.RefinementSolver = solver
 if obstacles:
     chain.Obstacles = [Plane(Origin=[-1e3, -1e3, -1e3], Point1=[1e3, -1e3, -1e3],  # noqa: F405
                              Point2=[-1e3, 1e3, -1e3])]
-if markers:
+if markers or snap:
     chain.Markers = [PointSource(NumberOfPoints=3)]  # noqa: F405
-    chain.HonourMarkers = 1
+    chain.HonourMarkers = int(markers)
 
 ids.UpdatePipeline()
 whole = ids.GetClientSideObject().GetOutputDataObject(0)
@@ -92,6 +95,9 @@ if nearest:
     chain.GraspPosition = [position.GetValue(k) for k in range(3)]
 chain.Displacement = pull
 chain.UpdatePipeline()
+if snap:
+    chain.SMProxy.InvokeCommand("SnapToMarkers")
+    chain.UpdatePipeline()
 
 rows = owned_rows(chain.GetClientSideObject().GetOutputDataObject(0),
                   ghosts.GetClientSideObject().GetOutputDataObject(0), nranks, ["Malleability"])

@@ -6,7 +6,7 @@ here with numpy from the points, the malleability and the filter's default trans
 curves (an independent computation), is <= 1e-9 L. Then Dykstra on 2 ranks must be
 refused with an error naming what works, leaving the input undeformed, and so must
 the refinement with obstacles on 2 ranks (docs/obstacles.md, "Refused"), and HonourMarkers
-with markers (docs/markers.md). And 2 ranks grasping the same point
+with markers and SnapToMarkers (docs/markers.md). And 2 ranks grasping the same point
 by position (GraspMode Nearest To Position) must equal the 1-rank result.
 Usage: test_mpi_refinement.py SCENE (surface or slab)."""
 import json
@@ -56,10 +56,12 @@ with tempfile.TemporaryDirectory(dir=os.environ.get("GEOSHAPING_TEST_TMP")) as t
         print("%d ranks: %d points, %s" % (n, len(results[n]), stats[n]))
 
     # Dykstra, obstacles and honoured markers on 2 ranks: refused on every rank with an error naming
-    # what works (or what is missing), the input undeformed.
+    # what works (or what is missing), the input undeformed. SnapToMarkers too: no edit, and
+    # the command releases the grasp as every edit command does, so the input again.
     for option, wanted in (("Dykstra", "use RefinementSolver Envelope with ValidRegionFrame Axes"),
                            ("Obstacles", "refinement with Obstacles"),
-                           ("Markers", "HonourMarkers with markers")):
+                           ("Markers", "HonourMarkers with markers"),
+                           ("Snap", "SnapToMarkers: not on data split across processes yet")):
         cmd, result, errors = run_ranks(2, "mpi_refine.py", [scene, os.path.join(tmp, option), option])
         if result.returncode != 0 or len(errors) < 2 or not all(wanted in e for e in errors):
             show(cmd, result)
