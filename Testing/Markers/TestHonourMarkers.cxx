@@ -97,15 +97,22 @@ struct Shaper
   std::string Warnings() const { return this->Observer->GetWarningMessage(); }
 };
 
-// Marker Misfit's VerticalMisfit and Inside of `markers` against `surface`.
-std::vector<double> VerticalMisfit(vtkDataObject* surface, vtkDataObject* markers)
+// Marker Misfit's output for `markers` against `surface`.
+vtkSmartPointer<vtkPolyData> Measured(vtkDataObject* surface, vtkDataObject* markers)
 {
   vtkNew<vtkMarkerMisfitFilter> misfit;
   misfit->SetInputData(0, surface);
   misfit->SetMarkersData(markers);
   misfit->Update();
-  vtkDataArray* vertical = misfit->GetOutput()->GetPointData()->GetArray("VerticalMisfit");
-  vtkDataArray* inside = misfit->GetOutput()->GetPointData()->GetArray("Inside");
+  return misfit->GetOutput();
+}
+
+// Marker Misfit's VerticalMisfit and Inside of `markers` against `surface`.
+std::vector<double> VerticalMisfit(vtkDataObject* surface, vtkDataObject* markers)
+{
+  const auto measured = Measured(surface, markers);
+  vtkDataArray* vertical = measured->GetPointData()->GetArray("VerticalMisfit");
+  vtkDataArray* inside = measured->GetPointData()->GetArray("Inside");
   std::vector<double> v;
   for (vtkIdType i = 0; vertical && i < vertical->GetNumberOfTuples(); ++i)
     v.push_back(
@@ -551,11 +558,7 @@ TEST(HonourMarkers, SnapToMarkersIsOneEditThatUndoesBitForBit)
     for (std::size_t k = 0; k < 5; ++k)
       EXPECT_LE(std::abs(vertical[k]), 1e-6 * size) << "marker " << k << " honour " << honour;
     EXPECT_TRUE(std::isnan(vertical[5])) << "the marker outside stays outside";
-    vtkNew<vtkMarkerMisfitFilter> normal;
-    normal->SetInputData(0, out);
-    normal->SetMarkersData(markers);
-    normal->Update();
-    EXPECT_LE(FieldValue(normal->GetOutput(), "MisfitMax"), 1e-6 * size);
+    EXPECT_LE(FieldValue(Measured(out, markers), "MisfitMax"), 1e-6 * size);
     EXPECT_LE(shaper.Filter->GetMarkerVerticalMisfitMax(), 1e-6 * size) << "the dock's figure";
     EXPECT_NE(snapped, committed);
 
@@ -593,10 +596,9 @@ TEST(HonourMarkers, SnapToMarkersOnARealHorizon)
   const auto samples = markers_testing::SampleCascadia(13, 200, 50, 0.9, path);
   if (!samples.surface)
     GTEST_SKIP() << "CRESCENT data absent: " << path;
-  vtkPolyData* surface = samples.surface;
-  const double size = samples.size;
   const auto markers = Points(samples.xyz);
-  Shaper shaper(surface, markers, false);
+  const double size = samples.size;
+  Shaper shaper(samples.surface, markers, false);
   shaper.Filter->SetDefaultMalleability(0.7);
   const auto before = Coordinates(shaper.Pull(-1, 0, 0, 0));
   shaper.Filter->SnapToMarkers();
@@ -611,12 +613,9 @@ TEST(HonourMarkers, SnapToMarkersOnARealHorizon)
       << shaper.Warnings();
   vtkPolyData* out = shaper.Pull(-1, 0, 0, 0);
   ASSERT_TRUE(AllFinite(out));
-  vtkNew<vtkMarkerMisfitFilter> misfit;
-  misfit->SetInputData(0, out);
-  misfit->SetMarkersData(markers);
-  misfit->Update();
-  vtkDataArray* vertical = misfit->GetOutput()->GetPointData()->GetArray("VerticalMisfit");
-  vtkDataArray* normal = misfit->GetOutput()->GetPointData()->GetArray("Misfit");
+  const auto measured = Measured(out, markers);
+  vtkDataArray* vertical = measured->GetPointData()->GetArray("VerticalMisfit");
+  vtkDataArray* normal = measured->GetPointData()->GetArray("Misfit");
   vtkIdType on = 0;
   double worst = 0.0;
   for (vtkIdType k = 0; k < 200; ++k)
