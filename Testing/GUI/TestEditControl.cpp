@@ -29,6 +29,7 @@ public:
   geoshaping::EditSession session;
   std::vector<std::string> committed; // every record a commit made, in order
   bool deformed = false;              // the last update had a grasp
+  bool markers = false;               // SnapToMarkers has a marker to snap
   int grasps = 0;
   // Client proxy.
   std::vector<std::string> client;
@@ -70,6 +71,14 @@ public:
       ASSERT_TRUE(session.commit(deformer, geoshaping::EditRecipe(), moved, u));
       committed.push_back(session.last_edit());
       deformed = false;
+    }
+    else if (c == "SnapToMarkers")
+    {
+      if (!markers)
+        return; // refused: "no marker inside"
+      // The filter's frames, committed as one edit (a pull standing in for them).
+      grasp();
+      invoke("CommitEdit");
     }
     else if (c == "UndoEdit")
       session.undo();
@@ -121,8 +130,10 @@ TEST(EditControl, CommandProperties)
   EXPECT_STREQ(interactor::command_property(interactor::EditCommand::undo), "UndoEdit");
   EXPECT_STREQ(interactor::command_property(interactor::EditCommand::redo), "RedoEdit");
   EXPECT_STREQ(interactor::command_property(interactor::EditCommand::reset), "ResetEdits");
-  for (auto c : { interactor::EditCommand::commit, interactor::EditCommand::undo,
-         interactor::EditCommand::redo, interactor::EditCommand::reset })
+  EXPECT_STREQ(interactor::command_property(interactor::EditCommand::snap), "SnapToMarkers");
+  for (auto c :
+    { interactor::EditCommand::commit, interactor::EditCommand::undo, interactor::EditCommand::redo,
+      interactor::EditCommand::reset, interactor::EditCommand::snap })
   {
     interactor::EditCommand parsed = interactor::EditCommand::reset;
     EXPECT_TRUE(interactor::is_edit_command(interactor::command_property(c), parsed));
@@ -131,6 +142,28 @@ TEST(EditControl, CommandProperties)
   interactor::EditCommand unused;
   EXPECT_FALSE(interactor::is_edit_command("Displacement", unused));
   EXPECT_FALSE(interactor::is_edit_command("", unused));
+}
+
+// SnapToMarkers is followed as a commit: its one record appended, the grasp released; a
+// refused snap (no markers) leaves the list and says so.
+TEST(EditControl, SnapIsFollowedAsOneEditAndSaysWhenNothingSnapped)
+{
+  SessionFilter f;
+  interactor::EditResult r = run(interactor::EditCommand::snap, f);
+  EXPECT_FALSE(r.changed);
+  EXPECT_EQ(r.message, "no marker snapped");
+  EXPECT_TRUE(f.client.empty());
+  EXPECT_EQ(f.grasp_point_id, -1);
+  f.markers = true;
+  r = run(interactor::EditCommand::snap, f);
+  EXPECT_TRUE(r.changed);
+  EXPECT_EQ(r.edits, 1u);
+  ASSERT_EQ(f.client.size(), 1u);
+  EXPECT_EQ(f.client[0], f.committed[0]);
+  EXPECT_EQ(f.session.records(), f.client);
+  r = run(interactor::EditCommand::undo, f);
+  EXPECT_TRUE(r.changed);
+  EXPECT_TRUE(f.client.empty());
 }
 
 TEST(EditControl, CommitAppendsLastEditAndReleases)
