@@ -93,6 +93,15 @@ def check_ready(out):
         x0, x1, y0, y1, w, h))
     assert 0 <= x0 and x1 <= w and 0 <= y0 and y1 <= h, "the surface is not all in view"
     assert max((x1 - x0) / w, (y1 - y0) / h) >= 0.5, "the surface is not framed"
+    # An oblique first view of the relief: from the south, looking north and down at
+    # 35 degrees (30 ... 40) above the horizon, not straight down.
+    look = vector(dem, "view_direction")
+    elevation = np.degrees(np.arcsin(-look[2] / np.linalg.norm(look)))
+    heading = np.degrees(np.arctan2(look[0], look[1]))
+    print("first view: looking %.1f degrees down, heading %.1f degrees from north" % (
+        elevation, heading))
+    assert 30.0 <= elevation <= 40.0, "the first view is not oblique: %s" % look
+    assert abs(heading) <= 1.0, "the first view does not look north: %s" % look
 
     pulled, rows = snapshot(out, "pulled")
     rest, z = rows[:, 2], rows[:, 5]
