@@ -84,15 +84,21 @@ int vtkChainMailDeformationFilter::ComputePipelineMTime(vtkInformation* request,
 
 void vtkChainMailDeformationFilter::SetInputConnection(int port, vtkAlgorithmOutput* input)
 {
-  if (port == 1)
+  if (port == 1 && !this->Internals->HeldObstacles.empty())
+  {
     this->Internals->HeldObstacles.clear();
+    this->Modified(); // the refusal ends even when port 1 was already empty
+  }
   this->Superclass::SetInputConnection(port, input);
 }
 
 void vtkChainMailDeformationFilter::RemoveAllInputConnections(int port)
 {
-  if (port == 1)
+  if (port == 1 && !this->Internals->HeldObstacles.empty())
+  {
     this->Internals->HeldObstacles.clear();
+    this->Modified(); // the refusal ends even when port 1 was already empty
+  }
   this->Superclass::RemoveAllInputConnections(port);
 }
 
