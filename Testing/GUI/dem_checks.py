@@ -40,7 +40,7 @@ def write_geotiff(out):
 
 
 # Mode dem_ready: DEM Surface applied on the raster shown in 2D, then the paint and the
-# deformation; a vertical pull (Z: the view looks straight down) raises the hill's top.
+# deformation; a vertical pull (Z) raises the hill's top.
 READY_SCRIPT = ("open GDALRasterReader; wait; wait; snapshot raster; apply DEMSurface; wait; wait; snapshot dem; "
                 "apply MalleabilityPaint; apply ChainMailDeformation; wait; wait; "
                 "press 0.5 0.5; key Z; move 0.5 0.55; move 0.5 0.6; wait; snapshot pulled; "
@@ -73,7 +73,7 @@ def drawn_picks(out):
 def check_ready(out):
     """DEM Surface > Apply on the raster ParaView showed in 2D: a 3D view, the raster
     hidden, the surface coloured by Elevation and framed (its bounding box on screen,
-    filling most of the view); the pull raises the hill and the deformation's Elevation
+    filling 70 % of the view across), seen obliquely from the south; the pull raises the hill and the deformation's Elevation
     is the shaped z, its RestElevation the raster's."""
     from run_gui_test import read_results
     raster = read_results(out + "-raster.txt")
@@ -92,7 +92,7 @@ def check_ready(out):
     print("framed: the surface's box spans x %.0f ... %.0f, y %.0f ... %.0f of %g x %g px" % (
         x0, x1, y0, y1, w, h))
     assert 0 <= x0 and x1 <= w and 0 <= y0 and y1 <= h, "the surface is not all in view"
-    assert max((x1 - x0) / w, (y1 - y0) / h) >= 0.5, "the surface is not framed"
+    assert max((x1 - x0) / w, (y1 - y0) / h) >= 0.7, "the surface is not framed"
     # An oblique first view of the relief: from the south, looking north and down at
     # 35 degrees (30 ... 40) above the horizon, not straight down.
     look = vector(dem, "view_direction")
