@@ -2,6 +2,8 @@
 // geometry and handed to the core (geoshaping/deform/obstacles.h), which holds the rule.
 #include "vtkChainMailDeformationFilterInternals.h"
 
+#include "geoshaping/deform/obstacle_loop.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkCellArray.h"
@@ -12,8 +14,6 @@
 #include "vtkTriangleFilter.h"
 
 #include <cmath>
-#include <set>
-#include <vector>
 
 int vtkChainMailDeformationFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
@@ -32,21 +32,13 @@ namespace
 // Whether `self` is `producer` or upstream of it (every input of every algorithm).
 bool MadeFrom(vtkAlgorithm* producer, vtkAlgorithm* self)
 {
-  std::set<vtkAlgorithm*> seen;
-  std::vector<vtkAlgorithm*> open{ producer };
-  while (!open.empty())
-  {
-    vtkAlgorithm* algorithm = open.back();
-    open.pop_back();
-    if (algorithm == self)
-      return true;
-    if (!algorithm || !seen.insert(algorithm).second)
-      continue;
-    for (int port = 0; port < algorithm->GetNumberOfInputPorts(); ++port)
-      for (int c = 0; c < algorithm->GetNumberOfInputConnections(port); ++c)
-        open.push_back(algorithm->GetInputAlgorithm(port, c));
-  }
-  return false;
+  return geoshaping::made_from(producer, self,
+    [](vtkAlgorithm* algorithm, auto add)
+    {
+      for (int port = 0; port < algorithm->GetNumberOfInputPorts(); ++port)
+        for (int c = 0; c < algorithm->GetNumberOfInputConnections(port); ++c)
+          add(algorithm->GetInputAlgorithm(port, c));
+    });
 }
 } // namespace
 

@@ -1,6 +1,7 @@
 #include "vtkSMChainMailDeformationProxy.h"
 
 #include "edit_commands.h"
+#include "geoshaping/deform/obstacle_loop.h"
 #include "undo_step.h"
 #include "vtkSMEditHistoryUndoElement.h"
 
@@ -18,7 +19,6 @@
 #include "vtkSMSessionProxyManager.h"
 
 #include <cstring>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -121,20 +121,12 @@ namespace
 // Whether `self` is `proxy` or one of its producers, transitively (every proxy property).
 bool MadeFrom(vtkSMProxy* proxy, vtkSMProxy* self)
 {
-  std::set<vtkSMProxy*> seen;
-  std::vector<vtkSMProxy*> open{ proxy };
-  while (!open.empty())
-  {
-    vtkSMProxy* p = open.back();
-    open.pop_back();
-    if (p == self)
-      return true;
-    if (!p || !seen.insert(p).second)
-      continue;
-    for (unsigned int i = 0; i < p->GetNumberOfProducers(); ++i)
-      open.push_back(p->GetProducerProxy(i));
-  }
-  return false;
+  return geoshaping::made_from(proxy, self,
+    [](vtkSMProxy* p, auto add)
+    {
+      for (unsigned int i = 0; i < p->GetNumberOfProducers(); ++i)
+        add(p->GetProducerProxy(i));
+    });
 }
 
 // The name the Pipeline Browser shows, else the proxy's label.
