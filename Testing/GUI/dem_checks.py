@@ -44,7 +44,9 @@ def write_geotiff(out):
 READY_SCRIPT = ("open GDALRasterReader; wait; wait; snapshot raster; apply DEMSurface; wait; wait; snapshot dem; "
                 "apply MalleabilityPaint; apply ChainMailDeformation; wait; wait; "
                 "press 0.5 0.5; key Z; move 0.5 0.55; move 0.5 0.6; wait; snapshot pulled; "
-                "release; wait; snapshot released")
+                "release; wait; snapshot released; elevation 10; wait; snapshot turned; "
+                "open GDALRasterReader; wait; wait; apply DEMSurface; wait; wait; "
+                "snapshot second")
 
 
 def prepare(mode, out, env):
@@ -115,6 +117,17 @@ def check_ready(out):
     released, rows = snapshot(out, "released")
     assert released["edit_history"] == "1", released
     assert np.array_equal(rows[:, 7], rows[:, 5]), "Elevation after the release"
+    # A second DEM Surface shown in the view leaves the camera the user turned.
+    before = read_results(out + "-turned.txt")
+    turned = vector(before, "view_direction")
+    second = read_results(out + "-second.txt")
+    print("the user turned the camera to %.1f degrees down; after a second DEM Surface: %s" % (
+        np.degrees(np.arcsin(-turned[2])), second["view_direction"]))
+    assert second["interaction_mode"] == "0", "the second DEM Surface left the view in 2D"
+    assert np.allclose(vector(second, "view_direction"), turned, atol=1e-6), \
+        "the second DEM Surface turned the user's camera"
+    assert np.array_equal(vector(second, "view_position"), vector(before, "view_position")), \
+        "the second DEM Surface moved the user's camera"
 
 
 def check(mode, out):

@@ -76,6 +76,9 @@ void pqHapticsWriteShown(QTextStream& out)
   out << "view_px = " << size[0] << " " << size[1] << "\n";
   const double* look = renderer->GetActiveCamera()->GetDirectionOfProjection();
   out << "view_direction = " << look[0] << " " << look[1] << " " << look[2] << "\n";
+  const double* eye = renderer->GetActiveCamera()->GetPosition();
+  out << "view_position = " << QString::number(eye[0], 'g', 17) << " "
+      << QString::number(eye[1], 'g', 17) << " " << QString::number(eye[2], 'g', 17) << "\n";
   auto* model = pqApplicationCore::instance()->getServerManagerModel();
   for (pqPipelineSource* source : model->findItems<pqPipelineSource*>())
   {
