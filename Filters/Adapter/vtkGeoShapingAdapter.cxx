@@ -7,12 +7,14 @@
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
+#include "vtkObject.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -20,9 +22,11 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include "geoshaping/mesh/triangle_grid.h"
+#include "geoshaping/parallel/coordinate_ids.h"
 
 #include <algorithm>
 #include <cmath>
@@ -304,4 +308,97 @@ vtkDataArray* vtkGeoShapingAdapter::PointGlobalIds(vtkDataSet* input)
   vtkDataArray* ids = input->GetPointData()->GetGlobalIds();
   const char* name = ids ? ids->GetName() : nullptr;
   return name && std::strcmp(name, "___D3___GlobalNodeIds") == 0 ? nullptr : ids;
+}
+
+std::string vtkGeoShapingAdapter::PieceArraysProblem(vtkDataSet* input)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkDataArray* gids = PointGlobalIds(input);
+  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+  if (n > 0 && gids && (gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
+    return "a point GlobalIds array that is not one value per point";
+  if (n > 0 && ghosts && ghosts->GetNumberOfTuples() != n)
+    return "a vtkGhostType point array that is not one value per point";
+  return "";
+}
+
+vtkGeoShapingAdapter::PieceAgreement vtkGeoShapingAdapter::AgreeOnPieces(
+  geoshaping::Exchange* ex, bool ok, bool changed, vtkIdType n, bool hasIds)
+{
+  const std::vector<std::int64_t> mine{ ok, changed, n == 0 ? 0 : hasIds ? 1 : 2 };
+  PieceAgreement all;
+  bool withoutIds = false;
+  for (const auto& v : ex ? ex->all_gather(mine) : std::vector<std::vector<std::int64_t>>{ mine })
+  {
+    all.Ok = all.Ok && v[0];
+    all.AnyChanged = all.AnyChanged || v[1];
+    all.WithIds = all.WithIds || v[2] == 1;
+    withoutIds = withoutIds || v[2] == 2;
+  }
+  if (all.Ok && all.WithIds && withoutIds)
+  {
+    all.Ok = false;
+    all.Refusal = "Point GlobalIds on some processes and not on others";
+  }
+  else if (!all.Ok && ok)
+    all.Refusal = "Another process refused its piece";
+  return all;
+}
+
+std::vector<std::uint8_t> vtkGeoShapingAdapter::OwnedPoints(vtkDataSet* input)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+  std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+    owned[std::size_t(i)] =
+      !ghosts || (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
+  return owned;
+}
+
+std::vector<std::int64_t> vtkGeoShapingAdapter::CoordinateIds(const double* xyz, vtkIdType n,
+  std::vector<std::uint8_t>& owned, geoshaping::Exchange& ex, std::string& refusal)
+{
+  const std::vector<std::uint8_t> claimed = std::move(owned);
+  geoshaping::index_t coincident = 0;
+  std::vector<std::int64_t> ids =
+    geoshaping::coordinate_ids(xyz, geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
+  refusal = geoshaping::coincident_points_refusal(coincident, ex);
+  if (!refusal.empty())
+    ids.clear();
+  return ids;
+}
+
+bool vtkGeoShapingAdapter::IdentifyPiece(vtkDataSet* input, const double* xyz, bool globalIds,
+  geoshaping::Exchange& ex, std::vector<std::int64_t>& ids, std::vector<std::uint8_t>& owned,
+  std::string& refusal)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  owned = OwnedPoints(input);
+  refusal.clear();
+  if (!globalIds)
+  {
+    ids = CoordinateIds(xyz, n, owned, ex, refusal);
+    return refusal.empty();
+  }
+  vtkDataArray* gids = PointGlobalIds(input);
+  ids.assign(static_cast<std::size_t>(n), 0);
+  for (vtkIdType i = 0; gids && i < n; ++i)
+    ids[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
+  return true;
+}
+
+geoshaping::Adjacency vtkGeoShapingAdapter::BuildAdjacency(
+  vtkObject* self, vtkDataSet* input, const std::string& where, const char* consequence)
+{
+  vtkIdType skipped = 0;
+  geoshaping::Adjacency adjacency = BuildAdjacency(input, skipped);
+  if (skipped > 0)
+  {
+    vtkWarningWithObjectMacro(self, << where << skipped
+                                    << " cells are of an unsupported type (higher-order or "
+                                       "polyhedral) or have invalid point ids; "
+                                    << consequence);
+  }
+  return adjacency;
 }

@@ -4,7 +4,8 @@
  *
  * Shared by the GeoShaping filters so each converts its data one way: cell edges to a CSR
  * adjacency, points to doubles, and the modification times that tell a filter whether
- * its cached core state is still valid. Not wrapped.
+ * its cached core state is still valid; and so each sets up a piece of distributed data
+ * one way (its checks, the points it owns, its ids). Not wrapped.
  */
 #ifndef vtkGeoShapingAdapter_h
 #define vtkGeoShapingAdapter_h
@@ -13,14 +14,18 @@
 #include "vtkSmartPointer.h"         // For vtkSmartPointer
 #include "vtkType.h"
 
-#include "geoshaping/mesh/adjacency.h" // For Adjacency
+#include "geoshaping/mesh/adjacency.h"    // For Adjacency
+#include "geoshaping/parallel/exchange.h" // For Exchange
 
+#include <cstdint>
+#include <string>
 #include <vector>
 
 class vtkCellArray;
 class vtkDataArray;
 class vtkDataSet;
 class vtkInformationVector;
+class vtkObject;
 class vtkPointSet;
 class vtkPoints;
 
@@ -70,6 +75,55 @@ public:
   // input (every neighbour of an owned point on this process), more if downstream asked.
   static void RequestGhostRing(
     vtkInformationVector** inputVector, vtkInformationVector* outputVector);
+
+  ///@{
+  /// The distributed set-up of a piece (docs/mpi.md, "Ghosts" and "Identity"), one rule
+  /// for ChainMailDeformation, MalleabilityPaint and vtkGeoShapingGhostRing.
+  ///
+  /// What is wrong with a piece's point GlobalIds or vtkGhostType array ("" when
+  /// nothing): either must hold one value per point.
+  static std::string PieceArraysProblem(vtkDataSet* input);
+
+  /// Collective over `ex` (null: one process): every process's `ok` (its piece passed
+  /// its checks), `changed` and whether its piece (of `n` points) has point GlobalIds,
+  /// agreed. `Ok` when every piece passed and no pieces holding points differ in having
+  /// GlobalIds (no numbering can join them); else `Refusal` says why, on a process whose
+  /// own piece passed ("" on one that did not: it reports its own problem).
+  struct PieceAgreement
+  {
+    bool Ok = true;
+    bool AnyChanged = false;
+    bool WithIds = false;
+    std::string Refusal;
+  };
+  static PieceAgreement AgreeOnPieces(
+    geoshaping::Exchange* ex, bool ok, bool changed, vtkIdType n, bool hasIds);
+
+  /// The points this process owns: those vtkGhostType does not mark as duplicates (every
+  /// point without the array: the one process holding points, vtkGeoShapingGhostRing).
+  static std::vector<std::uint8_t> OwnedPoints(vtkDataSet* input);
+
+  /// Collective over `ex`: the ids of the `n` points xyz of a piece of a mesh without
+  /// point GlobalIds, numbered by coordinates, the same for any partition
+  /// (geoshaping/parallel/coordinate_ids.h). `owned` holds the points this piece claims
+  /// and receives those it owns (a seam point several pieces claim goes to the lowest).
+  /// Empty, with `refusal` (the same text on every process), when a piece holds two
+  /// points at one position (split nodes, which coordinates cannot keep apart).
+  static std::vector<std::int64_t> CoordinateIds(const double* xyz, vtkIdType n,
+    std::vector<std::uint8_t>& owned, geoshaping::Exchange& ex, std::string& refusal);
+
+  /// Collective over `ex`: a piece's ids and the points it owns (OwnedPoints): its point
+  /// GlobalIds when `globalIds` (decided alike on every process, AgreeOnPieces), else
+  /// CoordinateIds of xyz. False, with `refusal`, as CoordinateIds.
+  static bool IdentifyPiece(vtkDataSet* input, const double* xyz, bool globalIds,
+    geoshaping::Exchange& ex, std::vector<std::int64_t>& ids, std::vector<std::uint8_t>& owned,
+    std::string& refusal);
+
+  /// BuildAdjacency, warning through `self` when cells were skipped: "<where><count>
+  /// cells are of an unsupported type ... ; <consequence>".
+  static geoshaping::Adjacency BuildAdjacency(
+    vtkObject* self, vtkDataSet* input, const std::string& where, const char* consequence);
+  ///@}
 };
 
 #endif

@@ -13,8 +13,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "geoshaping/parallel/coordinate_ids.h"
-
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -111,14 +109,12 @@ vtkPointSet* vtkGeoShapingGhostRing::Ensure(
   shallow->ShallowCopy(input);
   if (!anyIds)
   {
-    // Numbered by coordinates, the same numbers for any partition (coordinate_ids.h).
+    // Numbered by coordinates, the same numbers for any partition, every point claimed
+    // (no ghosts yet).
     vtkGeoShapingControllerExchange ex(controller, 914500);
-    const std::vector<std::uint8_t> claimed(static_cast<std::size_t>(n), 1);
-    std::vector<std::uint8_t> owned;
-    geoshaping::index_t coincident = 0;
-    const std::vector<std::int64_t> ids = geoshaping::coordinate_ids(
-      xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
-    error = geoshaping::coincident_points_refusal(coincident, ex);
+    std::vector<std::uint8_t> claimed(static_cast<std::size_t>(n), 1);
+    const std::vector<std::int64_t> ids =
+      vtkGeoShapingAdapter::CoordinateIds(xyz.data(), n, claimed, ex, error);
     if (!error.empty())
       return nullptr;
     vtkNew<vtkIdTypeArray> gids;

@@ -380,7 +380,6 @@ public:
   /// mask that is not numeric point data with one value per point, and on several
   /// processes a rigid region owned by several of them or the refinement with obstacles.
   void AddObstacleConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
-  void SetObstacleConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void AddObstacleData(vtkDataObject* data) { this->AddInputDataObject(1, data); }
   void RemoveAllObstacleConnections() { this->SetInputConnection(1, nullptr); }
   /// An obstacle that ParaView's proxy took off the Obstacles because it is made from
@@ -442,7 +441,6 @@ public:
   /// grasping a pinned vertex is. With HonourMarkers off, or no markers, the filter is
   /// as without this input, bit for bit.
   void AddMarkersConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(2, output); }
-  void SetMarkersConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
   void SetMarkersData(vtkDataObject* data) { this->SetInputDataObject(2, data); }
   void RemoveAllMarkersConnections() { this->SetInputConnection(2, nullptr); }
   vtkSetMacro(HonourMarkers, bool);
@@ -560,9 +558,10 @@ private:
   // Geometry and topology into the deformer, when they changed (on any process).
   bool UpdateGeometry(vtkPointSet* input);
   // The deformer over this process's piece of a new geometry, its points numbered by
-  // `gids` or, when no process has any, by coordinates (Parallel.cxx).
+  // their GlobalIds (`globalIds`) or, when no process has any, by coordinates
+  // (vtkGeoShapingAdapter::IdentifyPiece).
   bool SetUpPiece(
-    vtkPointSet* input, const double* xyz, geoshaping::Adjacency adjacency, vtkDataArray* gids);
+    vtkPointSet* input, const double* xyz, geoshaping::Adjacency adjacency, bool globalIds);
   void BuildOutputCaches(vtkPointSet* input, const double* xyz);
   // The grasped point's name (GraspPointId's naming), -1 for none: GraspPointId, or the
   // point nearest GraspPosition over every process.

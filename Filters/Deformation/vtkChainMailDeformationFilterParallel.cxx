@@ -5,12 +5,9 @@
 #include "vtkChainMailDeformationFilterInternals.h"
 
 #include "vtkCommunicator.h"
-#include "vtkDataSetAttributes.h"
 #include "vtkGeoShapingControllerExchange.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkUnsignedCharArray.h"
 
-#include "geoshaping/parallel/coordinate_ids.h"
 #include "geoshaping/parallel/partitioned_chainmail.h"
 
 #include <algorithm>
@@ -138,39 +135,23 @@ bool vtkChainMailDeformationFilter::SelectInput(vtkPointSet*& input, vtkPointSet
 }
 
 bool vtkChainMailDeformationFilter::SetUpPiece(
-  vtkPointSet* input, const double* xyz, geoshaping::Adjacency adjacency, vtkDataArray* gids)
+  vtkPointSet* input, const double* xyz, geoshaping::Adjacency adjacency, bool globalIds)
 {
   vtkInternals& state = *this->Internals;
   geoshaping::Exchange& ex = *state.Processes;
   const vtkIdType n = input->GetNumberOfPoints();
-  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
-  std::vector<std::int64_t> gid(static_cast<std::size_t>(n));
-  std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
-  // Without vtkGhostType this is the one process holding points (GhostRing): all owned.
-  for (vtkIdType i = 0; i < n; ++i)
-    owned[std::size_t(i)] =
-      !ghosts || (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
+  std::vector<std::int64_t> gid;
+  std::vector<std::uint8_t> owned;
+  std::string refusal;
   state.GeneratedIds = nullptr;
-  if (gids)
+  if (!vtkGeoShapingAdapter::IdentifyPiece(input, xyz, globalIds, ex, gid, owned, refusal))
   {
-    for (vtkIdType i = 0; i < n; ++i)
-      gid[std::size_t(i)] = std::int64_t(gids->GetTuple1(i));
+    vtkErrorMacro(<< refusal << "; output is the undeformed input.");
+    state.Partition.reset();
+    return false;
   }
-  else
+  if (!globalIds)
   {
-    // None anywhere: numbered by coordinates, whatever the partition, and a seam point
-    // that several processes claim owned by the lowest (coordinate_ids.h).
-    const std::vector<std::uint8_t> claimed = std::move(owned);
-    geoshaping::index_t coincident = 0;
-    gid = geoshaping::coordinate_ids(
-      xyz, geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
-    const std::string split = geoshaping::coincident_points_refusal(coincident, ex);
-    if (!split.empty())
-    {
-      vtkErrorMacro(<< split << "; output is the undeformed input.");
-      state.Partition.reset();
-      return false;
-    }
     state.GeneratedIds = vtkSmartPointer<vtkIdTypeArray>::New();
     state.GeneratedIds->SetName("GlobalIds");
     state.GeneratedIds->SetNumberOfTuples(n);

@@ -5,7 +5,6 @@
 #include "vtkDataArrayRange.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
-#include "vtkUnsignedCharArray.h"
 
 #include "geoshaping/mesh/bit_cast.h"
 #include "geoshaping/mesh/huge_pages.h"
@@ -67,16 +66,12 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   // changed on any (each rebuilds its piece and replays its edits, collectively). The
   // checks of the piece are agreed in the same gather, with whether it has GlobalIds.
   vtkDataArray* gids = vtkGeoShapingAdapter::PointGlobalIds(input);
-  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
   const bool several = bool(state.Processes);
   std::string problem;
   if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
     problem = std::to_string(n) + " points, more than the deformer's 2^31 - 1";
-  else if (several && n > 0 && gids &&
-           (gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
-    problem = "a point GlobalIds array that is not one value per point";
-  else if (several && n > 0 && ghosts && ghosts->GetNumberOfTuples() != n)
-    problem = "a vtkGhostType point array that is not one value per point";
+  else if (several)
+    problem = vtkGeoShapingAdapter::PieceArraysProblem(input);
   if (!problem.empty())
     vtkErrorMacro(<< state.Where() << problem << "; output is the undeformed input.");
   const vtkMTimeType geometryTime = vtkGeoShapingAdapter::GeometryTime(input);
@@ -84,29 +79,17 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
                        state.GeometryPoints != inPoints || state.GeometrySize != n ||
                        state.GeometryTime != geometryTime ||
                        state.GeometryPrecision != this->OutputPointsPrecision;
-  bool ok = true, anyChanged = false, withIds = false, withoutIds = false;
-  for (const auto& v : state.AllGather({ problem.empty(), changed, n == 0 ? 0 : gids ? 1 : 2 }))
-  {
-    ok = ok && v[0];
-    anyChanged = anyChanged || v[1];
-    withIds = withIds || v[2] == 1;
-    withoutIds = withoutIds || v[2] == 2;
-  }
-  if (ok && several && withIds && withoutIds)
-  {
-    vtkErrorMacro("Point GlobalIds on some processes and not on others; output is the "
-                  "undeformed input.");
-    ok = false;
-  }
-  else if (!ok && problem.empty())
-    vtkErrorMacro("Another process refused its piece; output is the undeformed input.");
-  if (!ok)
+  const auto pieces = vtkGeoShapingAdapter::AgreeOnPieces(
+    state.Processes.get(), problem.empty(), changed, n, gids != nullptr);
+  if (!pieces.Refusal.empty())
+    vtkErrorMacro(<< pieces.Refusal << "; output is the undeformed input.");
+  if (!pieces.Ok)
   {
     state.GeometryValid = false;
     state.Partition.reset();
     return false;
   }
-  if (!anyChanged)
+  if (!pieces.AnyChanged)
   {
     return true;
   }
@@ -141,14 +124,8 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   if (!several && !pointIds)
     coordinateIds = std::async(std::launch::async,
       [xyz, n] { return geoshaping::coordinate_ids(xyz, geoshaping::index_t(n)); });
-  vtkIdType skipped = 0;
-  geoshaping::Adjacency adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
-  if (skipped > 0)
-  {
-    vtkWarningMacro(<< state.Where() << skipped
-                    << " cells are of an unsupported type (higher-order or polyhedral) or "
-                       "have invalid point ids; their edges do not propagate deformation.");
-  }
+  geoshaping::Adjacency adjacency = vtkGeoShapingAdapter::BuildAdjacency(
+    this, input, state.Where(), "their edges do not propagate deformation.");
   if (n > 1 && adjacency.neighbors.empty())
   {
     vtkWarningMacro(<< state.Where() << "input has no cell edges (" << input->GetNumberOfCells()
@@ -162,7 +139,7 @@ bool vtkChainMailDeformationFilter::UpdateGeometry(vtkPointSet* input)
   state.Ids.clear();
   if (several)
   {
-    return this->SetUpPiece(input, xyz, std::move(adjacency), withIds ? gids : nullptr);
+    return this->SetUpPiece(input, xyz, std::move(adjacency), pieces.WithIds);
   }
   state.Deformer.set_mesh(xyz, geoshaping::index_t(n), std::move(adjacency));
   if (pointIds)

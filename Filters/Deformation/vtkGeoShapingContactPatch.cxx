@@ -17,7 +17,7 @@
 #include "vtkStaticCellLocator.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "geoshaping/haptics/contact_patch.h"
+#include "geoshaping/mesh/nearest_triangles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,7 @@ vtkStandardNewMacro(vtkGeoShapingContactPatch);
 namespace
 {
 // The `max` triangles of `xyz` (9 doubles each) nearest to `centre`, nearest first
-// (geoshaping::haptics::keep_nearest); all of them when `max` is 0.
+// (geoshaping::keep_nearest); all of them when `max` is 0.
 void keepNearest(std::vector<double>& xyz, const double centre[3], int max)
 {
   if (max <= 0 || xyz.size() / 9 <= std::size_t(max))
@@ -39,7 +39,7 @@ void keepNearest(std::vector<double>& xyz, const double centre[3], int max)
   {
     corners[i] = Eigen::Vector3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
   }
-  geoshaping::haptics::keep_nearest(corners, Eigen::Vector3d(centre), std::size_t(max));
+  geoshaping::keep_nearest(corners, Eigen::Vector3d(centre), std::size_t(max));
   xyz.resize(3 * corners.size());
   for (std::size_t i = 0; i < corners.size(); ++i)
   {

@@ -41,9 +41,9 @@ public:
   vtkGetVector3Macro(Center, double);
   vtkSetMacro(Radius, double);
   vtkGetMacro(Radius, double);
-  /// When > 0, only the MaxTriangles triangles nearest to Center are sent (the haptics
-  /// layer's keep_nearest, on each process and again on the first): what the interactor
-  /// keeps of a patch anyway when distances in the input's coordinates order the
+  /// When > 0, only the MaxTriangles triangles nearest to Center are sent (the core's
+  /// keep_nearest, mesh/nearest_triangles.h, on each process and again on the first): what the
+  /// interactor keeps of a patch anyway when distances in the input's coordinates order the
   /// triangles as the device's do. 0 (default): every triangle of the box.
   vtkSetClampMacro(MaxTriangles, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaxTriangles, int);

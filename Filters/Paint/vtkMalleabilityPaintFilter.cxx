@@ -1,11 +1,8 @@
-#include "vtkMalleabilityPaintFilter.h"
+#include "vtkMalleabilityPaintFilterInternals.h"
 
-#include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkGeoShapingAdapter.h"
 #include "vtkGeoShapingControllerExchange.h"
-#include "vtkGeoShapingGhostRing.h"
-#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -17,103 +14,33 @@
 #include "vtkSmartPointer.h"
 #include "vtkSparseArrayChanges.h"
 #include "vtkSparsePointChanges.h"
-#include "vtkStaticPointLocator.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "geoshaping/deform/transfer_function.h"
 #include "geoshaping/paint/brush.h"
 #include "geoshaping/parallel/coordinate_ids.h"
-#include "geoshaping/parallel/partitioned_geodesic.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <functional>
 #include <limits>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkMalleabilityPaintFilter);
 
+using namespace vtkMalleabilityPaintFilterDetail;
+
 namespace
 {
-// The message tags of this filter's exchange (not the deformation filter's, 914300).
-constexpr int PaintTag = 914400;
-
 bool SameDab(const geoshaping::Dab& a, const geoshaping::Dab& b)
 {
   return a.center == b.center && a.radius == b.radius && a.value == b.value &&
          a.strength == b.strength;
 }
 } // namespace
-
-struct vtkMalleabilityPaintFilter::vtkInternals
-{
-  // Geodesic dabs on several processes: the input's ghost ring, made when it lacks one.
-  vtkGeoShapingGhostRing GhostRing;
-  // The last painted output (shallow): what an aborted painting leaves in place, since
-  // the executive empties the output before each execution.
-  vtkSmartPointer<vtkPointSet> LastOutput;
-  void KeepOutput(vtkPointSet* output)
-  {
-    this->LastOutput = vtk::TakeSmartPointer(output->NewInstance());
-    this->LastOutput->ShallowCopy(output);
-  }
-  std::vector<geoshaping::Dab> Dabs;
-  std::vector<double> PointDabs; // id value weight
-
-  // Geometry the locator, points and adjacency were built from.
-  vtkPoints* GeometryPoints = nullptr;
-  vtkIdType GeometrySize = -1;
-  vtkMTimeType GeometryTime = 0;
-  bool GeometryValid = false;
-  std::vector<double> Xyz;
-  // Built on first use (geodesic dabs, single-dab reach): Euclidean strokes go through the
-  // painter's own vertex grid instead.
-  vtkSmartPointer<vtkStaticPointLocator> Locator;
-  vtkStaticPointLocator* GetLocator();
-  bool AdjacencyValid = false;
-  geoshaping::Adjacency Adjacency;
-  // Kept between updates: its vertex grid (built once per geometry) and the open stroke
-  // of the array in Painted, which appended dabs continue.
-  std::unique_ptr<geoshaping::Painter> Painter;
-
-  // The last painted array, what it was painted from (input geometry, source array,
-  // settings) and the dabs applied to it: an update that only appends dabs continues it.
-  vtkSmartPointer<vtkFloatArray> Painted;
-  std::vector<std::uintptr_t> PaintedFrom;
-  std::vector<geoshaping::Dab> AppliedDabList;
-  std::vector<double> AppliedPointDabs;
-
-  // What the painted array was painted from, apart from the dabs.
-  static std::vector<std::uintptr_t> Signature(
-    vtkPointSet* input, vtkMalleabilityPaintFilter* self, const char* name);
-
-  // Rebuilds what depends on the geometry when it changed; false on bad points.
-  bool Update(vtkPointSet* input, vtkMalleabilityPaintFilter* self);
-  geoshaping::PointQueries Queries();
-
-  // The id a tie for the nearest vertex goes by: the point GlobalIds when the input has
-  // them (one per point), else the points' coordinate ids (coordinate_ids.h, the
-  // numbering several processes use); copied when that array changes, numbered when the
-  // geometry changes.
-  vtkDataArray* IdSource = nullptr;
-  vtkMTimeType IdTime = 0;
-  bool IdsFromCoordinates = false;
-  std::vector<std::int64_t> Ids; // empty: the point ids
-  void UpdateIds(vtkPointSet* input);
-  // The vertex nearest p, ties to the lowest id (-1 when there is none).
-  geoshaping::index_t Nearest(const Eigen::Vector3d& p);
-  vtkNew<vtkIdList> Found;
-
-  // Geodesic painting on data split across processes: the pieces' label exchange, set
-  // up when the geometry or the ids change on any process.
-  std::unique_ptr<geoshaping::PartitionedGeodesic> Geodesic;
-};
 
 void vtkMalleabilityPaintFilter::vtkInternals::UpdateIds(vtkPointSet* input)
 {
@@ -303,25 +230,6 @@ bool vtkMalleabilityPaintFilter::GetDab(int i, double dab[6])
   return true;
 }
 
-bool vtkMalleabilityPaintFilter::Distributed() const
-{
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  return this->DistanceMode == GEODESIC && controller && controller->GetNumberOfProcesses() > 1;
-}
-
-int vtkMalleabilityPaintFilter::ComputeInputUpdateExtent(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  if (!this->Superclass::ComputeInputUpdateExtent(request, inputVector, outputVector))
-    return 0;
-  if (this->Distributed())
-  {
-    // One ring of ghosts: every neighbour of an owned point is on this process.
-    vtkGeoShapingAdapter::RequestGhostRing(inputVector, outputVector);
-  }
-  return 1;
-}
-
 int vtkMalleabilityPaintFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -332,13 +240,39 @@ int vtkMalleabilityPaintFilter::RequestData(
     vtkErrorMacro("Input and output must be vtkPointSet.");
     return 0;
   }
+  // The same stages on one process and on several (geodesic dabs, docs/mpi.md): on several
+  // the ghost ring is made and every refusal agreed, each stage collective.
+  const char* name = this->SelectInput(input, output);
+  if (!name || !this->CheckData(input, name))
+  {
+    return 1;
+  }
+  if (!this->PaintPins && !this->Distributed() && this->PaintIncrementally(input, output, name))
+  {
+    ++this->NumberOfIncrementalUpdates;
+    this->Internals->KeepOutput(output);
+    return 1;
+  }
+  vtkSmartPointer<vtkFloatArray> painted = this->StartingArray(input, name);
+  if (!this->ApplyDabs(input, painted->GetPointer(0)))
+  {
+    this->KeepShownOutput(input, output);
+    return 1;
+  }
+  this->ApplyPointDabs(input->GetNumberOfPoints(), painted->GetPointer(0));
+  this->WriteOutput(input, output, painted);
+  return 1;
+}
+
+const char* vtkMalleabilityPaintFilter::SelectInput(vtkPointSet*& input, vtkPointSet* output)
+{
   // Geodesic dabs on several processes need the ghost ring: made here when the input lacks
   // it (collective), and the output is then the input with the ring, painted.
-  const bool distributed = this->Distributed();
   std::string ringError;
-  vtkPointSet* ringed = distributed ? this->Internals->GhostRing.Ensure(input,
-                                        vtkMultiProcessController::GetGlobalController(), ringError)
-                                    : input;
+  vtkPointSet* ringed = this->Distributed()
+                          ? this->Internals->GhostRing.Ensure(
+                              input, vtkMultiProcessController::GetGlobalController(), ringError)
+                          : input;
   input = ringed ? ringed : input;
   output->ShallowCopy(input);
   this->NumberOfAppliedDabs = 0;
@@ -351,7 +285,7 @@ int vtkMalleabilityPaintFilter::RequestData(
   {
     vtkErrorMacro(<< (this->PaintPins ? "PinnedArrayName" : "MalleabilityArrayName")
                   << " is empty; output is the input.");
-    return 1;
+    return nullptr;
   }
   if (this->PaintPins && this->MalleabilityArrayName &&
       strcmp(name, this->MalleabilityArrayName) == 0)
@@ -359,31 +293,35 @@ int vtkMalleabilityPaintFilter::RequestData(
     vtkErrorMacro("PaintPins would overwrite the malleability array '"
                   << name << "' with a pin mask: give PinnedArrayName another name; output "
                   << "is the input.");
-    return 1;
+    return nullptr;
   }
+  if (!ringed) // the same on every process
+  {
+    vtkErrorMacro(<< ringError << "; output is the input.");
+    return nullptr;
+  }
+  return name;
+}
+
+bool vtkMalleabilityPaintFilter::CheckData(vtkPointSet* input, const char* name)
+{
   const vtkIdType n = input->GetNumberOfPoints();
   // With several processes painting geodesically, a process that stops alone would leave
   // the others waiting in a collective: the data checks are agreed on by all.
   bool badData = false;
-  if (!ringed) // the same on every process
-  {
-    vtkErrorMacro(<< ringError << "; output is the input.");
-    return 1;
-  }
-  else if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
+  if (n > vtkIdType(std::numeric_limits<geoshaping::index_t>::max()))
   {
     vtkErrorMacro("Input has " << n << " points; painting supports at most 2^31 - 1.");
     badData = true;
   }
-  vtkAbstractArray* named = input->GetPointData()->GetAbstractArray(name);
-  vtkDataArray* source = vtkDataArray::SafeDownCast(named);
+  vtkDataArray* source = input->GetPointData()->GetArray(name);
   if (!badData && source && source->GetNumberOfTuples() != n)
   {
     vtkErrorMacro("Point array '" << name << "' has " << source->GetNumberOfTuples()
                                   << " values for " << n << " points; output is the input.");
     badData = true;
   }
-  if (distributed)
+  if (this->Distributed())
   {
     vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController(), PaintTag);
     bool all = true;
@@ -393,22 +331,19 @@ int vtkMalleabilityPaintFilter::RequestData(
       vtkErrorMacro("Another process refused its piece; output is the input.");
     badData = !all;
   }
-  if (badData)
-  {
-    return 1;
-  }
+  return !badData;
+}
 
-  if (!this->PaintPins && !distributed && this->PaintIncrementally(input, output, name))
-  {
-    ++this->NumberOfIncrementalUpdates;
-    this->Internals->KeepOutput(output);
-    return 1;
-  }
-
-  // The array to paint: a clamped float copy of the input's, or InitialMalleability.
+vtkSmartPointer<vtkFloatArray> vtkMalleabilityPaintFilter::StartingArray(
+  vtkPointSet* input, const char* name)
+{
+  // A clamped float copy of the input's array, or InitialMalleability.
+  const vtkIdType n = input->GetNumberOfPoints();
   auto malleability = vtkSmartPointer<vtkFloatArray>::New();
   malleability->SetName(name);
   malleability->SetNumberOfTuples(n);
+  vtkAbstractArray* named = input->GetPointData()->GetAbstractArray(name);
+  vtkDataArray* source = vtkDataArray::SafeDownCast(named);
   if (named && !source)
   {
     vtkWarningMacro("Point array '"
@@ -444,44 +379,49 @@ int vtkMalleabilityPaintFilter::RequestData(
   {
     malleability->Fill(this->PaintPins ? 0.0 : this->InitialMalleability);
   }
-  if (!this->ApplyDabs(input, m))
-  {
-    // Keep what was shown: the executive would otherwise empty the output on an abort.
-    output->ShallowCopy(this->Internals->LastOutput ? this->Internals->LastOutput.Get()
-                                                    : static_cast<vtkPointSet*>(input));
-    this->SetAbortOutput(false);
-    this->SetAbortExecute(0);
-    this->Internals->Painted = nullptr; // the painter's open stroke is not that array's
-    vtkErrorMacro("Painting was aborted after "
-                  << this->NumberOfAppliedDabs << " of " << this->Internals->Dabs.size()
-                  << " dabs; the output is the previous one (change a property to paint again).");
-    return 1;
-  }
-  this->ApplyPointDabs(n, m);
+  return malleability;
+}
+
+void vtkMalleabilityPaintFilter::KeepShownOutput(vtkPointSet* input, vtkPointSet* output)
+{
+  // Keep what was shown: the executive would otherwise empty the output on an abort.
+  output->ShallowCopy(this->Internals->LastOutput ? this->Internals->LastOutput.Get() : input);
+  this->SetAbortOutput(false);
+  this->SetAbortExecute(0);
+  this->Internals->Painted = nullptr; // the painter's open stroke is not that array's
+  vtkErrorMacro("Painting was aborted after "
+                << this->NumberOfAppliedDabs << " of " << this->Internals->Dabs.size()
+                << " dabs; the output is the previous one (change a property to paint again).");
+}
+
+void vtkMalleabilityPaintFilter::WriteOutput(
+  vtkPointSet* input, vtkPointSet* output, vtkFloatArray* painted)
+{
+  vtkInternals& in = *this->Internals;
+  const char* name = painted->GetName();
   if (this->PaintPins)
   {
+    const vtkIdType n = painted->GetNumberOfTuples();
     vtkNew<vtkUnsignedCharArray> pins;
     pins->SetName(name);
     pins->SetNumberOfTuples(n);
     for (vtkIdType i = 0; i < n; ++i)
-      pins->SetValue(i, m[i] >= 0.5f ? 1 : 0);
+      pins->SetValue(i, painted->GetValue(i) >= 0.5f ? 1 : 0);
     output->GetPointData()->AddArray(pins);
-    this->Internals->Painted = nullptr; // the painter's open stroke is the mask's
+    in.Painted = nullptr; // the painter's open stroke is the mask's
   }
   else
   {
-    output->GetPointData()->AddArray(malleability);
+    output->GetPointData()->AddArray(painted);
     output->GetPointData()->SetActiveScalars(name);
-    vtkInternals& in = *this->Internals;
     // Recording from the start: consumers see the same rule on every later update.
-    vtkSparseArrayChanges::ValuesChanged(malleability, nullptr, 0);
-    in.Painted = malleability;
+    vtkSparseArrayChanges::ValuesChanged(painted, nullptr, 0);
+    in.Painted = painted;
     in.PaintedFrom = in.Signature(input, this, name);
     in.AppliedDabList = in.Dabs;
     in.AppliedPointDabs = in.PointDabs;
   }
-  this->Internals->KeepOutput(output);
-  return 1;
+  in.KeepOutput(output);
 }
 
 bool vtkMalleabilityPaintFilter::PaintIncrementally(
@@ -564,17 +504,10 @@ bool vtkMalleabilityPaintFilter::ApplyDabs(
   if (mode == geoshaping::DistanceMode::geodesic)
   {
     in.UpdateIds(input); // the nearest vertex's tie rule
-  }
-  if (mode == geoshaping::DistanceMode::geodesic && !in.AdjacencyValid)
-  {
-    vtkIdType skipped = 0;
-    in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
-    in.AdjacencyValid = true;
-    if (skipped > 0)
+    if (!in.AdjacencyValid)
     {
-      vtkWarningMacro(<< skipped
-                      << " cells are of an unsupported type or have invalid point "
-                         "ids; geodesic paths do not follow their edges.");
+      in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(this, input, "", GeodesicSkips);
+      in.AdjacencyValid = true;
     }
   }
 
@@ -606,182 +539,37 @@ bool vtkMalleabilityPaintFilter::ApplyDabs(
         return !this->CheckAbort();
       });
   }
-  this->LastPaintMilliseconds =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  this->NumberOfAppliedDabs = static_cast<int>(report.applied);
-  this->NumberOfRejectedDabs = static_cast<int>(report.rejected.size());
-  this->NumberOfPaintedValues = static_cast<vtkIdType>(report.painted);
-  if (!report.rejected.empty())
-  {
-    std::ostringstream msg;
-    msg << report.rejected.size() << " of " << dabs.size()
-        << " dabs were skipped (the others are applied):";
-    const std::size_t shown = std::min<std::size_t>(report.rejected.size(), 10);
-    for (std::size_t i = 0; i < shown; ++i)
-    {
-      const geoshaping::Dab& d = dabs[report.rejected[i].first];
-      msg << "\n  dab " << first + report.rejected[i].first << " (" << d.center.x() << " "
-          << d.center.y() << " " << d.center.z() << " " << d.radius << " " << d.value << " "
-          << d.strength << "): " << report.rejected[i].second;
-    }
-    if (shown < report.rejected.size())
-      msg << "\n  ...";
-    vtkErrorMacro(<< msg.str());
-  }
+  this->ReportPainting(report, first, MillisecondsSince(start));
   return !report.aborted;
 }
 
-bool vtkMalleabilityPaintFilter::ApplyDabsDistributed(
-  vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched)
+void vtkMalleabilityPaintFilter::ReportPainting(
+  const geoshaping::PaintReport& report, std::size_t first, double milliseconds)
 {
-  vtkInternals& in = *this->Internals;
-  vtkGeoShapingControllerExchange ex(vtkMultiProcessController::GetGlobalController(), PaintTag);
-  const vtkIdType n = input->GetNumberOfPoints();
-
-  // Local checks and whether the piece changed, agreed on by every process.
-  std::string problem;
-  vtkDataArray* gids = vtkGeoShapingAdapter::PointGlobalIds(input);
-  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
-  if (n > 0 && gids && (gids->GetNumberOfTuples() != n || gids->GetNumberOfComponents() != 1))
-    problem = "a point GlobalIds array that is not one value per point";
-  else if (n > 0 && ghosts && ghosts->GetNumberOfTuples() != n)
-    problem = "a vtkGhostType point array that is not one value per point";
-  const bool stale = !in.Geodesic || in.GeometryPoints != input->GetPoints() ||
-                     in.GeometrySize != n ||
-                     in.GeometryTime != vtkGeoShapingAdapter::GeometryTime(input) ||
-                     in.IdSource != gids || (gids && in.IdTime != gids->GetMTime());
-  if (problem.empty() && n > 0 && !in.Update(input, this))
-    problem = "non-finite point coordinates";
-  if (n == 0)
+  const std::vector<geoshaping::Dab>& dabs = this->Internals->Dabs;
+  this->LastPaintMilliseconds = milliseconds;
+  this->NumberOfAppliedDabs = static_cast<int>(report.applied);
+  this->NumberOfRejectedDabs = static_cast<int>(report.rejected.size());
+  this->NumberOfPaintedValues = static_cast<vtkIdType>(report.painted);
+  if (report.rejected.empty())
   {
-    // Remembered like any other piece, or it would look changed at every update.
-    in.GeometryPoints = input->GetPoints();
-    in.GeometrySize = 0;
-    in.GeometryTime = vtkGeoShapingAdapter::GeometryTime(input);
+    return;
   }
-  bool ok = true, anyStale = false, withIds = false, withoutIds = false;
-  for (const auto& v : ex.all_gather({ problem.empty() ? 1 : 0, stale ? 1 : 0,
-         n == 0 ? 0
-         : gids ? 1
-                : 2 }))
+  std::ostringstream msg;
+  msg << report.rejected.size() << " of " << dabs.size() - first
+      << " dabs were skipped (the others are applied):";
+  const std::size_t shown = std::min<std::size_t>(report.rejected.size(), 10);
+  for (std::size_t i = 0; i < shown; ++i)
   {
-    ok = ok && v[0] != 0;
-    anyStale = anyStale || v[1] != 0;
-    withIds = withIds || v[2] == 1;
-    withoutIds = withoutIds || v[2] == 2;
+    const std::size_t k = first + report.rejected[i].first;
+    const geoshaping::Dab& d = dabs[k];
+    msg << "\n  dab " << k << " (" << d.center.x() << " " << d.center.y() << " " << d.center.z()
+        << " " << d.radius << " " << d.value << " " << d.strength
+        << "): " << report.rejected[i].second;
   }
-  if (ok && withIds && withoutIds)
-  {
-    vtkErrorMacro("Point GlobalIds on some processes and not on others; no geodesic dab is "
-                  "applied on any process.");
-    in.Geodesic.reset();
-    return true;
-  }
-  if (!ok)
-  {
-    if (!problem.empty())
-      vtkErrorMacro("Process " << ex.piece() << ": " << problem
-                               << "; no geodesic dab is applied on any process.");
-    else
-      vtkErrorMacro("Another process refused its piece; no geodesic dab is applied.");
-    in.Geodesic.reset();
-    return true;
-  }
-  if (anyStale)
-  {
-    std::vector<std::uint8_t> owned(static_cast<std::size_t>(n));
-    // Without vtkGhostType this is the one process holding points (GhostRing): all owned.
-    for (vtkIdType i = 0; i < n; ++i)
-      owned[std::size_t(i)] =
-        !ghosts || (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) == 0;
-    if (withIds)
-      in.UpdateIds(input);
-    else
-    {
-      // None anywhere: numbered by coordinates, whatever the partition, a seam point that
-      // several processes claim owned by the lowest (coordinate_ids.h, as the deformation
-      // filter does).
-      const std::vector<std::uint8_t> claimed = std::move(owned);
-      geoshaping::index_t coincident = 0;
-      in.Ids = geoshaping::coordinate_ids(
-        in.Xyz.data(), geoshaping::index_t(n), claimed.data(), owned, ex, &coincident);
-      in.IdSource = nullptr;
-      in.IdTime = 0;
-      in.IdsFromCoordinates = true;
-      const std::string split = geoshaping::coincident_points_refusal(coincident, ex);
-      if (!split.empty())
-      {
-        vtkErrorMacro(<< split << "; no geodesic dab is applied on any process.");
-        in.Geodesic.reset();
-        return true;
-      }
-    }
-    in.Adjacency = {};
-    in.Adjacency.offsets.assign(1, 0);
-    if (n > 0)
-    {
-      vtkIdType skipped = 0;
-      in.Adjacency = vtkGeoShapingAdapter::BuildAdjacency(input, skipped);
-      if (skipped > 0)
-        vtkWarningMacro(<< skipped
-                        << " cells are of an unsupported type or have invalid point "
-                           "ids; geodesic paths do not follow their edges.");
-    }
-    in.AdjacencyValid = true;
-    in.Geodesic = std::make_unique<geoshaping::PartitionedGeodesic>();
-    in.Geodesic->set_piece(
-      in.Xyz.data(), geoshaping::index_t(n), &in.Adjacency, in.Ids.data(), owned.data(), ex);
-  }
-
-  const auto start = std::chrono::steady_clock::now();
-  const auto falloff = static_cast<geoshaping::Falloff>(this->Falloff);
-  geoshaping::Reach reach;
-  geoshaping::StrokeAccumulator stroke; // the rule of one process (brush.h)
-  std::vector<geoshaping::index_t> written;
-  std::int64_t painted = 0;
-  std::vector<std::pair<std::size_t, std::string>> rejected;
-  int applied = 0;
-  for (std::size_t i = first; i < in.Dabs.size(); ++i)
-  {
-    const geoshaping::Dab& dab = in.Dabs[i];
-    const char* why = geoshaping::validate_dab(dab);
-    if (*why)
-    {
-      rejected.emplace_back(i, why); // the same on every process
-      continue;
-    }
-    in.Geodesic->compute(dab.center, dab.radius, n > 0 ? in.Nearest(dab.center) : -1, reach, ex);
-    if (stroke.continues(dab))
-      stroke.move(dab.center);
-    else
-      stroke.begin(dab, falloff);
-    written.clear();
-    const std::size_t before = stroke.members().size();
-    stroke.add(reach, m, &written);
-    for (std::size_t k = before; k < stroke.members().size(); ++k)
-      painted += in.Geodesic->pieces().owned(stroke.members()[k]);
-    if (touched)
-      touched->insert(touched->end(), written.begin(), written.end());
-    ++applied;
-  }
-  std::int64_t total = 0;
-  for (const auto& v : ex.all_gather({ painted }))
-    total += v[0];
-  this->LastPaintMilliseconds =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  this->NumberOfAppliedDabs = applied;
-  this->NumberOfRejectedDabs = static_cast<int>(rejected.size());
-  this->NumberOfPaintedValues = vtkIdType(total);
-  if (!rejected.empty())
-  {
-    std::ostringstream msg;
-    msg << rejected.size() << " of " << in.Dabs.size() - first
-        << " dabs were skipped (the others are applied):";
-    for (std::size_t k = 0; k < rejected.size() && k < 10; ++k)
-      msg << "\n  dab " << rejected[k].first << ": " << rejected[k].second;
-    vtkErrorMacro(<< msg.str());
-  }
-  return true;
+  if (shown < report.rejected.size())
+    msg << "\n  ...";
+  vtkErrorMacro(<< msg.str());
 }
 
 void vtkMalleabilityPaintFilter::PrintSelf(ostream& os, vtkIndent indent)

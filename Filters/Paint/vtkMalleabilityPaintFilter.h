@@ -60,11 +60,18 @@
 
 #include "GeoShapingFiltersPaintModule.h" // For export macro
 #include "vtkPointSetAlgorithm.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
 
 #include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
 
+class vtkFloatArray;
 class vtkPointSet;
+namespace geoshaping
+{
+class Exchange;
+struct PaintReport;
+}
 
 class GEOSHAPINGFILTERSPAINT_EXPORT vtkMalleabilityPaintFilter : public vtkPointSetAlgorithm
 {
@@ -181,6 +188,14 @@ private:
   vtkMalleabilityPaintFilter(const vtkMalleabilityPaintFilter&) = delete;
   void operator=(const vtkMalleabilityPaintFilter&) = delete;
 
+  // The stages of RequestData, each collective on several processes (Distributed):
+  // SelectInput: the input (with the ghost ring when needed), the output its copy, the
+  // figures reset; the array's name, or null (an error given) when nothing is painted.
+  const char* SelectInput(vtkPointSet*& input, vtkPointSet* output);
+  // False (an error given, on every process alike) when the data cannot be painted.
+  bool CheckData(vtkPointSet* input, const char* name);
+  // The array to paint: a clamped float copy of the input's, or InitialMalleability.
+  vtkSmartPointer<vtkFloatArray> StartingArray(vtkPointSet* input, const char* name);
   // Apply the dabs from `first` on (point dabs: from triplet `first` on) to m; append
   // the vertices they reach to `touched` when given. ApplyDabs reports progress and
   // returns false when the pipeline asked to abort (CheckAbort) before the last dab.
@@ -188,9 +203,22 @@ private:
     vtkPointSet* input, float* m, std::size_t first = 0, std::vector<vtkIdType>* touched = nullptr);
   void ApplyPointDabs(
     vtkIdType n, float* m, std::size_t first = 0, std::vector<vtkIdType>* touched = nullptr);
+  // The painted array (or its pin mask) into the output, kept for appended dabs.
+  void WriteOutput(vtkPointSet* input, vtkPointSet* output, vtkFloatArray* painted);
+  // After an abort: the output shown before stays.
+  void KeepShownOutput(vtkPointSet* input, vtkPointSet* output);
+  // The figures of the dabs from `first` on, and an error naming the skipped ones.
+  void ReportPainting(const geoshaping::PaintReport& report, std::size_t first, double ms);
+
   // Geodesic dabs on data split across processes (collective); returns as ApplyDabs.
   bool ApplyDabsDistributed(
     vtkPointSet* input, float* m, std::size_t first, std::vector<vtkIdType>* touched);
+  // Its stages: the pieces' checks agreed and, when a piece changed, each piece set up
+  // again (SetUpPiece: ids, owned points, adjacency); false when refused on every process.
+  bool SetUpPieces(vtkPointSet* input, geoshaping::Exchange& ex);
+  bool SetUpPiece(vtkPointSet* input, bool globalIds, geoshaping::Exchange& ex);
+  geoshaping::PaintReport PaintPieces(vtkPointSet* input, float* m, std::size_t first,
+    std::vector<vtkIdType>* touched, geoshaping::Exchange& ex);
   // True when painting needs the processes together: geodesic with several processes.
   bool Distributed() const;
   // The update when only dabs were appended since the last one; false otherwise.

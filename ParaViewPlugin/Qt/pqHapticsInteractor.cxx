@@ -3,10 +3,10 @@
 #include "DisplayTransform.h"
 #include "pqHapticsMouse.h"
 
-#include "geoshaping/haptics/contact_patch.h"
 #include "geoshaping/haptics/device_factory.h"
 #include "geoshaping/haptics/servo_loop.h"
 #include "geoshaping/haptics/trace.h"
+#include "geoshaping/mesh/nearest_triangles.h"
 #include "geoshaping/paint/brush.h"
 
 #include <pqRenderView.h>
@@ -467,7 +467,7 @@ void pqHapticsInteractor::publishScene(Hand& hand, const Eigen::Vector3d& stylus
     {
       p = hand.mapping.to_device(p);
     }
-    haptics::keep_nearest(scene.contact_triangles, sample.position, MaxContactTriangles);
+    geoshaping::keep_nearest(scene.contact_triangles, sample.position, MaxContactTriangles);
     const pqHapticsProxies::ServerPatchFigures& patch = this->Proxies.serverPatchFigures();
     if (patch.milliseconds >= 0.0)
     {

@@ -12,8 +12,8 @@
 // Counters: contact (fraction of ticks in contact), allocs (heap allocations per tick,
 // counted by the replaced operator new below: the servo tick must make none). Not a ctest:
 //   geoshaping_servo_tick_benchmark --benchmark_repetitions=3
-#include "geoshaping/haptics/contact_patch.h"
 #include "geoshaping/haptics/servo_tick.h"
+#include "geoshaping/mesh/nearest_triangles.h"
 
 #include <benchmark/benchmark.h>
 
@@ -116,7 +116,7 @@ void BM_ServoTick(benchmark::State& state)
   const std::vector<Eigen::Vector3d> path = path_for(where, centre);
   SceneSnapshot scene;
   scene.contact_triangles = relief_soup();
-  keep_nearest(scene.contact_triangles, centre, std::size_t(state.range(1)));
+  geoshaping::keep_nearest(scene.contact_triangles, centre, std::size_t(state.range(1)));
   scene.stamp = Clock::now(); // and every tick at that instant: never stale
   scene.sequence = 1;
   const DeviceLimits limits;

@@ -10,7 +10,7 @@ import numpy as np
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-from run_gui_test import read_results
+from gui_files import read_results
 
 SIDE = 1.0e6  # m
 N = 51  # vertices per side: 20 km apart

@@ -77,7 +77,7 @@ def check_ready(out):
     hidden, the surface coloured by Elevation and framed (its bounding box on screen,
     filling 70 % of the view across), seen obliquely from the south; the pull raises the hill and the deformation's Elevation
     is the shaped z, its RestElevation the raster's."""
-    from run_gui_test import read_results
+    from gui_files import read_results
     raster = read_results(out + "-raster.txt")
     dem = read_results(out + "-dem.txt")
     print("raster shown: interaction mode %s; DEM Surface applied: mode %s, %s, %s" % (

@@ -20,6 +20,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path[:0] = [os.path.join(HERE, "..", "Python"), os.path.join(HERE, "..", "MPI")]
 import pvserver_process  # noqa: E402
+from gui_files import read_results as read_figures  # noqa: E402
 from mpi_pipeline import COORDINATE_RANKS  # noqa: E402
 
 RANKS = 2
@@ -151,11 +152,6 @@ def session(out, tag, steps, state, reverse=False, hand="mouse", ranks=RANKS,
                 "%s: the view does not render remotely" % tag
         print("%s: the view renders remotely (the client holds no geometry)" % tag)
     return prefix
-
-
-def read_figures(path):
-    rows = [line.rstrip("\n").split(" = ", 1) for line in open(path) if " = " in line]
-    return {k: v for k, v in rows}
 
 
 def gathered(out, name, column="xyz"):

@@ -28,7 +28,8 @@ import numpy as np
 
 import gui_pvserver as harness
 from gui_pvserver import RANKS, check_session, check_shape, gathered, prepare, read_figures
-from run_gui_test import CAMERA, DEPTH, device_axes, write_trace
+from gui_files import DEPTH, device_axes, write_trace
+from gui_setup_camera import CAMERA
 
 # A stroke across the fault step, where the ranks' pieces meet (x = 50: rank 0 the upper
 # plateau, rank 1 the lower).

@@ -13,6 +13,8 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_files import (DEPTH, WORKSPACE_RADIUS, device_axes, read_results, read_trace,  # noqa: E402
+                       write_trace)
 from gui_setup_camera import CAMERA  # noqa: E402
 from gui_pull_check import check_pull  # noqa: E402
 import gui_undo_checks  # noqa: E402
@@ -20,29 +22,6 @@ import gui_undo_checks  # noqa: E402
 # hook drags the mouse itself (GEOSHAPING_HAPTICS_REPLAY=mouse); mode "openhaptics": hand 1
 # is OpenHaptics on the fake HD library, which the hook faults; mode "state": paraview
 # loads a state file with one edit (File > Load State) and the dock is started.
-
-WORKSPACE_RADIUS = 0.08  # m, the default DeviceLimits of the replay device
-
-
-def read_trace(path):
-    rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
-    return [(float(r[0]), [float(v) for v in r[1:4]], int(r[8])) for r in rows]
-
-
-def device_axes():
-    """The workspace -> scene mapping of HapticsControl.h, computed independently:
-    scene = focal + scale * (x p_x + y p_y + z p_z)."""
-    pos, foc, up = CAMERA["position"], CAMERA["focal_point"], CAMERA["view_up"]
-    z = [p - f for p, f in zip(pos, foc)]
-    dist = math.sqrt(sum(c * c for c in z))
-    z = [c / dist for c in z]
-    x = [up[1] * z[2] - up[2] * z[1], up[2] * z[0] - up[0] * z[2], up[0] * z[1] - up[1] * z[0]]
-    n = math.sqrt(sum(c * c for c in x))
-    x = [c / n for c in x]
-    y = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]]
-    scale = dist * math.tan(math.radians(CAMERA["view_angle"] / 2)) / WORKSPACE_RADIUS
-    return x, y, z, scale
-
 
 def expected_drag(trace_path):
     """The trace's motion from press to release, device coordinates -> scene."""
@@ -57,23 +36,10 @@ def expected_drag(trace_path):
 # The touch test: a point of the horizon's upper plateau (the fault-step horizon is
 # z = throw = 20 for x < 47) and its normal, the scene's +z.
 PLATEAU_POINT = [20.0, 30.0, 20.0]
-DEPTH = 0.002  # m, how far the stylus ends below the surface (device coordinates)
 # The GUI stalls (the hook blocks its thread) 7.1 s into the trace for 1 s, the stylus
 # resting below the plateau since 6.5 s: longer than a scene stays valid (at most 0.5 s),
 # shorter than the servo holds contact against the last patch (2 s, docs/haptics.md).
 TOUCH_STALL = (7.1, 1.0)
-
-
-def write_trace(path, title, seconds, sample):
-    """A 60 Hz stylus trace of `seconds`: sample(t) gives (position, buttons) or
-    (position, buttons, quaternion w x y z)."""
-    with open(path, "w") as f:
-        f.write("# t x y z qw qx qy qz buttons: %s\n" % title)
-        for k in range(int(seconds * 60) + 1):
-            t = k / 60.0
-            p, b, *q = sample(t)
-            q = q[0] if q else (1.0, 0.0, 0.0, 0.0)
-            f.write("%.6f %.9f %.9f %.9f %.12f %.12f %.12f %.12f %d\n" % (t, *p, *q, b))
 
 
 def write_touch_trace(path):
@@ -203,14 +169,6 @@ def check_touch(results, normal):
     assert int(results["contact_ticks"]) > 0, results
     assert int(results["moved_points"]) == 0, "touching must not deform"
     assert abs(float(results["brush_value"]) - 0.3) < 1e-12, "the 3D palette pick: " + results["brush_value"]
-
-
-def read_results(path):
-    results = {}
-    for line in open(path):
-        key, _, value = line.partition(" = ")
-        results[key.strip()] = value.strip()
-    return results
 
 
 def red_fraction(png):

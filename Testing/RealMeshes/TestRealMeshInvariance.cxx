@@ -71,11 +71,6 @@ std::vector<std::vector<Eigen::Vector3d>> session(const std::vector<double>& xyz
   return out;
 }
 
-const char* frame_label(ValidRegionFrame f)
-{
-  return frame_name(f);
-}
-
 } // namespace
 
 // Rotating the mesh and the pull rotates every frame of the session (Link region).
@@ -146,7 +141,7 @@ TEST(Promises, TranslationAndRenumberingChangeNothing)
           for (std::size_t v = 0; v < base[k].size(); ++v)
             worst_shift = std::max(worst_shift, (base[k][v] + shift - shifted[k][v]).norm());
         EXPECT_LE(worst_shift, 1e-9 * m.edge)
-          << m.name << " " << frame_label(f) << " " << queue_name(q) << " translated";
+          << m.name << " " << frame_name(f) << " " << queue_name(q) << " translated";
         if (q == QueueKind::priority || q == QueueKind::max_violation)
           continue; // heap ties follow the rows' order, which renumbering changes
         const auto renumbered = session(xyz_p, adj_p, mall_p, perm[std::size_t(s.grasp)],
@@ -157,7 +152,7 @@ TEST(Promises, TranslationAndRenumberingChangeNothing)
             worst_perm = std::max(worst_perm,
               (base[k][std::size_t(v)] - renumbered[k][std::size_t(perm[std::size_t(v)])]).norm());
         EXPECT_LE(worst_perm, 1e-9 * m.edge)
-          << m.name << " " << frame_label(f) << " " << queue_name(q) << " renumbered";
+          << m.name << " " << frame_name(f) << " " << queue_name(q) << " renumbered";
       }
   }
 }

@@ -43,11 +43,6 @@ void start(ChainMailDeformer& d, const RealMesh& m, const std::vector<float>& ma
   d.set_valid_region_frame(f);
 }
 
-const char* label(ValidRegionFrame f)
-{
-  return frame_name(f);
-}
-
 // The report's Figure 8 drag: the last quarter of the pull in 25 steps.
 std::vector<Eigen::Vector3d> figure8_drag(const Eigen::Vector3d& pull)
 {
@@ -83,7 +78,7 @@ TEST(Promises, RigidRegionsTranslateExactlyOnRealMeshes)
           ASSERT_TRUE(d.deform(s.second, k * s.pull).ok);
           worst = std::max(worst, rigid_error(link_mesh(d), displacements(d)));
         }
-        EXPECT_EQ(worst, 0.0) << m.name << " " << label(f) << " " << queue_name(q);
+        EXPECT_EQ(worst, 0.0) << m.name << " " << frame_name(f) << " " << queue_name(q);
       }
   }
 }
@@ -150,7 +145,7 @@ TEST(Promises, AnObstacleAboveARealMeshIsNeverCrossed)
         int crossed = 0;
         for (index_t v : d.moved())
           crossed += geoshaping::testing::crosses_any(lid, m.point(v), d.position(v));
-        EXPECT_EQ(crossed, 0) << m.name << " " << label(f) << " " << queue_name(q);
+        EXPECT_EQ(crossed, 0) << m.name << " " << frame_name(f) << " " << queue_name(q);
       }
   }
 }
@@ -232,7 +227,7 @@ TEST(Promises, AVertexThatKeepsItsSponsorMovesNoFurtherThanItsSponsor)
           sponsor_before = std::move(sponsor);
         }
         EXPECT_GT(kept, 0) << m.name;
-        EXPECT_LE(worst, 1e-9) << m.name << " " << label(f) << " " << queue_name(q) << ": "
+        EXPECT_LE(worst, 1e-9) << m.name << " " << frame_name(f) << " " << queue_name(q) << ": "
                                << switched << " sponsor switches";
       }
   }

@@ -37,6 +37,7 @@ public:
     const ForceResult& rendered, bool hold, const ForceParams& params, const DeviceLimits& limits);
 
 private:
+  // What control() carries from tick to tick: W is work_, C scene_work_, f damper_.
   Eigen::Vector3d last_position_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d last_force_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d damper_ = Eigen::Vector3d::Zero();

@@ -1,6 +1,6 @@
 #include "geoshaping/haptics/hand_sim.h"
 
-#include "geoshaping/haptics/contact_patch.h"
+#include "geoshaping/mesh/nearest_triangles.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,5 @@
 #include "geoshaping/deform/candidate_queue.h"
+#include "geoshaping/mesh/enum_names.h"
 
 #include <algorithm>
 #include <limits>
@@ -9,18 +10,10 @@ namespace geoshaping
 
 const char* queue_name(QueueKind kind)
 {
-  switch (kind)
-  {
-    case QueueKind::fifo:
-      return "FIFO";
-    case QueueKind::priority:
-      return "Priority";
-    case QueueKind::fifo_priority:
-      return "FIFO Priority";
-    case QueueKind::max_violation:
-      return "Max Violation";
-  }
-  return "";
+  static constexpr EnumName names[] = { { int(QueueKind::fifo), "FIFO" },
+    { int(QueueKind::priority), "Priority" }, { int(QueueKind::fifo_priority), "FIFO Priority" },
+    { int(QueueKind::max_violation), "Max Violation" } };
+  return name_of(names, int(kind));
 }
 
 std::uint32_t SuperstepQueue::open_group(const ChainKey& k)

@@ -1,6 +1,7 @@
 #pragma once
 // The Generalized ChainMail valid region (the deformation contract, docs/design.md).
 #include "geoshaping/deform/transfer_function.h"
+#include "geoshaping/mesh/enum_names.h"
 
 #include <Eigen/Core>
 
@@ -27,7 +28,9 @@ enum class ValidRegionFrame
 
 inline const char* frame_name(ValidRegionFrame f)
 {
-  return f == ValidRegionFrame::link ? "Link" : "Axes";
+  static constexpr EnumName names[] = { { int(ValidRegionFrame::axes), "Axes" },
+    { int(ValidRegionFrame::link), "Link" } };
+  return name_of(names, int(f));
 }
 
 // Valid region of a candidate c w.r.t. its sponsor s, for the rest offset

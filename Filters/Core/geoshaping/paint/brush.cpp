@@ -1,4 +1,5 @@
 #include "geoshaping/paint/brush.h"
+#include "geoshaping/mesh/enum_names.h"
 #include "geoshaping/paint/malleability_preset.h"
 
 #include <algorithm>
@@ -16,35 +17,21 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr auto distance = brush_distance;
 constexpr auto edge_length = brush_edge_length;
 
-struct Name
-{
-  const char* text;
-  int value;
-};
-constexpr Name falloff_names[] = { { "Constant", int(Falloff::constant) },
-  { "Linear", int(Falloff::linear) }, { "Smooth", int(Falloff::smooth) },
-  { "Gaussian", int(Falloff::gaussian) } };
-constexpr Name mode_names[] = { { "Euclidean", int(DistanceMode::euclidean) },
-  { "Geodesic", int(DistanceMode::geodesic) } };
-
-template<std::size_t N>
-const char* name_of(const Name (&names)[N], int value)
-{
-  for (const Name& n : names)
-    if (n.value == value)
-      return n.text;
-  return "";
-}
-
 } // namespace
 
 const char* falloff_name(Falloff f)
 {
-  return name_of(falloff_names, int(f));
+  static constexpr EnumName names[] = { { int(Falloff::constant), "Constant" },
+    { int(Falloff::linear), "Linear" }, { int(Falloff::smooth), "Smooth" },
+    { int(Falloff::gaussian), "Gaussian" } };
+  return name_of(names, int(f));
 }
+
 const char* distance_mode_name(DistanceMode m)
 {
-  return name_of(mode_names, int(m));
+  static constexpr EnumName names[] = { { int(DistanceMode::euclidean), "Euclidean" },
+    { int(DistanceMode::geodesic), "Geodesic" } };
+  return name_of(names, int(m));
 }
 
 double falloff_weight(Falloff f, double r)

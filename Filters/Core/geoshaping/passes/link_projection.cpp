@@ -2,6 +2,7 @@
 
 #include "geoshaping/deform/chainmail_deformer.h"
 #include "geoshaping/deform/valid_region.h"
+#include "geoshaping/mesh/enum_names.h"
 #include "geoshaping/mesh/prefetch.h"
 
 #include <Eigen/SparseCholesky>
@@ -1081,16 +1082,10 @@ void LinkProjector::assign(const std::vector<index_t>& vertices, const Displacem
 
 const char* solver_name(ProjectionSolver solver)
 {
-  switch (solver)
-  {
-    case ProjectionSolver::admm:
-      return "ADMM";
-    case ProjectionSolver::dykstra:
-      return "Dykstra";
-    case ProjectionSolver::envelope:
-      return "Envelope";
-  }
-  return "";
+  static constexpr EnumName names[] = { { int(ProjectionSolver::admm), "ADMM" },
+    { int(ProjectionSolver::dykstra), "Dykstra" },
+    { int(ProjectionSolver::envelope), "Envelope" } };
+  return name_of(names, int(solver));
 }
 
 ProjectionReport refine_links(LinkProjector& projector, const ChainMailDeformer& deformer,

@@ -1,11 +1,11 @@
-#include "geoshaping/haptics/contact_patch.h"
+#include "geoshaping/mesh/nearest_triangles.h"
 #include "geoshaping/mesh/triangle_geometry.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-using namespace geoshaping::haptics;
+using namespace geoshaping;
 
 namespace
 {
@@ -16,7 +16,7 @@ std::vector<Eigen::Vector3d> square()
 }
 } // namespace
 
-TEST(ContactPatch, KeepNearestMatchesABruteForceSortAndDropsIncompleteTriangles)
+TEST(NearestTriangles, KeepNearestMatchesABruteForceSortAndDropsIncompleteTriangles)
 {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

@@ -1,4 +1,4 @@
-#include "geoshaping/haptics/contact_patch.h"
+#include "geoshaping/mesh/nearest_triangles.h"
 
 #include "geoshaping/mesh/triangle_geometry.h"
 
@@ -6,7 +6,7 @@
 #include <limits>
 #include <utility>
 
-namespace geoshaping::haptics
+namespace geoshaping
 {
 
 void keep_nearest(
@@ -35,4 +35,4 @@ void keep_nearest(
   triangles = std::move(kept);
 }
 
-} // namespace geoshaping::haptics
+} // namespace geoshaping
