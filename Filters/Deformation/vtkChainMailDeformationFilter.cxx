@@ -81,6 +81,10 @@ int vtkChainMailDeformationFilter::RequestData(
   }
   output->ShallowCopy(input);
   this->Statistics = FrameStatistics();
+  if (this->RefuseHeldObstacles())
+  {
+    return 1;
+  }
   vtkInternals& state = *this->Internals;
   state.Passes.begin_frame();
   // The same stages on one process and on several (docs/mpi.md): on several each is

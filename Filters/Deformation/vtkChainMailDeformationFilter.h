@@ -374,12 +374,20 @@ public:
   /// so it stays on the obstacle while it moves along it. The triangles' tree is built
   /// once per obstacle geometry. On several processes every process's piece of the
   /// obstacles is gathered to every process (same bits as one process). Refused with an
-  /// error (output = input): an obstacle with non-finite points or no triangle, a sliding
+  /// error (output = input): an obstacle made from this filter's own output (a pipeline
+  /// loop: taken off port 1 before any request reaches it, put back once the loop is
+  /// gone), an obstacle with non-finite points or no triangle, a sliding
   /// mask that is not numeric point data with one value per point, and on several
   /// processes a rigid region owned by several of them or the refinement with obstacles.
   void AddObstacleConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
   void AddObstacleData(vtkDataObject* data) { this->AddInputDataObject(1, data); }
   void RemoveAllObstacleConnections() { this->SetInputConnection(1, nullptr); }
+  /// An obstacle that ParaView's proxy took off the Obstacles because it is made from
+  /// this filter's output (a pipeline loop, named by `what`): until this is called with
+  /// an empty name (the proxy does when the Obstacles change) RequestData refuses, naming
+  /// it, with the input as output. The proxy's way to refuse a loop that never reached
+  /// the filter.
+  void RefuseObstacleLoop(const char* what);
   int GetNumberOfObstacleConnections() { return this->GetNumberOfInputConnections(1); }
   vtkSetClampMacro(ObstacleClearance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(ObstacleClearance, double);
@@ -489,7 +497,20 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int ComputeInputUpdateExtent(
     vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The first call of every update, before the executive forwards a request to the
+  // inputs: an obstacle made from this filter's output (a loop) is taken off port 1 here,
+  // so no request goes round the loop (docs/obstacles.md); RequestData then refuses.
+  int ComputePipelineMTime(vtkInformation* request, vtkInformationVector** inInfoVec,
+    vtkInformationVector* outInfoVec, int requestFromOutputPort, vtkMTimeType* mtime) override;
+  void ReportReferences(vtkGarbageCollector*) override; // the held obstacles
 
+public:
+  using Superclass::SetInputConnection;
+  // Setting or clearing port 1 drops the obstacles held back for a loop.
+  void SetInputConnection(int port, vtkAlgorithmOutput* input) override;
+  void RemoveAllInputConnections(int port) override;
+
+protected:
   vtkIdType GraspPointId = -1;
   int GraspMode = GRASP_POINT_ID;
   double GraspPosition[3] = { 0.0, 0.0, 0.0 };
@@ -590,6 +611,8 @@ private:
   // The obstacles of port 1 into the deformer (vtkChainMailDeformationFilterObstacles.cxx);
   // false (after an error) when they are refused.
   bool UpdateObstacles(vtkInformationVector** inputVector);
+  // An obstacle held back for a loop (ComputePipelineMTime): one error naming it, true.
+  bool RefuseHeldObstacles();
   // On several processes (vtkChainMailDeformationFilterParallelObstacles.cxx, collective):
   // every process's piece of the obstacles gathered to every process, the same triangles
   // everywhere, and the sliding mask of `input`; false (after an error, on every process)

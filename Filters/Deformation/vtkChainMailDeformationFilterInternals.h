@@ -76,6 +76,11 @@ struct vtkChainMailDeformationFilter::vtkInternals
   std::vector<geoshaping::index_t> SnapStale;
   // The obstacles the deformer holds were built from (data object, MTime per connection).
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> ObstacleSources;
+  // Obstacle connections taken off port 1 because their producer has the filter upstream
+  // (a pipeline loop; Obstacles.cxx), each (producer, output port); put back once the
+  // loop is gone, dropped when port 1 is set or cleared.
+  std::vector<std::pair<vtkSmartPointer<vtkAlgorithm>, int>> HeldObstacles;
+  std::string RefusedLoop; // RefuseObstacleLoop's name, until it is called with ""
 
   // The passes after the frame (refinement, relaxation; geoshaping/passes/frame_passes.h), and
   // the vertices they wrote beyond the frame's moved ones last update (restored to rest

@@ -2,10 +2,14 @@
 // geometry and handed to the core (geoshaping/deform/obstacles.h), which holds the rule.
 #include "vtkChainMailDeformationFilterInternals.h"
 
+#include "geoshaping/deform/obstacle_loop.h"
+
 #include "vtkAlgorithm.h"
+#include "vtkAlgorithmOutput.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataSetSurfaceFilter.h"
+#include "vtkGarbageCollector.h"
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 
@@ -21,6 +25,106 @@ int vtkChainMailDeformationFilter::FillInputPortInformation(int port, vtkInforma
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
   return 1;
+}
+
+namespace
+{
+// Whether `self` is `producer` or upstream of it (every input of every algorithm).
+bool MadeFrom(vtkAlgorithm* producer, vtkAlgorithm* self)
+{
+  return geoshaping::made_from(producer, self,
+    [](vtkAlgorithm* algorithm, auto add)
+    {
+      for (int port = 0; port < algorithm->GetNumberOfInputPorts(); ++port)
+        for (int c = 0; c < algorithm->GetNumberOfInputConnections(port); ++c)
+          add(algorithm->GetInputAlgorithm(port, c));
+    });
+}
+} // namespace
+
+int vtkChainMailDeformationFilter::ComputePipelineMTime(vtkInformation* request,
+  vtkInformationVector** inInfoVec, vtkInformationVector* outInfoVec, int requestFromOutputPort,
+  vtkMTimeType* mtime)
+{
+  // VTK forwards every request to every input: through an obstacle made from this
+  // filter's output a request would come back here without end (the stack overflowed).
+  // The executive reads port 1's connections after this call, so taking such an obstacle
+  // off the port here keeps every request of this update off the loop.
+  auto& held = this->Internals->HeldObstacles;
+  for (auto it = held.begin(); it != held.end();)
+  {
+    if (MadeFrom(it->first, this))
+    {
+      ++it;
+      continue;
+    }
+    this->AddInputConnection(1, it->first->GetOutputPort(it->second)); // the loop is gone
+    it = held.erase(it);
+  }
+  for (int j = this->GetNumberOfInputConnections(1) - 1; j >= 0; --j)
+  {
+    vtkAlgorithmOutput* obstacle = this->GetInputConnection(1, j);
+    if (obstacle && MadeFrom(obstacle->GetProducer(), this))
+    {
+      held.emplace(held.begin(), obstacle->GetProducer(), obstacle->GetIndex());
+      this->RemoveInputConnection(1, j);
+    }
+  }
+  return this->Superclass::ComputePipelineMTime(
+    request, inInfoVec, outInfoVec, requestFromOutputPort, mtime);
+}
+
+void vtkChainMailDeformationFilter::SetInputConnection(int port, vtkAlgorithmOutput* input)
+{
+  if (port == 1 && !this->Internals->HeldObstacles.empty())
+  {
+    this->Internals->HeldObstacles.clear();
+    this->Modified(); // the refusal ends even when port 1 was already empty
+  }
+  this->Superclass::SetInputConnection(port, input);
+}
+
+void vtkChainMailDeformationFilter::RemoveAllInputConnections(int port)
+{
+  if (port == 1 && !this->Internals->HeldObstacles.empty())
+  {
+    this->Internals->HeldObstacles.clear();
+    this->Modified(); // the refusal ends even when port 1 was already empty
+  }
+  this->Superclass::RemoveAllInputConnections(port);
+}
+
+void vtkChainMailDeformationFilter::ReportReferences(vtkGarbageCollector* collector)
+{
+  this->Superclass::ReportReferences(collector);
+  for (auto& obstacle : this->Internals->HeldObstacles)
+    vtkGarbageCollectorReport(collector, obstacle.first, "HeldObstacle");
+}
+
+void vtkChainMailDeformationFilter::RefuseObstacleLoop(const char* what)
+{
+  const std::string refused = what ? what : "";
+  if (refused != this->Internals->RefusedLoop)
+  {
+    this->Internals->RefusedLoop = refused;
+    this->Modified();
+  }
+}
+
+bool vtkChainMailDeformationFilter::RefuseHeldObstacles()
+{
+  const auto& state = *this->Internals;
+  if (state.HeldObstacles.empty() && state.RefusedLoop.empty())
+    return false;
+  const std::string what = state.HeldObstacles.empty()
+                             ? state.RefusedLoop
+                             : state.HeldObstacles.front().first->GetClassName();
+  vtkErrorMacro(
+    "Obstacle " << what
+                << " is made from this filter's own output: a pipeline loop (the deformation would "
+                   "feed its own obstacle). It is not used, and the output is the undeformed input "
+                   "until the Obstacles change.");
+  return true;
 }
 
 vtkIdType vtkChainMailDeformationFilterDetail::AppendObstacle(

@@ -7,16 +7,41 @@
 #include <pqServerManagerModel.h>
 #include <pqUndoStack.h>
 
+#include <vtkCamera.h>
 #include <vtkDataObject.h>
 #include <vtkPVRenderView.h>
 #include <vtkSMPVRepresentationProxy.h>
 #include <vtkSMPropertyHelper.h>
 #include <vtkSMProxy.h>
+#include <vtkSMRenderViewProxy.h>
 
 #include <QPointer>
 #include <QTimer>
+#include <QVariant>
 
 #include <cstring>
+
+namespace
+{
+// The first view of a relief: from the south, looking north and down at 35 degrees above
+// the horizon (the camera turned 55 degrees from straight down about the east axis).
+constexpr double ObliqueFromStraightDown = 55.0;
+// A dynamic property of the pqRenderView whose camera this behaviour has set once.
+constexpr const char* CameraSet = "GeoShapingDEMCameraSet";
+
+void ObliqueCamera(pqRenderView* view)
+{
+  vtkSMRenderViewProxy* proxy = view->getRenderViewProxy();
+  vtkCamera* camera = proxy->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.0, 0.0, 1.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->Elevation(-ObliqueFromStraightDown);
+  camera->OrthogonalizeViewUp();
+  proxy->SynchronizeCameraProperties();
+  view->resetCamera();
+}
+} // namespace
 
 pqDEMSurfaceBehavior::pqDEMSurfaceBehavior(QObject* parent)
   : QObject(parent)
@@ -69,7 +94,13 @@ void pqDEMSurfaceBehavior::onRepresentationAdded(
         vtkSMPVRepresentationProxy::RescaleTransferFunctionToDataRange(reprProxy);
         reprProxy->UpdateVTKObjects();
       }
-      view->resetCamera();
+      // The camera only the first time a DEM Surface is shown in this view: after that
+      // it is the user's.
+      if (!view->property(CameraSet).toBool())
+      {
+        view->setProperty(CameraSet, true);
+        ObliqueCamera(view);
+      }
       view->render();
     });
 }

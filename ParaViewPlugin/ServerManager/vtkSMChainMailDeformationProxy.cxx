@@ -1,9 +1,11 @@
 #include "vtkSMChainMailDeformationProxy.h"
 
 #include "edit_commands.h"
+#include "geoshaping/deform/obstacle_loop.h"
 #include "undo_step.h"
 #include "vtkSMEditHistoryUndoElement.h"
 
+#include "vtkClientServerStream.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -13,8 +15,11 @@
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxyListDomain.h"
 #include "vtkSMProxyLocator.h"
+#include "vtkSMProxyManager.h"
+#include "vtkSMSessionProxyManager.h"
 
 #include <cstring>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -89,6 +94,13 @@ vtkSMChainMailDeformationProxy::vtkSMChainMailDeformationProxy()
 void vtkSMChainMailDeformationProxy::CreateVTKObjects()
 {
   this->Superclass::CreateVTKObjects();
+  vtkSMSessionProxyManager* proxies = this->GetSessionProxyManager();
+  if (proxies && !this->Session)
+  {
+    this->Session = proxies;
+    this->SessionObserver = proxies->AddObserver(vtkCommand::PropertyModifiedEvent, this,
+      &vtkSMChainMailDeformationProxy::SessionPropertyModified);
+  }
   if (vtkSMProperty* obstacles = this->GetProperty("Obstacles"))
   {
     obstacles->AddObserver(
@@ -96,7 +108,102 @@ void vtkSMChainMailDeformationProxy::CreateVTKObjects()
   }
 }
 
-vtkSMChainMailDeformationProxy::~vtkSMChainMailDeformationProxy() = default;
+vtkSMChainMailDeformationProxy::~vtkSMChainMailDeformationProxy()
+{
+  if (this->Session)
+  {
+    this->Session->RemoveObserver(this->SessionObserver);
+  }
+}
+
+namespace
+{
+// Whether `self` is `proxy` or one of its producers, transitively (every proxy property).
+bool MadeFrom(vtkSMProxy* proxy, vtkSMProxy* self)
+{
+  return geoshaping::made_from(proxy, self,
+    [](vtkSMProxy* p, auto add)
+    {
+      for (unsigned int i = 0; i < p->GetNumberOfProducers(); ++i)
+        add(p->GetProducerProxy(i));
+    });
+}
+
+// The name the Pipeline Browser shows, else the proxy's label.
+std::string ShownName(vtkSMProxy* proxy)
+{
+  vtkSMSessionProxyManager* proxies = proxy ? proxy->GetSessionProxyManager() : nullptr;
+  const char* name = proxies ? proxies->GetProxyName("sources", proxy) : nullptr;
+  return name ? name : proxy && proxy->GetXMLLabel() ? proxy->GetXMLLabel() : "(unknown)";
+}
+} // namespace
+
+void vtkSMChainMailDeformationProxy::SessionPropertyModified(vtkObject*, unsigned long, void* data)
+{
+  auto* info = static_cast<vtkSMProxyManager::ModifiedPropertyInformation*>(data);
+  if (this->RefusingLoops || !info || !info->Proxy || !info->PropertyName ||
+      !vtkSMProxyProperty::SafeDownCast(info->Proxy->GetProperty(info->PropertyName)))
+  {
+    return; // only a link between proxies can close a loop
+  }
+  this->RefuseObstacleLoops(info->Proxy, info->PropertyName);
+}
+
+void vtkSMChainMailDeformationProxy::RefuseObstacleLoops(vtkSMProxy* modified, const char* property)
+{
+  auto* obstacles = vtkSMInputProperty::SafeDownCast(this->GetProperty("Obstacles"));
+  if (!obstacles)
+  {
+    return;
+  }
+  auto* connections = obstacles->FindDomain<vtkSMProxyListDomain>();
+  this->RefusingLoops = true;
+  std::string refused;
+  bool ours = false; // the change was to the Obstacles or to one of them
+  for (unsigned int k = obstacles->GetNumberOfProxies(); k-- > 0;)
+  {
+    vtkSMProxy* obstacle = obstacles->GetProxy(k);
+    ours = ours || obstacle == modified;
+    if (!obstacle || !MadeFrom(obstacle, this))
+    {
+      continue;
+    }
+    if (connections && connections->HasProxy(obstacle))
+    {
+      // The panel's Pipeline Connection: its Input goes back to (none).
+      refused = ShownName(vtkSMPropertyHelper(obstacle, "Input").GetAsProxy());
+      vtkSMPropertyHelper(obstacle, "Input").RemoveAllValues();
+      obstacle->UpdateVTKObjects();
+    }
+    else
+    {
+      refused = ShownName(obstacle);
+      obstacles->RemoveProxy(obstacle);
+    }
+  }
+  ours = ours || (modified == this && std::strcmp(property, "Obstacles") == 0);
+  if (!refused.empty())
+  {
+    if (obstacles->GetNumberOfProxies() == 0 && connections && connections->GetNumberOfProxies())
+    {
+      obstacles->AddInputConnection(connections->GetProxy(0), 0); // the panel's (none)
+    }
+    this->UpdateVTKObjects();
+    vtkErrorMacro("Obstacles: " << refused << " is made from " << ShownName(this)
+                                << "'s own output, a pipeline loop; it was taken off the "
+                                   "Obstacles, and the output is the undeformed input until "
+                                   "the Obstacles change.");
+  }
+  if (!refused.empty() || (ours && this->LoopRefused))
+  {
+    vtkClientServerStream stream;
+    stream << vtkClientServerStream::Invoke << VTKOBJECT(this) << "RefuseObstacleLoop"
+           << refused.c_str() << vtkClientServerStream::End;
+    this->ExecuteStream(stream);
+    this->LoopRefused = !refused.empty();
+  }
+  this->RefusingLoops = false;
+}
 
 void vtkSMChainMailDeformationProxy::PropertyPushed(vtkObject*, unsigned long, void* name)
 {

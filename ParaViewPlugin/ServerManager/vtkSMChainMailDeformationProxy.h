@@ -13,13 +13,15 @@
  * (docs/editing.md). In the GUI each command that changes the list is one step of
  * ParaView's undo stack (vtkSMEditHistoryUndoElement: Edit > Undo restores the list
  * before it), and its own bookkeeping push is not another. It also says when a transfer-curve list
- * is incomplete (vtkSMGeoShapingSourceProxy). ParaView instantiates it from the XML element
+ * is incomplete (vtkSMGeoShapingSourceProxy), and refuses an obstacle made from its own
+ * output (a pipeline loop). ParaView instantiates it from the XML element
  * `<ChainMailDeformationProxy>`.
  */
 #include "GeoShapingServerManagerModule.h"
 #include "vtkSMGeoShapingSourceProxy.h"
 
 #include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h"
 
 #include <string>
 #include <vector>
@@ -78,6 +80,20 @@ private:
   std::vector<vtkSmartPointer<vtkSMProxy>> LegacyObstacles;
   std::vector<unsigned int> LegacyPorts;
   bool MovingObstacles = false;
+
+  // An obstacle made from this filter's output is a pipeline loop, which ParaView's own
+  // proxy graph does not survive (its updates recurse over producers without end). Any
+  // proxy property changed in the session (PropertyModifiedEvent of the session's proxy
+  // manager: Obstacles set from Python, the Pipeline Connection's Input picked in the
+  // panel, an upstream Change Input) is checked at once: such an obstacle is taken off
+  // (the connection's Input back to (none), a direct one removed), with an error, and the
+  // filter refuses (RefuseObstacleLoop: output = input) until the Obstacles change.
+  void SessionPropertyModified(vtkObject*, unsigned long, void* info);
+  void RefuseObstacleLoops(vtkSMProxy* modified, const char* property);
+  vtkWeakPointer<vtkObject> Session;
+  unsigned long SessionObserver = 0;
+  bool RefusingLoops = false;
+  bool LoopRefused = false;
 
   bool LastEditChanged = false;
   int LastEditRedoable = 0;

@@ -10,6 +10,7 @@
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
+#include "vtkPassThrough.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -483,4 +484,60 @@ TEST(ChainMailObstacles, AnEmptyConnectionIsNoObstacleAndTheHeldBackCountIsInThe
   double x[3];
   onlyEmpty->GetPoint(10 * 21 + 10, x);
   EXPECT_EQ(x[2], -10.0);
+}
+
+TEST(ChainMailObstacles, AnObstacleMadeFromTheOutputIsALoopRefusedWithoutRecursion)
+{
+  // A pass-through of the filter's own output as its obstacle: VTK's requests would go
+  // round the loop until the stack overflows. The filter holds it off port 1, refuses
+  // (error, output = input), lets what is downstream update, and puts it back once the
+  // loop is gone (the pass-through's input a fixed sheet below: nothing held back).
+  auto horizon = TriangleGridPolyData(6, 6, 1.0, {});
+  vtkNew<vtkChainMailDeformationFilter> f;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  f->AddObserver(vtkCommand::ErrorEvent, errors);
+  f->SetInputData(horizon);
+  f->SetGraspPointId(14);
+  f->SetDisplacement(0, 0, 3);
+  vtkNew<vtkPassThrough> lifted;
+  lifted->SetInputConnection(f->GetOutputPort());
+  f->AddObstacleConnection(lifted->GetOutputPort());
+  vtkPointSet* out = Update(f);
+  EXPECT_NE(errors->GetErrorMessage().find("vtkPassThrough is made from this filter's own "
+                                           "output: a pipeline loop"),
+    std::string::npos)
+    << errors->GetErrorMessage();
+  EXPECT_EQ(f->GetNumberOfObstacleConnections(), 0); // held off
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    double a[3], b[3];
+    out->GetPoint(p, a);
+    horizon->GetPoint(p, b);
+    ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << p;
+  }
+  lifted->Update(); // downstream of the loop: the undeformed horizon
+  double x[3];
+  vtkPointSet::SafeDownCast(lifted->GetOutputDataObject(0))->GetPoint(14, x);
+  EXPECT_EQ(x[2], 0.0);
+
+  const double o[3] = { -1, -1, -5 }, du[3] = { 1, 0, 0 }, dv[3] = { 0, 1, 0 };
+  lifted->SetInputData(Sheet(8, o, du, dv));
+  errors->Clear();
+  out = Update(f);
+  EXPECT_EQ(errors->GetErrorMessage(), "");
+  EXPECT_EQ(f->GetNumberOfObstacleConnections(), 1); // back: the loop is gone
+  out->GetPoint(14, x);
+  EXPECT_EQ(x[2], 3.0);
+  EXPECT_FALSE(f->GetLastGraspBlocked());
+
+  // Set again as a loop, then port 1 cleared: the held obstacle goes with it.
+  lifted->SetInputConnection(f->GetOutputPort());
+  Update(f);
+  EXPECT_EQ(f->GetNumberOfObstacleConnections(), 0);
+  f->RemoveAllObstacleConnections();
+  errors->Clear();
+  out = Update(f);
+  EXPECT_EQ(errors->GetErrorMessage(), "");
+  out->GetPoint(14, x);
+  EXPECT_EQ(x[2], 3.0);
 }

@@ -40,11 +40,13 @@ def write_geotiff(out):
 
 
 # Mode dem_ready: DEM Surface applied on the raster shown in 2D, then the paint and the
-# deformation; a vertical pull (Z: the view looks straight down) raises the hill's top.
+# deformation; a vertical pull (Z) raises the hill's top.
 READY_SCRIPT = ("open GDALRasterReader; wait; wait; snapshot raster; apply DEMSurface; wait; wait; snapshot dem; "
                 "apply MalleabilityPaint; apply ChainMailDeformation; wait; wait; "
                 "press 0.5 0.5; key Z; move 0.5 0.55; move 0.5 0.6; wait; snapshot pulled; "
-                "release; wait; snapshot released")
+                "release; wait; snapshot released; elevation 10; wait; snapshot turned; "
+                "open GDALRasterReader; wait; wait; apply DEMSurface; wait; wait; "
+                "snapshot second")
 
 
 def prepare(mode, out, env):
@@ -73,7 +75,7 @@ def drawn_picks(out):
 def check_ready(out):
     """DEM Surface > Apply on the raster ParaView showed in 2D: a 3D view, the raster
     hidden, the surface coloured by Elevation and framed (its bounding box on screen,
-    filling most of the view); the pull raises the hill and the deformation's Elevation
+    filling 70 % of the view across), seen obliquely from the south; the pull raises the hill and the deformation's Elevation
     is the shaped z, its RestElevation the raster's."""
     from gui_files import read_results
     raster = read_results(out + "-raster.txt")
@@ -92,7 +94,16 @@ def check_ready(out):
     print("framed: the surface's box spans x %.0f ... %.0f, y %.0f ... %.0f of %g x %g px" % (
         x0, x1, y0, y1, w, h))
     assert 0 <= x0 and x1 <= w and 0 <= y0 and y1 <= h, "the surface is not all in view"
-    assert max((x1 - x0) / w, (y1 - y0) / h) >= 0.5, "the surface is not framed"
+    assert max((x1 - x0) / w, (y1 - y0) / h) >= 0.7, "the surface is not framed"
+    # An oblique first view of the relief: from the south, looking north and down at
+    # 35 degrees (30 ... 40) above the horizon, not straight down.
+    look = vector(dem, "view_direction")
+    elevation = np.degrees(np.arcsin(-look[2] / np.linalg.norm(look)))
+    heading = np.degrees(np.arctan2(look[0], look[1]))
+    print("first view: looking %.1f degrees down, heading %.1f degrees from north" % (
+        elevation, heading))
+    assert 30.0 <= elevation <= 40.0, "the first view is not oblique: %s" % look
+    assert abs(heading) <= 1.0, "the first view does not look north: %s" % look
 
     pulled, rows = snapshot(out, "pulled")
     rest, z = rows[:, 2], rows[:, 5]
@@ -106,6 +117,17 @@ def check_ready(out):
     released, rows = snapshot(out, "released")
     assert released["edit_history"] == "1", released
     assert np.array_equal(rows[:, 7], rows[:, 5]), "Elevation after the release"
+    # A second DEM Surface shown in the view leaves the camera the user turned.
+    before = read_results(out + "-turned.txt")
+    turned = vector(before, "view_direction")
+    second = read_results(out + "-second.txt")
+    print("the user turned the camera to %.1f degrees down; after a second DEM Surface: %s" % (
+        np.degrees(np.arcsin(-turned[2])), second["view_direction"]))
+    assert second["interaction_mode"] == "0", "the second DEM Surface left the view in 2D"
+    assert np.allclose(vector(second, "view_direction"), turned, atol=1e-6), \
+        "the second DEM Surface turned the user's camera"
+    assert np.array_equal(vector(second, "view_position"), vector(before, "view_position")), \
+        "the second DEM Surface moved the user's camera"
 
 
 def check(mode, out):

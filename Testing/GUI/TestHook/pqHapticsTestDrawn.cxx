@@ -8,6 +8,7 @@
 #include <pqRenderView.h>
 #include <pqServerManagerModel.h>
 
+#include <vtkCamera.h>
 #include <vtkPVDataInformation.h>
 #include <vtkPointSet.h>
 #include <vtkRenderWindowInteractor.h>
@@ -73,6 +74,11 @@ void pqHapticsWriteShown(QTextStream& out)
   vtkRenderer* renderer = view->getRenderViewProxy()->GetRenderer();
   const int* size = renderer->GetSize();
   out << "view_px = " << size[0] << " " << size[1] << "\n";
+  const double* look = renderer->GetActiveCamera()->GetDirectionOfProjection();
+  out << "view_direction = " << look[0] << " " << look[1] << " " << look[2] << "\n";
+  const double* eye = renderer->GetActiveCamera()->GetPosition();
+  out << "view_position = " << QString::number(eye[0], 'g', 17) << " "
+      << QString::number(eye[1], 'g', 17) << " " << QString::number(eye[2], 'g', 17) << "\n";
   auto* model = pqApplicationCore::instance()->getServerManagerModel();
   for (pqPipelineSource* source : model->findItems<pqPipelineSource*>())
   {

@@ -25,6 +25,7 @@
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
 #include <vtkAlgorithm.h>
+#include <vtkCamera.h>
 #include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
@@ -173,6 +174,18 @@ bool pqHapticsTestScript::step(std::chrono::steady_clock::time_point since)
         pqApplicationCore::instance()->getObjectBuilder()->createFilter("filters", words[1], input))
     {
       panel->apply();
+    }
+  }
+  else if (verb == "elevation" && words.size() > 1)
+  {
+    // The user turns the camera DEGREES up about the focal point, as a mouse orbit does.
+    if (auto* view = qobject_cast<pqRenderView*>(pqActiveObjects::instance().activeView()))
+    {
+      vtkCamera* camera = view->getRenderViewProxy()->GetActiveCamera();
+      camera->Elevation(words[1].toDouble());
+      camera->OrthogonalizeViewUp();
+      view->getRenderViewProxy()->SynchronizeCameraProperties();
+      view->render();
     }
   }
   else if (verb == "obstacle" && words.size() > 1)
