@@ -382,11 +382,11 @@ public:
   void AddObstacleConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
   void AddObstacleData(vtkDataObject* data) { this->AddInputDataObject(1, data); }
   void RemoveAllObstacleConnections() { this->SetInputConnection(1, nullptr); }
-  /// An obstacle that ParaView's proxy took off the Obstacles because it is made from
-  /// this filter's output (a pipeline loop, named by `what`): until this is called with
-  /// an empty name (the proxy does when the Obstacles change) RequestData refuses, naming
-  /// it, with the input as output. The proxy's way to refuse a loop that never reached
-  /// the filter.
+  /// An obstacle or markers input that ParaView's proxy took off because it is made from
+  /// this filter's output (a pipeline loop, named by `what`, e.g. "Obstacle Transform1"):
+  /// until this is called with an empty name (the proxy does when the Obstacles or the
+  /// Markers change) RequestData refuses, naming it, with the input as output. The
+  /// proxy's way to refuse a loop that never reached the filter.
   void RefuseObstacleLoop(const char* what);
   int GetNumberOfObstacleConnections() { return this->GetNumberOfInputConnections(1); }
   vtkSetClampMacro(ObstacleClearance, double, 0.0, VTK_DOUBLE_MAX);
@@ -498,15 +498,16 @@ protected:
   int ComputeInputUpdateExtent(
     vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   // The first call of every update, before the executive forwards a request to the
-  // inputs: an obstacle made from this filter's output (a loop) is taken off port 1 here,
-  // so no request goes round the loop (docs/obstacles.md); RequestData then refuses.
+  // inputs: an obstacle or markers made from this filter's output (a loop) is taken off
+  // port 1 or 2 here, so no request goes round the loop (docs/obstacles.md); RequestData
+  // then refuses.
   int ComputePipelineMTime(vtkInformation* request, vtkInformationVector** inInfoVec,
     vtkInformationVector* outInfoVec, int requestFromOutputPort, vtkMTimeType* mtime) override;
   void ReportReferences(vtkGarbageCollector*) override; // the held obstacles
 
 public:
   using Superclass::SetInputConnection;
-  // Setting or clearing port 1 drops the obstacles held back for a loop.
+  // Setting or clearing port 1 or 2 drops its inputs held back for a loop.
   void SetInputConnection(int port, vtkAlgorithmOutput* input) override;
   void RemoveAllInputConnections(int port) override;
 
@@ -611,8 +612,11 @@ private:
   // The obstacles of port 1 into the deformer (vtkChainMailDeformationFilterObstacles.cxx);
   // false (after an error) when they are refused.
   bool UpdateObstacles(vtkInformationVector** inputVector);
-  // An obstacle held back for a loop (ComputePipelineMTime): one error naming it, true.
+  // An input held back for a loop (ComputePipelineMTime): one error naming it, true.
   bool RefuseHeldObstacles();
+  // Forgets the inputs of `port` held back for a loop (SetInputConnection and
+  // RemoveAllInputConnections on it).
+  void DropHeldInputs(int port);
   // On several processes (vtkChainMailDeformationFilterParallelObstacles.cxx, collective):
   // every process's piece of the obstacles gathered to every process, the same triangles
   // everywhere, and the sliding mask of `input`; false (after an error, on every process)

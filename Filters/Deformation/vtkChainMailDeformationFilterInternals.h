@@ -76,10 +76,16 @@ struct vtkChainMailDeformationFilter::vtkInternals
   std::vector<geoshaping::index_t> SnapStale;
   // The obstacles the deformer holds were built from (data object, MTime per connection).
   std::vector<std::pair<vtkDataObject*, vtkMTimeType>> ObstacleSources;
-  // Obstacle connections taken off port 1 because their producer has the filter upstream
-  // (a pipeline loop; Obstacles.cxx), each (producer, output port); put back once the
-  // loop is gone, dropped when port 1 is set or cleared.
-  std::vector<std::pair<vtkSmartPointer<vtkAlgorithm>, int>> HeldObstacles;
+  // Connections taken off port 1 (obstacles) or 2 (markers) because their producer has
+  // the filter upstream (a pipeline loop; Obstacles.cxx); put back once the loop is gone,
+  // dropped when their port is set or cleared.
+  struct HeldInput
+  {
+    vtkSmartPointer<vtkAlgorithm> Producer;
+    int Output; // the producer's output port
+    int Port;   // this filter's input port
+  };
+  std::vector<HeldInput> HeldInputs;
   std::string RefusedLoop; // RefuseObstacleLoop's name, until it is called with ""
 
   // The passes after the frame (refinement, relaxation; geoshaping/passes/frame_passes.h), and

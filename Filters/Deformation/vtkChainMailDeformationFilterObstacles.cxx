@@ -13,6 +13,7 @@
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 
+#include <algorithm>
 #include <cmath>
 
 int vtkChainMailDeformationFilter::FillInputPortInformation(int port, vtkInformation* info)
@@ -46,59 +47,64 @@ int vtkChainMailDeformationFilter::ComputePipelineMTime(vtkInformation* request,
   vtkInformationVector** inInfoVec, vtkInformationVector* outInfoVec, int requestFromOutputPort,
   vtkMTimeType* mtime)
 {
-  // VTK forwards every request to every input: through an obstacle made from this
-  // filter's output a request would come back here without end (the stack overflowed).
-  // The executive reads port 1's connections after this call, so taking such an obstacle
-  // off the port here keeps every request of this update off the loop.
-  auto& held = this->Internals->HeldObstacles;
+  // VTK forwards every request to every input: through an obstacle (or markers) made from
+  // this filter's output a request would come back here without end (the stack
+  // overflowed). The executive reads ports 1 and 2's connections after this call, so
+  // taking such an input off its port here keeps every request of this update off the loop.
+  auto& held = this->Internals->HeldInputs;
   for (auto it = held.begin(); it != held.end();)
   {
-    if (MadeFrom(it->first, this))
+    if (MadeFrom(it->Producer, this))
     {
       ++it;
       continue;
     }
-    this->AddInputConnection(1, it->first->GetOutputPort(it->second)); // the loop is gone
+    this->AddInputConnection(it->Port, it->Producer->GetOutputPort(it->Output)); // no loop
     it = held.erase(it);
   }
-  for (int j = this->GetNumberOfInputConnections(1) - 1; j >= 0; --j)
-  {
-    vtkAlgorithmOutput* obstacle = this->GetInputConnection(1, j);
-    if (obstacle && MadeFrom(obstacle->GetProducer(), this))
+  for (int port : { 1, 2 })
+    for (int j = this->GetNumberOfInputConnections(port) - 1; j >= 0; --j)
     {
-      held.emplace(held.begin(), obstacle->GetProducer(), obstacle->GetIndex());
-      this->RemoveInputConnection(1, j);
+      vtkAlgorithmOutput* input = this->GetInputConnection(port, j);
+      if (input && MadeFrom(input->GetProducer(), this))
+      {
+        held.insert(held.begin(), { input->GetProducer(), input->GetIndex(), port });
+        this->RemoveInputConnection(port, j);
+      }
     }
-  }
   return this->Superclass::ComputePipelineMTime(
     request, inInfoVec, outInfoVec, requestFromOutputPort, mtime);
 }
 
+void vtkChainMailDeformationFilter::DropHeldInputs(int port)
+{
+  auto& held = this->Internals->HeldInputs;
+  const auto end =
+    std::remove_if(held.begin(), held.end(), [port](const auto& h) { return h.Port == port; });
+  if (end != held.end())
+  {
+    held.erase(end, held.end());
+    this->Modified(); // the refusal ends even when the port was already empty
+  }
+}
+
 void vtkChainMailDeformationFilter::SetInputConnection(int port, vtkAlgorithmOutput* input)
 {
-  if (port == 1 && !this->Internals->HeldObstacles.empty())
-  {
-    this->Internals->HeldObstacles.clear();
-    this->Modified(); // the refusal ends even when port 1 was already empty
-  }
+  this->DropHeldInputs(port);
   this->Superclass::SetInputConnection(port, input);
 }
 
 void vtkChainMailDeformationFilter::RemoveAllInputConnections(int port)
 {
-  if (port == 1 && !this->Internals->HeldObstacles.empty())
-  {
-    this->Internals->HeldObstacles.clear();
-    this->Modified(); // the refusal ends even when port 1 was already empty
-  }
+  this->DropHeldInputs(port);
   this->Superclass::RemoveAllInputConnections(port);
 }
 
 void vtkChainMailDeformationFilter::ReportReferences(vtkGarbageCollector* collector)
 {
   this->Superclass::ReportReferences(collector);
-  for (auto& obstacle : this->Internals->HeldObstacles)
-    vtkGarbageCollectorReport(collector, obstacle.first, "HeldObstacle");
+  for (auto& held : this->Internals->HeldInputs)
+    vtkGarbageCollectorReport(collector, held.Producer, "HeldInput");
 }
 
 void vtkChainMailDeformationFilter::RefuseObstacleLoop(const char* what)
@@ -114,16 +120,18 @@ void vtkChainMailDeformationFilter::RefuseObstacleLoop(const char* what)
 bool vtkChainMailDeformationFilter::RefuseHeldObstacles()
 {
   const auto& state = *this->Internals;
-  if (state.HeldObstacles.empty() && state.RefusedLoop.empty())
+  if (state.HeldInputs.empty() && state.RefusedLoop.empty())
     return false;
-  const std::string what = state.HeldObstacles.empty()
-                             ? state.RefusedLoop
-                             : state.HeldObstacles.front().first->GetClassName();
-  vtkErrorMacro(
-    "Obstacle " << what
+  // The proxy's words ("Obstacle Transform1"), else the held input's port and class.
+  const std::string what =
+    !state.HeldInputs.empty()
+      ? std::string(state.HeldInputs.front().Port == 2 ? "Markers input " : "Obstacle ") +
+          state.HeldInputs.front().Producer->GetClassName()
+      : state.RefusedLoop;
+  vtkErrorMacro(<< what
                 << " is made from this filter's own output: a pipeline loop (the deformation would "
-                   "feed its own obstacle). It is not used, and the output is the undeformed input "
-                   "until the Obstacles change.");
+                   "feed its own input). It is not used, and the output is the undeformed input "
+                   "until that input changes.");
   return true;
 }
 

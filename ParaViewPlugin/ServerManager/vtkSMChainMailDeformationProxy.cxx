@@ -151,48 +151,59 @@ void vtkSMChainMailDeformationProxy::SessionPropertyModified(vtkObject*, unsigne
 
 void vtkSMChainMailDeformationProxy::RefuseObstacleLoops(vtkSMProxy* modified, const char* property)
 {
-  auto* obstacles = vtkSMInputProperty::SafeDownCast(this->GetProperty("Obstacles"));
-  if (!obstacles)
-  {
-    return;
-  }
-  auto* connections = obstacles->FindDomain<vtkSMProxyListDomain>();
   this->RefusingLoops = true;
-  std::string refused;
-  bool ours = false; // the change was to the Obstacles or to one of them
-  for (unsigned int k = obstacles->GetNumberOfProxies(); k-- > 0;)
+  std::string refused; // the filter's words for the last input refused
+  bool ours = false;   // the change was to the Obstacles, the Markers or one of theirs
+  bool changed = false;
+  for (const char* name : { "Obstacles", "Markers" })
   {
-    vtkSMProxy* obstacle = obstacles->GetProxy(k);
-    ours = ours || obstacle == modified;
-    if (!obstacle || !MadeFrom(obstacle, this))
+    auto* inputs = vtkSMInputProperty::SafeDownCast(this->GetProperty(name));
+    if (!inputs)
     {
       continue;
     }
-    if (connections && connections->HasProxy(obstacle))
+    auto* connections = inputs->FindDomain<vtkSMProxyListDomain>();
+    std::string here;
+    for (unsigned int k = inputs->GetNumberOfProxies(); k-- > 0;)
     {
-      // The panel's Pipeline Connection: its Input goes back to (none).
-      refused = ShownName(vtkSMPropertyHelper(obstacle, "Input").GetAsProxy());
-      vtkSMPropertyHelper(obstacle, "Input").RemoveAllValues();
-      obstacle->UpdateVTKObjects();
+      vtkSMProxy* input = inputs->GetProxy(k);
+      ours = ours || input == modified;
+      if (!input || !MadeFrom(input, this))
+      {
+        continue;
+      }
+      if (connections && connections->HasProxy(input))
+      {
+        // The panel's Pipeline Connection: its Input goes back to (none).
+        here = ShownName(vtkSMPropertyHelper(input, "Input").GetAsProxy());
+        vtkSMPropertyHelper(input, "Input").RemoveAllValues();
+        input->UpdateVTKObjects();
+      }
+      else
+      {
+        here = ShownName(input);
+        inputs->RemoveProxy(input);
+      }
     }
-    else
+    ours = ours || (modified == this && std::strcmp(property, name) == 0);
+    if (here.empty())
     {
-      refused = ShownName(obstacle);
-      obstacles->RemoveProxy(obstacle);
+      continue;
     }
+    if (inputs->GetNumberOfProxies() == 0 && connections && connections->GetNumberOfProxies())
+    {
+      inputs->AddInputConnection(connections->GetProxy(0), 0); // the panel's (none)
+    }
+    changed = true;
+    const bool obstacles = std::strcmp(name, "Obstacles") == 0;
+    refused = (obstacles ? "Obstacle " : "Markers input ") + here;
+    vtkErrorMacro(<< name << ": " << here << " is made from " << ShownName(this)
+                  << "'s own output, a pipeline loop; it was taken off the " << name
+                  << ", and the output is the undeformed input until the " << name << " change.");
   }
-  ours = ours || (modified == this && std::strcmp(property, "Obstacles") == 0);
-  if (!refused.empty())
+  if (changed)
   {
-    if (obstacles->GetNumberOfProxies() == 0 && connections && connections->GetNumberOfProxies())
-    {
-      obstacles->AddInputConnection(connections->GetProxy(0), 0); // the panel's (none)
-    }
     this->UpdateVTKObjects();
-    vtkErrorMacro("Obstacles: " << refused << " is made from " << ShownName(this)
-                                << "'s own output, a pipeline loop; it was taken off the "
-                                   "Obstacles, and the output is the undeformed input until "
-                                   "the Obstacles change.");
   }
   if (!refused.empty() || (ours && this->LoopRefused))
   {

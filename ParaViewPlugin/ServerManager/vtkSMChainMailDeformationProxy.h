@@ -81,13 +81,14 @@ private:
   std::vector<unsigned int> LegacyPorts;
   bool MovingObstacles = false;
 
-  // An obstacle made from this filter's output is a pipeline loop, which ParaView's own
-  // proxy graph does not survive (its updates recurse over producers without end). Any
-  // proxy property changed in the session (PropertyModifiedEvent of the session's proxy
-  // manager: Obstacles set from Python, the Pipeline Connection's Input picked in the
-  // panel, an upstream Change Input) is checked at once: such an obstacle is taken off
-  // (the connection's Input back to (none), a direct one removed), with an error, and the
-  // filter refuses (RefuseObstacleLoop: output = input) until the Obstacles change.
+  // An obstacle or markers input made from this filter's output is a pipeline loop,
+  // which ParaView's own proxy graph does not survive (its updates recurse over producers
+  // without end). Any proxy property changed in the session (PropertyModifiedEvent of the
+  // session's proxy manager: Obstacles or Markers set from Python, the Pipeline
+  // Connection's Input picked in the panel, an upstream Change Input) is checked at once:
+  // such an input is taken off (the connection's Input back to (none), a direct one
+  // removed), with an error, and the filter refuses (RefuseObstacleLoop: output = input)
+  // until the Obstacles or Markers change.
   void SessionPropertyModified(vtkObject*, unsigned long, void* info);
   void RefuseObstacleLoops(vtkSMProxy* modified, const char* property);
   vtkWeakPointer<vtkObject> Session;

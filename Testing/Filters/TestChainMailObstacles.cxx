@@ -541,3 +541,39 @@ TEST(ChainMailObstacles, AnObstacleMadeFromTheOutputIsALoopRefusedWithoutRecursi
   out->GetPoint(14, x);
   EXPECT_EQ(x[2], 3.0);
 }
+
+TEST(ChainMailObstacles, MarkersMadeFromTheOutputAreALoopRefusedWithoutRecursion)
+{
+  // The same loop through port 2 (the Markers): held off, refused (error naming the
+  // Markers input, output = input), the downstream pass-through updates; clearing the
+  // Markers ends the refusal and the pull is back.
+  auto horizon = TriangleGridPolyData(6, 6, 1.0, {});
+  vtkNew<vtkChainMailDeformationFilter> f;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  f->AddObserver(vtkCommand::ErrorEvent, errors);
+  f->SetInputData(horizon);
+  f->SetGraspPointId(14);
+  f->SetDisplacement(0, 0, 3);
+  vtkNew<vtkPassThrough> wells;
+  wells->SetInputConnection(f->GetOutputPort());
+  f->AddMarkersConnection(wells->GetOutputPort());
+  vtkPointSet* out = Update(f);
+  EXPECT_NE(errors->GetErrorMessage().find("Markers input vtkPassThrough is made from this "
+                                           "filter's own output: a pipeline loop"),
+    std::string::npos)
+    << errors->GetErrorMessage();
+  EXPECT_EQ(f->GetNumberOfInputConnections(2), 0); // held off
+  double x[3];
+  out->GetPoint(14, x);
+  EXPECT_EQ(x[2], 0.0);
+  wells->Update(); // downstream of the loop: the undeformed horizon
+  vtkPointSet::SafeDownCast(wells->GetOutputDataObject(0))->GetPoint(14, x);
+  EXPECT_EQ(x[2], 0.0);
+
+  f->RemoveAllMarkersConnections();
+  errors->Clear();
+  out = Update(f);
+  EXPECT_EQ(errors->GetErrorMessage(), "");
+  out->GetPoint(14, x);
+  EXPECT_EQ(x[2], 3.0);
+}

@@ -1,6 +1,6 @@
 """An obstacle made from the deformation's own output (a Transform of it, chosen in
-Python or through the panel's Pipeline Connection) is a pipeline loop: taken off the
-Obstacles with an error naming it, the output the undeformed input, no crash and no hang
+Python or through the panel's Pipeline Connection), or markers made from it, is a
+pipeline loop: taken off the Obstacles (Markers) with an error naming it, the output the undeformed input, no crash and no hang
 (the test's ctest TIMEOUT fails it if it hangs; before, UpdatePipeline overflowed the
 stack); with the Obstacles set again the filter deforms again."""
 import numpy as np
@@ -65,6 +65,22 @@ for how in ("Python", "Pipeline Connection"):
     chain.Displacement = [0.0, 0.0, 5.0]
     chain.UpdatePipeline()
     check(np.array_equal(points(chain), free), "%s: without the loop the pull is back" % how)
+# The same loop through the Markers (port 2): taken off with an error, the output the
+# input's shape, the Transform downstream updates, the pull back once it is gone.
+chain.Markers = [lifted]
+check(len(chain.Markers) == 1 and chain.Markers[0].GetXMLName() == "PipelineConnection",
+      "Markers: the Transform is taken off the Markers (%r)" % (chain.Markers,))
+chain.Displacement = [0.0, 0.0, 6.0]
+text = update(chain)
+check(np.array_equal(points(chain), rest) and "Markers input Transform1 is made from this "
+      "filter's own output: a pipeline loop" in text,
+      "Markers: refused, the output the input's shape (%r)" % text[-300:])
+update(lifted)
+check(np.array_equal(points(lifted)[:, 2], rest[:, 2] + 1.0), "Markers: the Transform updates")
+chain.Markers = []
+chain.Displacement = [0.0, 0.0, 5.0]
+chain.UpdatePipeline()
+check(np.array_equal(points(chain), free), "Markers: without the loop the pull is back")
 # A loop closed upstream: an obstacle that was a Transform of a plane gets the
 # deformation as its Input (Change Input...).
 plane = Plane(Origin=[-50, -50, 100], Point1=[150, -50, 100], Point2=[-50, 150, 100])  # noqa: F405
