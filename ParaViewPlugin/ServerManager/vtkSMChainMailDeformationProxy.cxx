@@ -146,10 +146,10 @@ void vtkSMChainMailDeformationProxy::SessionPropertyModified(vtkObject*, unsigne
   {
     return; // only a link between proxies can close a loop
   }
-  this->RefuseObstacleLoops(info->Proxy, info->PropertyName);
+  this->RefuseInputLoops(info->Proxy, info->PropertyName);
 }
 
-void vtkSMChainMailDeformationProxy::RefuseObstacleLoops(vtkSMProxy* modified, const char* property)
+void vtkSMChainMailDeformationProxy::RefuseInputLoops(vtkSMProxy* modified, const char* property)
 {
   this->RefusingLoops = true;
   std::string refused; // the filter's words for the last input refused

@@ -90,7 +90,7 @@ private:
   // removed), with an error, and the filter refuses (RefuseObstacleLoop: output = input)
   // until the Obstacles or Markers change.
   void SessionPropertyModified(vtkObject*, unsigned long, void* info);
-  void RefuseObstacleLoops(vtkSMProxy* modified, const char* property);
+  void RefuseInputLoops(vtkSMProxy* modified, const char* property);
   vtkWeakPointer<vtkObject> Session;
   unsigned long SessionObserver = 0;
   bool RefusingLoops = false;

@@ -73,6 +73,24 @@ vtkSmartPointer<vtkPolyData> DippingFault()
                dv[3] = { -10.0 / 8, 0, 20.0 / 8 };
   return Sheet(9, o, du, dv);
 }
+
+// The loop tests' scene: a 6 x 6 horizon, vertex 14 pulled up by 3, errors caught, and a
+// pass-through of the filter's own output (`loop`) for the test to connect back into it.
+struct LoopScene
+{
+  vtkSmartPointer<vtkPolyData> horizon = TriangleGridPolyData(6, 6, 1.0, {});
+  vtkNew<vtkChainMailDeformationFilter> f;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  vtkNew<vtkPassThrough> loop;
+  LoopScene()
+  {
+    f->AddObserver(vtkCommand::ErrorEvent, errors);
+    f->SetInputData(horizon);
+    f->SetGraspPointId(14);
+    f->SetDisplacement(0, 0, 3);
+    loop->SetInputConnection(f->GetOutputPort());
+  }
+};
 } // namespace
 
 TEST(ChainMailObstacles, HorizonPulledDownStopsAboveTheLowerHorizon)
@@ -492,15 +510,8 @@ TEST(ChainMailObstacles, AnObstacleMadeFromTheOutputIsALoopRefusedWithoutRecursi
   // round the loop until the stack overflows. The filter holds it off port 1, refuses
   // (error, output = input), lets what is downstream update, and puts it back once the
   // loop is gone (the pass-through's input a fixed sheet below: nothing held back).
-  auto horizon = TriangleGridPolyData(6, 6, 1.0, {});
-  vtkNew<vtkChainMailDeformationFilter> f;
-  vtkNew<vtkTest::ErrorObserver> errors;
-  f->AddObserver(vtkCommand::ErrorEvent, errors);
-  f->SetInputData(horizon);
-  f->SetGraspPointId(14);
-  f->SetDisplacement(0, 0, 3);
-  vtkNew<vtkPassThrough> lifted;
-  lifted->SetInputConnection(f->GetOutputPort());
+  LoopScene scene;
+  auto& [horizon, f, errors, lifted] = scene;
   f->AddObstacleConnection(lifted->GetOutputPort());
   vtkPointSet* out = Update(f);
   EXPECT_NE(errors->GetErrorMessage().find("vtkPassThrough is made from this filter's own "
@@ -547,15 +558,8 @@ TEST(ChainMailObstacles, MarkersMadeFromTheOutputAreALoopRefusedWithoutRecursion
   // The same loop through port 2 (the Markers): held off, refused (error naming the
   // Markers input, output = input), the downstream pass-through updates; clearing the
   // Markers ends the refusal and the pull is back.
-  auto horizon = TriangleGridPolyData(6, 6, 1.0, {});
-  vtkNew<vtkChainMailDeformationFilter> f;
-  vtkNew<vtkTest::ErrorObserver> errors;
-  f->AddObserver(vtkCommand::ErrorEvent, errors);
-  f->SetInputData(horizon);
-  f->SetGraspPointId(14);
-  f->SetDisplacement(0, 0, 3);
-  vtkNew<vtkPassThrough> wells;
-  wells->SetInputConnection(f->GetOutputPort());
+  LoopScene scene;
+  auto& [horizon, f, errors, wells] = scene;
   f->AddMarkersConnection(wells->GetOutputPort());
   vtkPointSet* out = Update(f);
   EXPECT_NE(errors->GetErrorMessage().find("Markers input vtkPassThrough is made from this "
