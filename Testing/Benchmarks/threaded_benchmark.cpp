@@ -1,6 +1,8 @@
 // Threaded supersteps (chainmail_deformer.h, "Threads") against the one-thread frame on
-// the 1600 x 1600 painted grid (bench::painted_grid, 8 bands), centre grasp, pulled to
-// displace 1,000,000, 300,000, 100,000 or 30,000 vertices.
+// the 1600 x 1600 grid, centre grasp, pulled to displace 1,000,000, 300,000, 100,000 or
+// 30,000 vertices. Paint (the last argument of BM_Interleaved and BM_SuperstepShare):
+// 0 tiles (bench::painted_grid, 8 bands), 1 the project's Smooth brush (bench::brush_painted,
+// tens of thousands of values: the real case).
 //
 // BM_ThreadedFrame/<queue>/<threads>/<displaced in thousands>/<threshold>, queue 0 FIFO or 2 FIFO
 //   Priority: frames on `threads` threads (1: the one-thread frame; 0: automatic, one thread
@@ -8,20 +10,24 @@
 //   whole processes A B A B (docs/benchmarks.md, "Threaded frame"). Counters per frame:
 //   wall `ms`, the calling thread's CPU `main_cpu_ms`, the process's `cpu_ms` (all
 //   threads), supersteps and threaded supersteps.
-// BM_Interleaved/<queue>/<displaced in thousands>/<threshold>: a one-thread and a two-thread
-// deformer
+// BM_Interleaved/<queue>/<displaced in thousands>/<threshold>/<paint>: a one-thread and a
+// two-thread deformer
 //   in turn in one loop (one, two, one, ...), wall clock each: `one_ms`, `two_ms`,
 //   `speedup`, and each frame's CPU; threshold 0 is the default, others choose it.
-// BM_SuperstepShare/<queue>/<displaced in thousands>: the one-thread frame superstep by
-//   superstep: `threaded_share`, the share of its time in supersteps at or above the
-//   default threshold (those that run threaded), and their count.
+// BM_SuperstepShare/<queue>/<displaced in thousands>/<threads>/<paint>: the frame superstep
+//   by superstep: `threaded_share`, the share of its time in supersteps at or above the
+//   default threshold (those that run threaded on several threads), and their count;
+//   `step_ms` the supersteps' examination (with a threaded one's pushes), `end_ms` the
+//   pushes of the others and the filing of all, `pending_ms` finding the next superstep.
 #include "bench_scenes.h"
 #include "geoshaping/parallel/thread_clock.h"
 
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cmath>
 #include <ctime>
+#include <map>
 #include <memory>
 
 using namespace geoshaping;
@@ -31,24 +37,54 @@ namespace
 constexpr index_t side = 1600;
 constexpr index_t grasp = (side / 2) * side + side / 2;
 
-ChainMailDeformer& scene()
+// paint 0: tiles, 1: the Smooth brush.
+ChainMailDeformer& scene(int paint = 0)
 {
-  static std::unique_ptr<ChainMailDeformer> d;
-  if (!d)
+  static std::unique_ptr<ChainMailDeformer> d[2];
+  if (!d[paint])
   {
-    d = std::make_unique<ChainMailDeformer>();
+    d[paint] = std::make_unique<ChainMailDeformer>();
     std::vector<float> m;
     auto mesh = bench::painted_grid(side, m);
-    d->set_mesh(mesh.xyz.data(), mesh.size(), std::move(mesh.adjacency));
-    d->set_malleability(m.data());
+    if (paint == 1)
+      m = bench::brush_painted(
+        mesh.xyz.data(), mesh.size(), mesh.adjacency, 0.0, 0.0, double(side - 1));
+    d[paint]->set_mesh(mesh.xyz.data(), mesh.size(), std::move(mesh.adjacency));
+    d[paint]->set_malleability(m.data());
   }
-  return *d;
+  return *d[paint];
 }
 
-// The pulls that displace the given thousands of vertices (bisection on the pull, done
-// once; the counters report the exact count).
-double pull_for(QueueKind q, int thousands)
+// The pulls that displace the given thousands of vertices (tiles: bisection on the pull,
+// done once; brush: bisected here to within 1 %, once per queue and size; the counters
+// report the exact count).
+double pull_for(QueueKind q, int thousands, int paint = 0)
 {
+  if (paint == 1)
+  {
+    static std::map<std::pair<int, int>, double> pulls;
+    double& pull = pulls[{ int(q), thousands }];
+    if (pull == 0.0)
+    {
+      ChainMailDeformer& d = scene(1);
+      d.set_queue(q);
+      const std::size_t target = std::size_t(thousands) * 1000;
+      double lo = 0.0, hi = 1.0;
+      while (d.deform(grasp, { 0.0, 0.0, hi }).moved < target)
+        hi *= 2.0;
+      pull = hi;
+      for (int it = 0; it < 40; ++it)
+      {
+        pull = 0.5 * (lo + hi);
+        const std::size_t moved = d.deform(grasp, { 0.0, 0.0, pull }).moved;
+        if (std::abs(double(moved) - double(target)) < 0.01 * double(target))
+          break;
+        (moved < target ? lo : hi) = pull;
+      }
+      d.reset();
+    }
+    return pull;
+  }
   const bool fifo = q == QueueKind::fifo;
   switch (thousands)
   {
@@ -120,18 +156,19 @@ void BM_ThreadedFrame(benchmark::State& state)
 void BM_Interleaved(benchmark::State& state)
 {
   const auto queue = static_cast<QueueKind>(state.range(0));
-  ChainMailDeformer& one = scene();
+  const int paint = int(state.range(3));
+  const Eigen::Vector3d pull(0.0, 0.0, pull_for(queue, int(state.range(1)), paint));
+  ChainMailDeformer& one = scene(paint);
   one.set_queue(queue);
   one.set_threads(1);
-  static std::unique_ptr<ChainMailDeformer> two_threads;
-  if (!two_threads)
-    two_threads = std::make_unique<ChainMailDeformer>(one);
-  ChainMailDeformer& two = *two_threads;
+  static std::unique_ptr<ChainMailDeformer> two_threads[2];
+  if (!two_threads[paint])
+    two_threads[paint] = std::make_unique<ChainMailDeformer>(one);
+  ChainMailDeformer& two = *two_threads[paint];
   two.set_queue(queue);
   two.set_threads(2);
-  if (state.range(2) > 0)
-    two.set_threaded_threshold(std::size_t(state.range(2)));
-  const Eigen::Vector3d pull(0.0, 0.0, pull_for(queue, int(state.range(1))));
+  two.set_threaded_threshold(
+    state.range(2) > 0 ? std::size_t(state.range(2)) : ChainMailDeformer().threaded_threshold());
   two.deform(grasp, pull); // starts the threads
   FrameTimes one_t, two_t;
   FrameResult r;
@@ -151,18 +188,20 @@ void BM_Interleaved(benchmark::State& state)
   state.counters["one_cpu_ms"] = 1e3 * one_t.main_cpu / n;
   state.counters["two_main_cpu_ms"] = 1e3 * two_t.main_cpu / n;
   state.counters["two_cpu_ms"] = 1e3 * two_t.cpu / n;
-  state.SetLabel(queue_name(queue));
+  state.SetLabel(std::string(queue_name(queue)) + (paint == 1 ? ", brush" : ", tiles"));
 }
 
 void BM_SuperstepShare(benchmark::State& state)
 {
   const auto queue = static_cast<QueueKind>(state.range(0));
-  ChainMailDeformer& d = scene();
+  const int paint = int(state.range(3));
+  const Eigen::Vector3d pull(0.0, 0.0, pull_for(queue, int(state.range(1)), paint));
+  ChainMailDeformer& d = scene(paint);
   d.set_queue(queue);
-  d.set_threads(1);
+  d.set_threads(int(state.range(2)));
   const std::size_t threshold = ChainMailDeformer().threaded_threshold();
-  const Eigen::Vector3d pull(0.0, 0.0, pull_for(queue, int(state.range(1))));
-  double total = 0.0, above = 0.0;
+  d.deform(grasp, pull); // starts the threads, sizes the buffers
+  double total = 0.0, above = 0.0, step = 0.0, end = 0.0, pending = 0.0;
   std::size_t supersteps = 0, large = 0, moved = 0;
   for (auto _ : state)
   {
@@ -171,26 +210,40 @@ void BM_SuperstepShare(benchmark::State& state)
     d.begin_frame();
     d.move_vertex(grasp, pull);
     d.end_superstep();
-    for (SuperstepKey key; (key = d.pending()) != SuperstepQueue::none;)
+    for (;;)
     {
       const auto t1 = std::chrono::steady_clock::now();
+      const SuperstepKey key = d.pending();
+      const auto t2 = std::chrono::steady_clock::now();
+      pending += std::chrono::duration<double>(t2 - t1).count();
+      if (key == SuperstepQueue::none)
+        break;
       const std::size_t entries = d.superstep(key);
+      const auto t3 = std::chrono::steady_clock::now();
       d.end_superstep();
+      step += std::chrono::duration<double>(t3 - t2).count();
+      end += seconds_since(t3);
       ++supersteps;
       if (entries >= threshold)
       {
-        above += seconds_since(t1);
+        above += seconds_since(t2);
         ++large;
       }
     }
     total += seconds_since(t0);
     moved = d.moved().size();
   }
+  const double n = double(state.iterations());
   state.counters["displaced"] = double(moved);
   state.counters["supersteps"] = double(supersteps);
   state.counters["large_supersteps"] = double(large);
   state.counters["threaded_share"] = above / total;
-  state.SetLabel(queue_name(queue));
+  state.counters["ms"] = 1e3 * total / n;
+  state.counters["step_ms"] = 1e3 * step / n;
+  state.counters["end_ms"] = 1e3 * end / n;
+  state.counters["pending_ms"] = 1e3 * pending / n;
+  state.SetLabel(std::string(queue_name(queue)) + ", " + std::to_string(d.threads()) + " threads" +
+                 (paint == 1 ? ", brush" : ", tiles"));
 }
 } // namespace
 
@@ -200,13 +253,13 @@ BENCHMARK(BM_ThreadedFrame)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_Interleaved)
-  ->ArgsProduct({ { 0, 2 }, { 1000, 300, 100, 30 }, { 0 } })
-  ->ArgsProduct({ { 0 }, { 1000, 300, 100 }, { 256, 4096 } })
+  ->ArgsProduct({ { 0, 2 }, { 1000, 300, 100, 30 }, { 0 }, { 0, 1 } })
+  ->ArgsProduct({ { 0 }, { 1000, 300, 100 }, { 256, 4096 }, { 0 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime()
   ->MinTime(1.0);
 BENCHMARK(BM_SuperstepShare)
-  ->ArgsProduct({ { 0, 2 }, { 1000, 300, 100, 30 } })
+  ->ArgsProduct({ { 0, 2 }, { 1000, 300, 100, 30 }, { 1, 2 }, { 0, 1 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 

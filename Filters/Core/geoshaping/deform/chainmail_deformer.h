@@ -98,17 +98,17 @@ struct FrameResult
 //
 // Threads. With set_threads(n > 1), a superstep whose group holds at least
 // threaded_threshold() entries is examined by n threads of a pool the deformer keeps
-// (worker_pool.h; deform/threaded_superstep.cpp), each a contiguous chunk of the group:
-// entries are independent within a superstep, and "the longest move wins, the first in
-// push order among equal lengths" becomes an atomic maximum of |u|^2 over the entries
-// proposing to move c, then an atomic minimum over those as long as it. The
-// winners are put in global id order (each thread sorts its own, then each merges a range
-// of ids) and written into the slots the one-thread superstep gives them; under FIFO the
-// threads then push the neighbours of their ranges, whose concatenation is the one-thread
-// push order. Everything else runs on the caller's thread as before: small supersteps,
-// FIFO Priority's pushes (their groups depend on the bands), Priority and Max Violation,
-// frames with obstacles, pieces (set_owned). The result is bit for bit the one-thread
-// frame's whatever the threads or their scheduling.
+// (worker_pool.h; deform/threaded_superstep.cpp): entries are independent within a
+// superstep, and thread t owns the candidates whose global ids lie in a range [lo_t, hi_t)
+// (ranges in id order, from samples of the group), so it alone examines their entries, in
+// push order, keeping for each candidate "the longest move, the first in push order among
+// equal lengths" with no atomics. Each thread sorts its winners by global id and, after one
+// barrier, writes them into the slots the one-thread superstep gives them (its range's
+// slots follow the lower ranges'); under FIFO it then pushes the neighbours of its moves,
+// and the threads' pushes in range order are the one-thread push order. Everything else runs on the
+// caller's thread as before: small supersteps, FIFO Priority's pushes (their groups depend on the
+// bands), Priority and Max Violation, frames with obstacles, pieces (set_owned). The result is bit
+// for bit the one-thread frame's whatever the threads or their scheduling.
 //
 // On a busy machine threads would lose (another process on a core stops one thread for
 // milliseconds at each barrier). With automatic threads (set_threads(0)), when the pool
