@@ -9,7 +9,8 @@
 //   for a while after a stall on a busy machine), for farm-bench to time
 //   whole processes A B A B (docs/benchmarks.md, "Threaded frame"). Counters per frame:
 //   wall `ms`, the calling thread's CPU `main_cpu_ms`, the process's `cpu_ms` (all
-//   threads), supersteps and threaded supersteps.
+//   threads), supersteps and threaded supersteps (the last frame's), and the share of
+//   frames that ran a threaded superstep, `threaded_frames`.
 // BM_Interleaved/<queue>/<displaced in thousands>/<threshold>/<paint>: a one-thread and a
 // two-thread deformer
 //   in turn in one loop (one, two, one, ...), wall clock each: `one_ms`, `two_ms`,
@@ -138,12 +139,15 @@ void BM_ThreadedFrame(benchmark::State& state)
   const Eigen::Vector3d pull(0.0, 0.0, pull_for(queue, int(state.range(2))));
   FrameResult r = d.deform(grasp, pull); // starts the threads
   FrameTimes times;
+  double threaded_frames = 0.0;
   for (auto _ : state)
   {
     r = times.run(d, grasp, pull);
+    threaded_frames += r.threaded_supersteps > 0;
     benchmark::DoNotOptimize(r.moved);
   }
   const double n = double(state.iterations());
+  state.counters["threaded_frames"] = threaded_frames / n;
   state.counters["displaced"] = double(r.moved);
   state.counters["supersteps"] = double(r.supersteps);
   state.counters["threaded_supersteps"] = double(r.threaded_supersteps);

@@ -329,3 +329,27 @@ TEST(WorkerPool, ThreadKeptOffItsCoreIsReportedAsAStall)
   EXPECT_FALSE(one.stalled()); // one thread never waits
   EXPECT_EQ(ran[0], 2);
 }
+
+// A busy machine seen before a run (worker_pool.h): the runnable threads of the machine
+// come from /proc/loadavg's fourth field, and T threads are short of cores when more
+// others run than the cores T leaves.
+TEST(WorkerPool, RunnableThreadsAreReadFromLoadavg)
+{
+  EXPECT_EQ(WorkerPool::runnable_in_loadavg("0.52 0.58 0.59 3/467 1234\n"), 3);
+  EXPECT_EQ(WorkerPool::runnable_in_loadavg("12.00 8.10 4.02 17/2048 99"), 17);
+  EXPECT_EQ(WorkerPool::runnable_in_loadavg("0.52 0.58 0.59"), -1);
+  EXPECT_EQ(WorkerPool::runnable_in_loadavg("garbage"), -1);
+  EXPECT_EQ(WorkerPool::runnable_in_loadavg(""), -1);
+#if defined(__linux__)
+  EXPECT_GE(WorkerPool::others_running(nullptr), 0); // read, whatever else runs
+#endif
+}
+
+TEST(WorkerPool, CoresAreShortWhenOtherThreadsHoldThem)
+{
+  EXPECT_FALSE(WorkerPool::cores_short(0, 2, 2)); // idle: both cores ours
+  EXPECT_TRUE(WorkerPool::cores_short(1, 2, 2));  // a spinner on one of two cores
+  EXPECT_FALSE(WorkerPool::cores_short(2, 4, 2)); // two others, two cores left
+  EXPECT_TRUE(WorkerPool::cores_short(3, 4, 2));
+  EXPECT_FALSE(WorkerPool::cores_short(-1, 2, 2)); // unknown: the stall rule decides
+}

@@ -390,7 +390,7 @@ std::size_t ChainMailDeformer::superstep(const SuperstepKey& key)
     return 0;
   const SuperstepRoot root = SuperstepQueue::root_of(key);
   const bool link = frame_kind_ == ValidRegionFrame::link;
-  if (threaded_superstep(end - begin))
+  if (threaded_superstep(end - begin) && cores_free())
     return link ? examine_threaded<ValidRegionFrame::link>(begin, end, root)
                 : examine_threaded<ValidRegionFrame::axes>(begin, end, root);
   return link ? examine<ValidRegionFrame::link>(begin, end, root)

@@ -398,6 +398,9 @@ private:
     return threads_ > 1 && entries >= threaded_threshold_ && !threads_paused_ && !obstacles_ &&
            ghost_.empty() && moved_rec_.size() == superstep_begin_;
   }
+  // With automatic threads, whether the cores are free for them this frame: read once per
+  // frame, at its first superstep large enough for threads (WorkerPool::others_running).
+  bool cores_free();
   // Files the pushes examine_threaded() made, if they are this superstep's; false if not.
   bool file_threaded_pushes();
   std::size_t threaded_bytes() const;
@@ -513,6 +516,8 @@ private:
   bool automatic_threads_ = false;
   bool threads_paused_ = false;
   std::uint32_t paused_frames_ = 0, backoff_ = 0;
+  std::uint32_t load_frame_ = 0; // the frame cores_free() last read the machine in
+  bool cores_taken_ = false;
   ThreadedHandle threaded_;
 };
 

@@ -85,6 +85,21 @@ std::size_t ChainMailDeformer::threaded_bytes() const
   return bytes;
 }
 
+bool ChainMailDeformer::cores_free()
+{
+  if (!automatic_threads_)
+    return true;
+  if (load_frame_ != frame_)
+  {
+    load_frame_ = frame_;
+    const int others =
+      WorkerPool::others_running(threaded_.state ? &threaded_.state->pool : nullptr);
+    cores_taken_ = WorkerPool::cores_short(
+      others, std::max(1, int(std::thread::hardware_concurrency())), threads_);
+  }
+  return !cores_taken_;
+}
+
 bool ChainMailDeformer::file_threaded_pushes()
 {
   Threaded* t = threaded_.state.get();

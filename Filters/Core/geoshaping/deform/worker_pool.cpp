@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -127,6 +129,39 @@ void WorkerPool::barrier(bool in_job)
     sleepers_.fetch_sub(1);
   }
   left_barrier = clock::now();
+}
+
+int WorkerPool::runnable_in_loadavg(const char* line)
+{
+  // Fields: three load averages, then "runnable/total", then the last pid.
+  const char* p = line;
+  for (int field = 0; field < 3; ++field)
+  {
+    while (*p == ' ')
+      ++p;
+    while (*p && *p != ' ')
+      ++p;
+  }
+  while (*p == ' ')
+    ++p;
+  char* end = nullptr;
+  const long runnable = std::strtol(p, &end, 10);
+  return end != p && *end == '/' && runnable >= 0 ? int(runnable) : -1;
+}
+
+int WorkerPool::others_running(const WorkerPool* pool)
+{
+  std::FILE* f = std::fopen("/proc/loadavg", "r");
+  if (!f)
+    return -1;
+  char line[128] = {};
+  const bool read = std::fgets(line, sizeof line, f) != nullptr;
+  std::fclose(f);
+  const int runnable = read ? runnable_in_loadavg(line) : -1;
+  if (runnable < 0)
+    return -1;
+  const int spinning = pool ? int(pool->workers_.size()) - pool->sleepers_.load() : 0;
+  return std::max(0, runnable - 1 - spinning);
 }
 
 } // namespace geoshaping

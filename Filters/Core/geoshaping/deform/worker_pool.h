@@ -11,6 +11,10 @@
 // one (and longer than `stall_floor`) means another ran at less than half its speed,
 // where T threads cannot beat one. A wait past `yield_after` yields the core instead of
 // spinning on it, so the thread waited for can run there.
+//
+// Before a run the caller may ask whether other threads hold the cores (others_running(),
+// cores_short()): Linux counts the runnable threads of the whole machine at this instant
+// (/proc/loadavg), so a process spinning beside the pool is seen before a run stalls on it.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -45,6 +49,20 @@ public:
   // Whether a thread of the last run waited at a barrier inside the job for longer than it
   // had worked since its previous barrier, and longer than stall_floor (see above).
   bool stalled() const { return stalled_.load(std::memory_order_relaxed); }
+
+  // The threads of the machine runnable now other than the caller and this pool's workers
+  // still spinning between runs; -1 where that cannot be read (no /proc/loadavg). A pool
+  // not yet made counts none of its own: others_running(nullptr).
+  static int others_running(const WorkerPool* pool);
+  // The runnable count of a /proc/loadavg line ("0.52 0.58 0.59 3/467 1234": 3), -1 if the
+  // line has none.
+  static int runnable_in_loadavg(const char* line);
+  // Whether `threads` threads would share a core with one of `others` runnable threads on a
+  // machine of `cores` (others > cores - threads); an unknown count (-1) is not short.
+  static bool cores_short(int others, int cores, int threads)
+  {
+    return others >= 0 && others > cores - threads;
+  }
 
 private:
   void run_erased(void (*call)(void*, int), void* job);
