@@ -207,6 +207,7 @@ TEST(HandSim, WithTheScenesWorkCreditedARisingSurfacePushesTheStylusWithoutAStep
     const double motion = (row.x - r.rows[i - 1].x).norm() + 2 * DeviceModel().resolution;
     ASSERT_LE(step, k * (motion + 0.016 * speed) + 1e-9) << row.t;
   }
+  std::cout << "rising sheet, the scene's work credited: work " << r.work * 1e3 << " mJ\n";
   EXPECT_NEAR(r.rows.back().x.z(), speed * 1.0 - 1.0 / k, 0.001);
   EXPECT_GT(r.work, 0.0); // the scene's work, passed on to the hand
 }
@@ -230,11 +231,12 @@ TEST(HandSim, ASurfaceRisingUnderARestingStylusPassesThroughItInsteadOfLiftingTh
     const double step = (row.force - r.rows[i - 1].force).norm();
     const double motion = (row.x - r.rows[i - 1].x).norm() + 2 * DeviceModel().resolution;
     ASSERT_LE(step, k * (motion + 0.016 * speed) + damper_step()) << row.t;
-    if (through < 0.0 && row.x.z() < speed * row.t)
+    if (through < 0.0 && speed * row.t - row.x.z() > shell_of(DeviceLimits().max_force))
       through = row.t;
   }
-  std::cout << "rising sheet: under it from " << through << " s, end z "
-            << r.rows.back().x.z() * 1e3 << " mm, work " << r.work * 1e3 << " mJ\n";
+  std::cout << "rising sheet: deeper than the shell from " << through << " s, end z "
+            << r.rows.back().x.z() * 1e3 << " mm, force " << r.rows.back().force.z() << " N, work "
+            << r.work * 1e3 << " mJ, injected " << r.energy * 1e3 << " mJ\n";
   EXPECT_LT(r.rows.back().x.z(), speed * 1.0 - shell_of(1.0)); // not lifted: through it
   EXPECT_TRUE(r.rows.back().contact);
   EXPECT_GT(r.rows.back().proxy.z(), speed * 1.0 - 0.016 * speed); // the side is kept
@@ -429,7 +431,7 @@ SceneAt plateau_moved_at(double when, double moved)
 // spring at max force, F_max / k_c (4.1 mm; docs/haptics.md, "A stale scene").
 double shell()
 {
-  return DeviceLimits().max_force / ForceParams().contact_stiffness;
+  return shell_of(DeviceLimits().max_force);
 }
 } // namespace
 
@@ -519,7 +521,7 @@ TEST(HandSim, APlateauRaisedDuringAStallDoesNotLiftTheHand)
   std::cout << "plateau raised 1 mm: rested at " << rest * 1e3 << " mm, highest after "
             << highest * 1e3 << " mm, end " << rows.back().x.z() * 1e3 << " mm, force "
             << rows.back().force.z() << " N, step beyond k |dx| " << worst << " N, work "
-            << s.run.work * 1e3 << " mJ\n";
+            << s.run.work * 1e3 << " mJ, injected " << s.run.energy * 1e3 << " mJ\n";
   EXPECT_LE(highest, rest + DeviceModel().resolution);
   EXPECT_LE(worst, k * moved + damper_step());
   EXPECT_LE(s.run.work, 0.0);
@@ -559,7 +561,7 @@ TEST(HandSim, AFreezeLongerThanTheContactHoldKeepsTheSideWithoutYankingTheStylus
   std::cout << "5 s freeze: deepest " << deepest * 1000 << " mm, after the resume at least "
             << resumed * 1000 << " mm deep, force at most " << strongest
             << " N, largest step beyond k |dx| " << r.figures.max_step_excess << " N, work "
-            << r.work * 1e3 << " mJ\n";
+            << r.work * 1e3 << " mJ, injected " << r.energy * 1e3 << " mJ\n";
   EXPECT_GT(deepest, shell());        // the hand got through while the force was off ...
   EXPECT_GT(resumed, shell());        // ... and the contact that came back did not lift it
   EXPECT_LT(strongest, 1.0);          // (weaker than the hand)
