@@ -60,11 +60,12 @@ public:
   // The scale changes the force by at most step a tick, shared with the damper, and a
   // carry's drop by at most what the carry added, so a tick's force step stays within
   // k_c |dx| (+ k_c carried) + step; it never turns a push into a pull. Where U <= L + m
-  // (every static scene the hand simulator runs) s = 1 and F is F_d plus the damper, bit
-  // for bit. m is params.passivity_margin: the observer reads quantised positions, and
-  // a first contact stores energy before the force has absorbed any. C_k is credited only
-  // with params.credit_scene_work (a surface rising under the stylus then lifts the hand:
-  // not passive). With params.passivity_control off it returns F_d unchanged.
+  // (a static scene, whose springs hold what the stylus put in) s = 1 and F is F_d plus
+  // the damper, bit for bit. m is params.passivity_margin: the observer reads quantised
+  // positions, and a first contact stores energy before the force has absorbed any. C_k
+  // is credited only with params.credit_scene_work (a surface rising under the stylus
+  // then lifts the hand: not passive). With params.passivity_control off it returns F_d
+  // unchanged.
   Eigen::Vector3d control(const Eigen::Vector3d& position, bool readable,
     const ForceResult& rendered, const ForceFade& before, const ForceFade& after,
     const ForceParams& params, const DeviceLimits& limits);
