@@ -50,9 +50,8 @@ ForceResult ServoTick::tick(const DeviceSample& sample, bool device_ok, Clock::t
   const ForceFade before = this->fade_;
   ForceResult r = compute_force(in, scene, this->params_, limits, this->proxy_, &this->fade_);
   const bool fault = r.status == ForceStatus::device_error || r.status == ForceStatus::non_finite;
-  const bool faded =
-    this->fade_.coupling != before.coupling || this->fade_.contact != before.contact;
-  r.force = this->passivity_.control(sample.position, !fault, r, faded, this->params_, limits);
+  r.force = this->passivity_.control(
+    sample.position, !fault, r, before, this->fade_, this->params_, limits);
   return r;
 }
 

@@ -32,6 +32,13 @@ SceneAt still(const Soup& soup)
   return [soup](double, Soup& out) { out = soup; };
 }
 
+// The sheet rising at `rising_speed` (3 cm/s: 0.48 mm per 16 ms patch).
+constexpr double rising_speed = 0.03;
+SceneAt rising_sheet()
+{
+  return [](double t, Soup& out) { out = sheet(rising_speed * t); };
+}
+
 std::vector<HandKey> push(const Eigen::Vector3d& f, double seconds)
 {
   return { { 0.0, Eigen::Vector3d::Zero() }, { 0.2, f }, { seconds, f } };
@@ -61,6 +68,12 @@ double damper_step()
 {
   const ForceParams params;
   return DeviceLimits().max_force * params.servo_period / params.fade_time + 1e-9;
+}
+
+// How deep under a surface a hand pushing `f` N rests on the contact spring (k_c).
+double shell_of(double f)
+{
+  return f / ForceParams().contact_stiffness;
 }
 
 // Largest force step a stylus moving by one position quantum per tick may cause.
@@ -175,14 +188,16 @@ TEST(HandSim, SlidingAcrossAPatchReplacedEvery16msGivesNoStep)
   EXPECT_LE(r.energy, 0.0);
 }
 
-TEST(HandSim, ASurfaceRisingUnderTheStylusPushesItWithoutAStep)
+TEST(HandSim, WithTheScenesWorkCreditedARisingSurfacePushesTheStylusWithoutAStep)
 {
-  // The sheet rises 3 cm/s (0.48 mm per 16 ms patch) under a stylus pressing 1 N: it is
-  // carried up, on top, and each patch changes the force by at most k times the
-  // surface's motion in that patch plus the stylus's own motion.
-  const double speed = 0.03;
-  const SceneAt rising = [speed](double t, Soup& out) { out = sheet(speed * t); };
-  const SimRun r = run(rising, push({ 0, 0, -1 }, 1.0), { 0.0, 0.0, 0.003 });
+  // The sheet rises 3 cm/s (0.48 mm per 16 ms patch) under a stylus pressing 1 N, the
+  // scene's work credited (ForceParams::credit_scene_work): it is carried up, on top, and
+  // each patch changes the force by at most k times the surface's motion in that patch
+  // plus the stylus's own motion.
+  const double speed = rising_speed;
+  HandSimOptions options;
+  options.force.credit_scene_work = true;
+  const SimRun r = run(rising_sheet(), push({ 0, 0, -1 }, 1.0), { 0.0, 0.0, 0.003 }, options);
   const double k = ForceParams().contact_stiffness;
   for (std::size_t i = 1; i < r.rows.size(); ++i)
   {
@@ -192,7 +207,40 @@ TEST(HandSim, ASurfaceRisingUnderTheStylusPushesItWithoutAStep)
     const double motion = (row.x - r.rows[i - 1].x).norm() + 2 * DeviceModel().resolution;
     ASSERT_LE(step, k * (motion + 0.016 * speed) + 1e-9) << row.t;
   }
+  std::cout << "rising sheet, the scene's work credited: work " << r.work * 1e3 << " mJ\n";
   EXPECT_NEAR(r.rows.back().x.z(), speed * 1.0 - 1.0 / k, 0.001);
+  EXPECT_GT(r.work, 0.0); // the scene's work, passed on to the hand
+}
+
+TEST(HandSim, ASurfaceRisingUnderARestingStylusPassesThroughItInsteadOfLiftingTheHand)
+{
+  // The same sheet and hand by default: the energy bound (passivity.h) scales the contact
+  // force down as the carried proxy stretches the spring beyond what the rendering
+  // absorbed, so the hand sinks through the rising sheet instead of being lifted: the
+  // proxy stays on top (the side is kept), the rendered work is not positive, and no
+  // force step exceeds k times the motion and the carry by more than the fades' step.
+  const double speed = rising_speed;
+  const SimRun r = run(rising_sheet(), push({ 0, 0, -1 }, 1.0), { 0.0, 0.0, 0.003 });
+  const double k = ForceParams().contact_stiffness;
+  double through = -1.0; // when the stylus got under the sheet
+  for (std::size_t i = 1; i < r.rows.size(); ++i)
+  {
+    const TrajectoryRow& row = r.rows[i];
+    if (row.contact)
+      ASSERT_GT(row.proxy.z(), speed * row.t - 0.016 * speed) << row.t;
+    const double step = (row.force - r.rows[i - 1].force).norm();
+    const double motion = (row.x - r.rows[i - 1].x).norm() + 2 * DeviceModel().resolution;
+    ASSERT_LE(step, k * (motion + 0.016 * speed) + damper_step()) << row.t;
+    if (through < 0.0 && speed * row.t - row.x.z() > shell_of(DeviceLimits().max_force))
+      through = row.t;
+  }
+  std::cout << "rising sheet: deeper than the shell from " << through << " s, end z "
+            << r.rows.back().x.z() * 1e3 << " mm, force " << r.rows.back().force.z() << " N, work "
+            << r.work * 1e3 << " mJ, injected " << r.energy * 1e3 << " mJ\n";
+  EXPECT_LT(r.rows.back().x.z(), speed * 1.0 - shell_of(1.0)); // not lifted: through it
+  EXPECT_TRUE(r.rows.back().contact);
+  EXPECT_GT(r.rows.back().proxy.z(), speed * 1.0 - 0.016 * speed); // the side is kept
+  EXPECT_LE(r.work, 0.0);
 }
 
 namespace
@@ -355,9 +403,11 @@ struct Stall
   HandSimOptions options;
   std::size_t resume = 0; // the row of the first tick with a patch after the stall
 };
-Stall press_through_a_stall(double frame, int frames, const SceneAt& scene, double extra = 0.5)
+Stall press_through_a_stall(double frame, int frames, const SceneAt& scene, double extra = 0.5,
+  bool credit_scene_work = false)
 {
   Stall s;
+  s.options.force.credit_scene_work = credit_scene_work;
   s.options.patch_period = frame;
   s.options.stall_from = 0.6;
   s.options.stall_until = 0.6 + frames * frame;
@@ -367,11 +417,21 @@ Stall press_through_a_stall(double frame, int frames, const SceneAt& scene, doub
   return s;
 }
 
+// The fault step, `moved` higher from `when` s on.
+SceneAt plateau_moved_at(double when, double moved)
+{
+  return [when, moved](double t, Soup& out)
+  {
+    out =
+      grid(10, 8, [&](double x, double y) { return fault_step(x, y) + (t > when ? moved : 0.0); });
+  };
+}
+
 // How deep under the plateau a hand the device can hold keeps the stylus: the contact
 // spring at max force, F_max / k_c (4.1 mm; docs/haptics.md, "A stale scene").
 double shell()
 {
-  return DeviceLimits().max_force / ForceParams().contact_stiffness;
+  return shell_of(DeviceLimits().max_force);
 }
 } // namespace
 
@@ -408,16 +468,13 @@ TEST(HandSim, APlateauThatMovedDuringAStallCarriesTheProxyOntoItsNewPlace)
 {
   // The plateau is 1 mm lower, or higher, when the 0.8 s stall ends: the first patch after
   // carries the proxy by s = 1 mm (carry_over), a step of at most k_c (|dx| + s); the
-  // stylus stays on top of the surface where it is, within the shell.
+  // stylus stays on top of the surface where it is, within the shell. Raised, only with
+  // the scene's work credited: by default the plateau comes up through the stylus, whose
+  // spring the energy bound softens instead of lifting the hand (the next test).
   const double k = ForceParams().contact_stiffness;
   for (const double moved : { -0.001, 0.001 })
   {
-    const SceneAt scene = [moved](double t, Soup& out)
-    {
-      out =
-        grid(10, 8, [&](double x, double y) { return fault_step(x, y) + (t > 1.0 ? moved : 0.0); });
-    };
-    const Stall s = press_through_a_stall(0.016, 50, scene);
+    const Stall s = press_through_a_stall(0.016, 50, plateau_moved_at(1.0, moved), 0.5, moved > 0);
     const auto& rows = s.run.rows;
     double worst = 0.0;
     for (std::size_t i = 400; i < rows.size(); ++i)
@@ -431,7 +488,8 @@ TEST(HandSim, APlateauThatMovedDuringAStallCarriesTheProxyOntoItsNewPlace)
       worst = std::max(worst, step - k * motion);
     }
     std::cout << "plateau moved " << moved * 1000 << " mm: step beyond k |dx| " << worst
-              << " N (k s = " << k * std::abs(moved) << "), injected " << s.run.energy << " J\n";
+              << " N (k s = " << k * std::abs(moved) << "), injected " << s.run.energy
+              << " J, work " << s.run.work * 1e3 << " mJ\n";
     EXPECT_LE(worst, k * std::abs(moved) + 1e-9);
     EXPECT_NEAR(rows.back().x.z(), moved - 1.5 / k, 0.0002);
     if (moved < 0.0)
@@ -439,28 +497,79 @@ TEST(HandSim, APlateauThatMovedDuringAStallCarriesTheProxyOntoItsNewPlace)
   }
 }
 
-TEST(HandSim, AFreezeLongerThanTheContactHoldFadesOutAndBackInKeepingTheSide)
+TEST(HandSim, APlateauRaisedDuringAStallDoesNotLiftTheHand)
+{
+  // The plateau 1 mm higher after the 0.8 s stall, by default: the carried proxy stretches
+  // the spring by 1 mm with energy the rendering never absorbed, so the energy bound
+  // scales its force down (at most the fades' step a tick beyond k_c (|dx| + s)) rather
+  // than lifting the hand: the stylus stays in contact, the proxy on the new plateau,
+  // the stylus no higher than it rested before, and the rendered work is not positive.
+  const double k = ForceParams().contact_stiffness, moved = 0.001;
+  const Stall s = press_through_a_stall(0.016, 50, plateau_moved_at(1.0, moved));
+  const auto& rows = s.run.rows;
+  const double rest = rows[s.resume - 1].x.z();
+  double worst = 0.0, highest = -1.0;
+  for (std::size_t i = s.resume; i < rows.size(); ++i)
+  {
+    ASSERT_TRUE(rows[i].contact) << rows[i].t;
+    ASSERT_GT(rows[i].proxy.z(), moved) << rows[i].t;
+    const double step = (rows[i].force - rows[i - 1].force).norm();
+    const double motion = (rows[i].x - rows[i - 1].x).norm() + 2 * DeviceModel().resolution;
+    worst = std::max(worst, step - k * motion);
+    highest = std::max(highest, rows[i].x.z());
+  }
+  std::cout << "plateau raised 1 mm: rested at " << rest * 1e3 << " mm, highest after "
+            << highest * 1e3 << " mm, end " << rows.back().x.z() * 1e3 << " mm, force "
+            << rows.back().force.z() << " N, step beyond k |dx| " << worst << " N, work "
+            << s.run.work * 1e3 << " mJ, injected " << s.run.energy * 1e3 << " mJ\n";
+  EXPECT_LE(highest, rest + DeviceModel().resolution);
+  EXPECT_LE(worst, k * moved + damper_step());
+  EXPECT_LE(s.run.work, 0.0);
+}
+
+TEST(HandSim, AFreezeLongerThanTheContactHoldKeepsTheSideWithoutYankingTheStylusBack)
 {
   // 10 frames/s frozen for 5 s: the contact is held 2 s (ForceParams::stale_contact_max),
-  // then fades out and the hand pushes the stylus down; the proxy stays on the plateau,
-  // and when the scene comes back the force fades in (at most F_max T / fade_time a tick
-  // beyond k_c |dx|) and lifts the stylus back onto the plateau.
-  const Stall s = press_through_a_stall(0.1, 50, still(grid(10, 8, fault_step)), 1.5);
-  const auto& rows = s.run.rows;
+  // then fades out and the hand pushes the stylus down to the workspace's floor; the proxy
+  // stays on the plateau. When the scene comes back the contact fades in, but its spring,
+  // stretched 8 cm, holds far more than the rendering absorbed: the energy bound keeps it
+  // weak (the stylus is not yanked back up) until the hand brings the stylus back above
+  // the plateau (lifting 0.5 N from 7.1 s); pressed again, it rests on the plateau with
+  // the full force. No step beyond the fades' step; the rendered work is not positive.
+  HandSimOptions options;
+  options.patch_period = 0.1;
+  options.stall_from = 0.6;
+  options.stall_until = 5.6;
+  const std::vector<HandKey> hand = { { 0.0, { 0, 0, 0 } }, { 0.2, { 0, 0, -1.5 } },
+    { 7.1, { 0, 0, -1.5 } }, { 7.11, { 0, 0, 0.5 } }, { 7.6, { 0, 0, 0.5 } },
+    { 7.61, { 0, 0, -1.5 } }, { 9.0, { 0, 0, -1.5 } } };
+  const SimRun r = run(still(grid(10, 8, fault_step)), hand, { 0.001, -0.02, 0.002 }, options);
   const ForceParams params;
-  const double fade_step = DeviceLimits().max_force * params.servo_period / params.fade_time;
-  double deepest = 0.0;
-  for (std::size_t i = 400; i < rows.size(); ++i)
+  double deepest = 0.0, resumed = 1.0, strongest = 0.0;
+  for (const TrajectoryRow& row : r.rows)
   {
-    ASSERT_GT(rows[i].proxy.z(), 0.0) << rows[i].t;
-    deepest = std::max(deepest, -rows[i].x.z());
+    if (row.t < 0.4)
+      continue;
+    ASSERT_GT(row.proxy.z(), 0.0) << row.t;
+    deepest = std::max(deepest, -row.x.z());
+    if (row.t >= options.stall_until && row.t < 7.1)
+    {
+      resumed = std::min(resumed, -row.x.z());
+      strongest = std::max(strongest, row.force.norm());
+    }
   }
-  std::cout << "5 s freeze: deepest " << deepest * 1000 << " mm, largest step beyond k |dx| "
-            << s.run.figures.max_step_excess << " N, injected " << s.run.energy << " J\n";
-  EXPECT_GT(deepest, shell());      // the hand got through while the force was off ...
-  EXPECT_TRUE(rows.back().contact); // ... and the side was kept: back on top
-  EXPECT_NEAR(rows.back().x.z(), -1.5 / params.contact_stiffness, 0.0002);
-  EXPECT_LE(s.run.figures.max_step_excess, fade_step + 1e-9);
+  std::cout << "5 s freeze: deepest " << deepest * 1000 << " mm, after the resume at least "
+            << resumed * 1000 << " mm deep, force at most " << strongest
+            << " N, largest step beyond k |dx| " << r.figures.max_step_excess << " N, work "
+            << r.work * 1e3 << " mJ, injected " << r.energy * 1e3 << " mJ\n";
+  EXPECT_GT(deepest, shell());        // the hand got through while the force was off ...
+  EXPECT_GT(resumed, shell());        // ... and the contact that came back did not lift it
+  EXPECT_LT(strongest, 1.0);          // (weaker than the hand)
+  EXPECT_TRUE(r.rows.back().contact); // back on top once the hand brought it back
+  EXPECT_NEAR(r.rows.back().x.z(), -1.5 / params.contact_stiffness, 0.0002);
+  EXPECT_NEAR(r.rows.back().force.z(), 1.5, 0.1);
+  EXPECT_LE(r.figures.max_step_excess, damper_step());
+  EXPECT_LE(r.work, 0.0);
 }
 
 namespace
@@ -516,6 +625,14 @@ std::vector<PassivityRow> passivity_runs(bool control)
     { 0.001, -0.02, 0.002 }, options);
   add("slide 1 N over 500 slivers, let go", still(grid(1, 250, [](double, double) { return 0.0; })),
     slide, { -0.01, -0.02, 0.002 }, options);
+  add("the sheet rising 3 cm/s under a 1 N hand", rising_sheet(), push({ 0, 0, -1 }, 1.0),
+    { 0.0, 0.0, 0.003 }, options);
+  HandSimOptions frozen = options;
+  frozen.patch_period = 0.1;
+  frozen.stall_from = 0.6;
+  frozen.stall_until = 5.6;
+  add("5 s freeze, contact faded out and back in", still(grid(10, 8, fault_step)),
+    push({ 0, 0, -1.5 }, 7.1), { 0.001, -0.02, 0.002 }, frozen);
   return out;
 }
 } // namespace
@@ -553,33 +670,5 @@ TEST(HandSim, ThePassivityControllerKeepsTheRenderedWorkNonPositiveWithinTheStep
       << with[i].name;
     for (const TrajectoryRow& row : r.rows)
       ASSERT_LE(row.force.norm(), DeviceLimits().max_force + 1e-12) << with[i].name;
-  }
-}
-
-TEST(HandSim, TheWorkOfTheRenderedForceWhereTheSceneMovesOrFreezes)
-{
-  // Where the scene itself moves or comes back the rendering may do work on the hand: a
-  // rising sheet carries the stylus up (the controller lets the scene's own work through,
-  // ForceResult::scene_work), and a contact that fades back in after a 5 s freeze lifts
-  // the stylus back up onto the plateau (its spring's energy came back with the fade).
-  // Printed for docs/haptics.md, "Passivity".
-  for (bool control : { false, true })
-  {
-    HandSimOptions options;
-    options.force.passivity_control = control;
-    const double speed = 0.03;
-    const SceneAt rising = [speed](double t, Soup& out) { out = sheet(speed * t); };
-    const SimRun r = run(rising, push({ 0, 0, -1 }, 1.0), { 0.0, 0.0, 0.003 }, options);
-    Stall s;
-    s.options = options;
-    s.options.patch_period = 0.1;
-    s.options.stall_from = 0.6;
-    s.options.stall_until = 5.6;
-    s.run = run(still(grid(10, 8, fault_step)), push({ 0, 0, -1.5 }, 7.1), { 0.001, -0.02, 0.002 },
-      s.options);
-    std::cout << (control ? "with" : "without") << " the controller: rising sheet " << r.work * 1e3
-              << " mJ (end z " << r.rows.back().x.z() * 1e3 << " mm), 5 s freeze "
-              << s.run.work * 1e3 << " mJ (end z " << s.run.rows.back().x.z() * 1e3 << " mm)\n";
-    EXPECT_NEAR(r.rows.back().x.z(), speed * 1.0 - 1.0 / ForceParams().contact_stiffness, 0.001);
   }
 }

@@ -113,8 +113,13 @@ TEST(ServoLoop, RunsNearOneKilohertzWithASimulatedDevice)
 
 TEST(ServoLoop, CouplingForceReachesTheDeviceAndTheGraphicsSide)
 {
+  // The stylus rests 1 cm from the anchor from the start: a spring holding 10 mJ the
+  // rendering never absorbed, which the passivity controller's energy bound would scale
+  // down (Passivity.*); here the plumbing alone.
   RecordingDevice device = resting_at({ 0.01, 0, 0 });
-  ServoLoop loop(device);
+  ServoConfig config;
+  config.force.passivity_control = false;
+  ServoLoop loop(device, config);
   Graphics graphics(loop, Eigen::Vector3d::Zero(), 200.0);
   ASSERT_TRUE(loop.start());
   DeviceSnapshot snap = poll_until(
@@ -133,8 +138,13 @@ TEST(ServoLoop, CouplingForceReachesTheDeviceAndTheGraphicsSide)
 
 TEST(ServoLoop, SendsZeroForceOnceTheDeviceReportsAnError)
 {
+  // The stylus rests 1 cm from the anchor from the start: a spring holding 10 mJ the
+  // rendering never absorbed, which the passivity controller's energy bound would scale
+  // down (Passivity.*); here the plumbing alone.
   RecordingDevice device = resting_at({ 0.01, 0, 0 });
-  ServoLoop loop(device);
+  ServoConfig config;
+  config.force.passivity_control = false;
+  ServoLoop loop(device, config);
   Graphics graphics(loop, Eigen::Vector3d::Zero(), 200.0);
   ASSERT_TRUE(loop.start());
   poll_until(loop, [](const DeviceSnapshot& s) { return s.ticks > 20; });
@@ -249,8 +259,12 @@ TEST(ServoTick, AStalledGraspFadesOutAndBackInWithoutAStep)
 {
   // A grasp 1 cm from its anchor at 200 N/m (2 N); the scene stops for 0.5 s, then comes
   // back. The coupling fades out after the timeout and back in, by at most
-  // F_max T / fade_time a tick: never the 2 N step of cutting it.
-  const ForceParams params;
+  // F_max T / fade_time a tick: never the 2 N step of cutting it. The spring is stretched
+  // from the start (energy never absorbed, which the passivity controller's energy bound
+  // would scale down): the fades alone, without the controller.
+  ForceParams params;
+  params.passivity_control = false;
+  ServoTick servo(params);
   auto scene_at = [](int t)
   {
     const int frame = t < 100 || t >= 600 ? t / 16 : 99 / 16;
@@ -261,7 +275,7 @@ TEST(ServoTick, AStalledGraspFadesOutAndBackInWithoutAStep)
     s.grasp_stiffness = 200.0;
     return s;
   };
-  const auto f = tick_resting({ 0.01, 0, 0 }, 1000, scene_at);
+  const auto f = tick_resting({ 0.01, 0, 0 }, 1000, scene_at, 0, &servo);
   const double fade_step = DeviceLimits().max_force * params.servo_period / params.fade_time;
   EXPECT_NEAR(f[50].force.x(), -2.0, 1e-9);
   EXPECT_EQ(f[450].status, ForceStatus::stale_scene);

@@ -45,15 +45,21 @@ struct ForceParams
   // 1 kHz, at most 0.033 N a tick at 3.3 N max force.
   double fade_time = 0.1;
 
-  // ServoTick's passivity observer and controller (passivity.h): the rendered force's work
-  // on the stylus kept from being positive by a variable damper, so that a display is
-  // passive without the device's own damping. Off: the force compute_force gives, as is.
+  // ServoTick's passivity controller (passivity.h): the rendered force's work on the
+  // stylus kept from being positive by a variable damper and an energy bound on the
+  // springs' force, so that a display is passive without the device's own damping. Off:
+  // the force compute_force gives, as is.
   bool passivity_control = true;
-  // J the controller keeps the observed work below zero by: the observer reads quantised
-  // positions, and the true work differs from the observed by the force times the
-  // quantisation error; 50 uJ covers it in every run of the hand simulator
+  // J the controller keeps the observed work below zero by, and the springs' seed: the
+  // observer reads quantised positions, and the true work differs from the observed by the
+  // force times the quantisation error; 50 uJ covers it in every run of the hand simulator
   // (docs/haptics.md, "Passivity").
   double passivity_margin = 50e-6;
+  // Credit the work a moving scene does on the springs (ForceResult::scene_work) to the
+  // controller, so that a surface rising under the stylus lifts the hand as it did before
+  // the energy bound: the rendering is then not passive. Off: such a surface passes
+  // through a resting stylus (the proxy keeps the side).
+  bool credit_scene_work = false;
 };
 
 // What compute_force keeps from tick to tick beside the proxy: the fraction (0 to 1) of
@@ -103,10 +109,12 @@ struct ForceResult
   Eigen::Vector3d proxy = Eigen::Vector3d::Zero(); // the proxy after this tick
   // J: the energy the scene's own motion put into the contact spring this tick (carry_over
   // moving the proxy with a surface that moved, at this tick's stylus position; 0 when it
-  // took energy out): work the passivity controller lets the rendering pass on.
+  // took energy out): work the passivity controller passes on to the hand only with
+  // ForceParams::credit_scene_work.
   double scene_work = 0.0;
   // J: the energy the springs acting hold (each clamped at max force, times its fade): what
-  // they give back to a stylus that lets go (the passivity controller's reserve).
+  // they give back to a stylus that lets go (what the passivity controller's energy bound
+  // weighs against the energy the rendering absorbed).
   double stored_energy = 0.0;
 };
 
