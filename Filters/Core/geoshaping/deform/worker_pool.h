@@ -70,7 +70,7 @@ private:
   // in_job: a barrier inside a run (a long wait there is a stall), not the one that starts
   // a run (workers wait there between runs).
   void barrier(bool in_job);
-  static constexpr std::chrono::microseconds stall_floor{ 100 };
+  static constexpr std::chrono::microseconds stall_floor{ 1000 };
   static constexpr std::chrono::microseconds yield_after{ 50 };
 
   int threads_;
