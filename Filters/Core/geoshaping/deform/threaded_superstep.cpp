@@ -174,11 +174,17 @@ std::size_t ChainMailDeformer::examine_threaded(
       std::uint32_t& b = th.best_of[std::size_t(entry.vertex)];
       if (b == 0)
       {
-        lane.best.push_back({ target, length2, entry.vertex, entry.sponsor });
+        lane.best.emplace_back();
         b = std::uint32_t(lane.best.size());
       }
-      else if (length2 > lane.best[b - 1].length2)
-        lane.best[b - 1] = { target, length2, entry.vertex, entry.sponsor };
+      else if (!(length2 > lane.best[b - 1].length2))
+        continue;
+      // Field by field: a record staged on the stack stalls store forwarding.
+      Threaded::Best& best = lane.best[b - 1];
+      best.u = target;
+      best.length2 = length2;
+      best.vertex = entry.vertex;
+      best.sponsor = entry.sponsor;
     }
 
     // 2. Each proposed-to vertex moves: marked moved, its winners put in global id order.
@@ -188,7 +194,10 @@ std::size_t ChainMailDeformer::examine_threaded(
       const std::size_t i = std::size_t(lane.best[j].vertex);
       th.best_of[i] = 0;
       nodes_[i].stamp = frame_;
-      lane.won.push_back({ global_id_inner(index_t(i)), std::uint32_t(j), outer_of_[i] });
+      Threaded::Won& w = lane.won.emplace_back();
+      w.gid = global_id_inner(index_t(i));
+      w.best = std::uint32_t(j);
+      w.outer = outer_of_[i];
       prefetch_neighbour_records(i); // step 4 tests them, as after move()
     }
     std::sort(lane.won.begin(), lane.won.end());
@@ -204,7 +213,10 @@ std::size_t ChainMailDeformer::examine_threaded(
     {
       const Threaded::Best& p = lane.best[w.best];
       slot_[std::size_t(p.vertex)] = index_t(slot);
-      moved_rec_[slot] = { p.u, p.vertex, p.sponsor };
+      MovedRecord& r = moved_rec_[slot];
+      r.disp = p.u;
+      r.vertex = p.vertex;
+      r.sponsor_slot = p.sponsor;
       moved_root_[slot] = stored_root;
       moved_[slot] = w.outer;
       ++slot;
@@ -223,7 +235,9 @@ std::size_t ChainMailDeformer::examine_threaded(
         const index_t c = neighbors_[x];
         if (nodes_[std::size_t(c)].stamp == frame_ || (pins && pins[c]))
           continue;
-        lane.pushes.push_back({ c, index_t(k) });
+        Candidate& pushed = lane.pushes.emplace_back();
+        pushed.vertex = c;
+        pushed.sponsor = index_t(k);
         prefetch(neighbors_.data() + offsets_[std::size_t(c)]); // read if c moves
       }
     }
