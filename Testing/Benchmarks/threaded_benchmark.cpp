@@ -259,7 +259,7 @@ BENCHMARK(BM_ThreadedFrame)
   ->UseRealTime();
 BENCHMARK(BM_Interleaved)
   ->ArgsProduct({ { 0, 2 }, { 1000, 300, 100, 30 }, { 0 }, { 0, 1 } })
-  ->ArgsProduct({ { 0 }, { 1000, 300, 100 }, { 128, 256, 512, 4096 }, { 0, 1 } })
+  ->ArgsProduct({ { 0 }, { 1000, 300, 100, 30 }, { 128, 256, 512, 1024, 4096 }, { 0, 1 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime()
   ->MinTime(1.0);

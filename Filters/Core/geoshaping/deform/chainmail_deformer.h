@@ -509,8 +509,8 @@ private:
   std::size_t superstep_begin_ = 0; // slot of its first move
   std::size_t sorted_begin_ = 0, sorted_end_ = 0; // slots sort_moves() left in id order
   int threads_ = 1;
-  std::size_t threaded_threshold_ = 1024;
-  std::size_t threaded_supersteps_ = 0; // this frame's
+  std::size_t threaded_threshold_ = 512; // docs/benchmarks.md, "Threaded frame"
+  std::size_t threaded_supersteps_ = 0;  // this frame's
   // The back-off after a stall ("Threads"): this frame runs on one thread from here on;
   // frames still to run on one thread; the length of the last back-off.
   bool automatic_threads_ = false;
