@@ -167,6 +167,7 @@ void vtkChainMailDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CandidateQueue: "
      << geoshaping::queue_name(static_cast<geoshaping::QueueKind>(this->CandidateQueue)) << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "ThreadsEvenWhenBusy: " << (this->ThreadsEvenWhenBusy ? "On" : "Off") << "\n";
   os << indent << "ThreadedSuperstepThreshold: " << this->ThreadedSuperstepThreshold << "\n";
   os << indent << "ValidRegionFrame: "
      << geoshaping::frame_name(static_cast<geoshaping::ValidRegionFrame>(this->ValidRegionFrame))

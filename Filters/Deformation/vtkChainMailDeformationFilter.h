@@ -172,14 +172,18 @@ public:
 
   ///@{
   /// Threads a large superstep runs on in one process (geoshaping/deform/chainmail_deformer.h,
-  /// "Threads"): 0 (the default) automatic, every core while they are free and one thread
-  /// for a while after a stall (another process holding a core); 1 one thread; n > 1 always
-  /// n. A superstep of the FIFO or FIFO Priority queue with at least
-  /// ThreadedSuperstepThreshold entries runs on the threads (not with obstacles, not on MPI
-  /// pieces); the result is the same bit for bit either way (docs/benchmarks.md, "Threaded
-  /// frame").
+  /// "Threads"): 0 (the default) every core, 1 one thread, n > 1 n threads. A frame runs on
+  /// one thread while other programs hold the cores its threads need, and for a while after
+  /// a stall, so threads never make it slower; ThreadsEvenWhenBusy (off by default; for
+  /// tests and measurements) uses them whatever the load. A superstep of the FIFO or FIFO
+  /// Priority queue with at least ThreadedSuperstepThreshold entries runs on the threads
+  /// (not with obstacles, not on MPI pieces); the result is the same bit for bit either way
+  /// (docs/benchmarks.md, "Threaded frame").
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
+  vtkSetMacro(ThreadsEvenWhenBusy, bool);
+  vtkGetMacro(ThreadsEvenWhenBusy, bool);
+  vtkBooleanMacro(ThreadsEvenWhenBusy, bool);
   vtkSetClampMacro(ThreadedSuperstepThreshold, vtkIdType, 1, VTK_ID_MAX);
   vtkGetMacro(ThreadedSuperstepThreshold, vtkIdType);
   ///@}
@@ -520,6 +524,7 @@ protected:
   int CandidateQueue = FIFO_PRIORITY;
   int ValidRegionFrame = AXES;
   int NumberOfThreads = 0;
+  bool ThreadsEvenWhenBusy = false;
   vtkIdType ThreadedSuperstepThreshold; // the core's default (constructor)
   double StretchRange[2] = { 1.0, 2.0 };
   double CompressionRange[2] = { 1.0, 0.5 };

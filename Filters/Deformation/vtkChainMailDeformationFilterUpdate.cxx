@@ -459,7 +459,9 @@ void vtkChainMailDeformationFilter::Deform(vtkPointSet* input, std::vector<int>&
       state.Deformer.reset();
       return;
     }
-    state.Deformer.set_threads(this->NumberOfThreads);
+    state.Deformer.set_threads(this->NumberOfThreads,
+      this->ThreadsEvenWhenBusy ? geoshaping::ChainMailDeformer::ThreadUse::always
+                                : geoshaping::ChainMailDeformer::ThreadUse::when_cores_free);
     state.Deformer.set_threaded_threshold(std::size_t(this->ThreadedSuperstepThreshold));
     r = state.Deformer.deform(v, d);
     if (!r.ok && state.Deformer.pinned(v) &&

@@ -136,7 +136,9 @@ void BM_ThreadedFrame(benchmark::State& state)
   const auto queue = static_cast<QueueKind>(state.range(0));
   ChainMailDeformer& d = scene();
   d.set_queue(queue);
-  d.set_threads(int(state.range(1)));
+  const int threads = int(state.range(1)); // 2: always two; 0: automatic
+  d.set_threads(threads, threads > 1 ? ChainMailDeformer::ThreadUse::always
+                                     : ChainMailDeformer::ThreadUse::when_cores_free);
   d.set_threaded_threshold(
     state.range(3) > 0 ? std::size_t(state.range(3)) : ChainMailDeformer().threaded_threshold());
   const Eigen::Vector3d pull(0.0, 0.0, pull_for(queue, int(state.range(2))));
@@ -170,7 +172,7 @@ void BM_Interleaved(benchmark::State& state)
   one.set_threads(1);
   ChainMailDeformer& two = scene(paint, 1);
   two.set_queue(queue);
-  two.set_threads(2);
+  two.set_threads(2, ChainMailDeformer::ThreadUse::always);
   two.set_threaded_threshold(
     state.range(2) > 0 ? std::size_t(state.range(2)) : ChainMailDeformer().threaded_threshold());
   one.deform(grasp, pull);
@@ -203,7 +205,7 @@ void BM_SuperstepShare(benchmark::State& state)
   const Eigen::Vector3d pull(0.0, 0.0, pull_for(queue, int(state.range(1)), paint));
   ChainMailDeformer& d = scene(paint);
   d.set_queue(queue);
-  d.set_threads(int(state.range(2)));
+  d.set_threads(int(state.range(2)), ChainMailDeformer::ThreadUse::always);
   const std::size_t threshold = ChainMailDeformer().threaded_threshold();
   d.deform(grasp, pull); // starts the threads, sizes the buffers
   double total = 0.0, above = 0.0, step = 0.0, end = 0.0, pending = 0.0;

@@ -78,7 +78,8 @@ std::size_t expect_threaded_equals_one_thread(const Scene& s, bool ids, QueueKin
     d->set_queue(queue);
     d->set_valid_region_frame(frame);
   }
-  threaded.set_threads(threads);
+  threaded.set_threads(threads, threads > 0 ? ChainMailDeformer::ThreadUse::always
+                                            : ChainMailDeformer::ThreadUse::when_cores_free);
   threaded.set_threaded_threshold(threshold);
   std::size_t ran_threaded = 0;
   for (std::size_t f = 0; f < frames.size(); ++f)
@@ -135,7 +136,7 @@ void expect_quad_sponsor(const Scene& s, index_t want_sponsor)
     set_up(plain, s, true);
     threaded.set_queue(q);
     plain.set_queue(q);
-    threaded.set_threads(2);
+    threaded.set_threads(2, ChainMailDeformer::ThreadUse::always);
     threaded.set_threaded_threshold(1);
     const FrameResult rg = threaded.deform(0, { 0.0, 0.0, 1.0 });
     const FrameResult rw = plain.deform(0, { 0.0, 0.0, 1.0 });
@@ -164,8 +165,9 @@ TEST(ThreadedSuperstep, PaintedGridEqualsOneThreadOnOneToFourThreads)
     }
 }
 
-// Automatic threads (set_threads(0)) may go to one thread for a while when the machine is
-// busy: frames are the one-thread frames either way, however the threads were scheduled.
+// Threads that yield to the load (ThreadUse::when_cores_free, the default) may go to one
+// thread for a while when the machine is busy: frames are the one-thread frames either
+// way, however the threads were scheduled.
 TEST(ThreadedSuperstep, AutomaticThreadsEqualOneThreadHoweverBusyTheMachine)
 {
   const Scene s = geoshaping::testing::painted_grid(48, 40);
@@ -173,8 +175,12 @@ TEST(ThreadedSuperstep, AutomaticThreadsEqualOneThreadHoweverBusyTheMachine)
   for (QueueKind q : { QueueKind::fifo, QueueKind::fifo_priority })
     expect_threaded_equals_one_thread(s, true, q, ValidRegionFrame::axes, 0, frames, 8);
   ChainMailDeformer d;
+  EXPECT_EQ(d.thread_use(), ChainMailDeformer::ThreadUse::when_cores_free);
   d.set_threads(0);
-  EXPECT_GE(d.threads(), 1); // the hardware's concurrency
+  EXPECT_GE(d.threads(), 1);                              // the hardware's concurrency
+  d.set_threads(2, ChainMailDeformer::ThreadUse::always); // tests, benchmarks
+  EXPECT_EQ(d.thread_use(), ChainMailDeformer::ThreadUse::always);
+  EXPECT_EQ(d.threads(), 2);
 }
 
 TEST(ThreadedSuperstep, CallerIdsAndLinkRegionEqualOneThread)
@@ -207,7 +213,7 @@ TEST(ThreadedSuperstep, RepaintingBetweenFramesIsFollowed)
   ChainMailDeformer threaded, plain;
   set_up(threaded, s, true);
   set_up(plain, s, true);
-  threaded.set_threads(2);
+  threaded.set_threads(2, ChainMailDeformer::ThreadUse::always);
   threaded.set_threaded_threshold(2);
   const index_t g = 15 * 30 + 15;
   for (int f = 0; f < 4; ++f)
@@ -249,7 +255,7 @@ TEST(ThreadedSuperstep, SmallSuperstepsSequentialQueuesObstaclesAndPiecesStayOnO
   const Scene s = geoshaping::testing::painted_grid(30, 30);
   ChainMailDeformer d;
   set_up(d, s, true);
-  d.set_threads(2);
+  d.set_threads(2, ChainMailDeformer::ThreadUse::always);
   const index_t g = 15 * 30 + 15;
   // Below the default threshold: one thread, frame after frame.
   for (int f = 0; f < 3; ++f)
@@ -267,7 +273,7 @@ TEST(ThreadedSuperstep, SmallSuperstepsSequentialQueuesObstaclesAndPiecesStayOnO
   d.set_queue(QueueKind::fifo);
   d.set_threads(1);
   EXPECT_EQ(d.deform(g, { 0.0, 0.0, 5.0 }).threaded_supersteps, 0u);
-  d.set_threads(2);
+  d.set_threads(2, ChainMailDeformer::ThreadUse::always);
   const double tri[9] = { -5.0, -5.0, 2.0, 40.0, -5.0, 2.0, -5.0, 40.0, 2.0 };
   const std::int64_t ids[3] = { 0, 1, 2 };
   ASSERT_EQ(d.set_obstacles(tri, 3, ids, 1), "");
@@ -289,7 +295,7 @@ TEST(ThreadedSuperstep, CopiesRunTheirOwnThreads)
   ChainMailDeformer d, plain;
   set_up(d, s, true);
   set_up(plain, s, true);
-  d.set_threads(3);
+  d.set_threads(3, ChainMailDeformer::ThreadUse::always);
   d.set_threaded_threshold(1);
   const index_t g = 15 * 30 + 15;
   d.deform(g, { 0.0, 0.0, 5.0 }); // makes the pool

@@ -111,11 +111,13 @@ struct FrameResult
 // for bit the one-thread frame's whatever the threads or their scheduling.
 //
 // On a busy machine threads would lose (another process on a core stops one thread for
-// milliseconds at each barrier). With automatic threads (set_threads(0)), when the pool
-// reports a stall (WorkerPool::stalled()) the rest of the frame and the next b frames
-// run on the caller's thread, b doubling from 1 to 64 while stalls recur and going back
-// to 0 after a threaded frame without one: a frame costs at most one stall more than the
-// one-thread frame. An explicit count (set_threads(n > 1)) always uses n threads.
+// milliseconds at each barrier). Unless told ThreadUse::always, a frame reads the
+// machine's runnable threads before its first large superstep and stays on the caller's
+// thread when others hold the cores (WorkerPool::cores_short); and when the pool reports
+// a stall (WorkerPool::stalled()) the rest of the frame and the next b frames run on the
+// caller's thread, b doubling from 1 to 64 while stalls recur and going back to 0 after a
+// threaded frame without one: a frame costs at most one stall more than the one-thread
+// frame.
 //
 // Arithmetic is double, on displacements u = x - x0 of rest positions stored relative
 // to a local origin, so UTM-sized coordinates lose nothing and a rigid region's
@@ -179,10 +181,19 @@ public:
   QueueKind queue() const { return queue_kind_; }
   // Threads (see "Threads" below): a superstep of at least threaded_threshold() entries
   // runs on `threads` threads; 1 (the default) runs every frame on the caller's thread;
-  // 0 is automatic: the hardware's concurrency, and one thread for a while whenever the
-  // machine is busy (a stall). Neither changes any result.
-  void set_threads(int threads);
+  // 0 is the hardware's concurrency. With ThreadUse::when_cores_free (the default) a frame
+  // runs on one thread when other programs hold the cores its threads need, and for a
+  // while after a stall; ThreadUse::always uses them whatever the load (tests,
+  // benchmarks). Nothing changes any result. Setting what is already set keeps the
+  // busy-machine state (the filter sets it every frame).
+  enum class ThreadUse
+  {
+    when_cores_free,
+    always
+  };
+  void set_threads(int threads, ThreadUse use = ThreadUse::when_cores_free);
   int threads() const { return threads_; }
+  ThreadUse thread_use() const { return thread_use_; }
   void set_threaded_threshold(std::size_t entries) { threaded_threshold_ = entries; }
   std::size_t threaded_threshold() const { return threaded_threshold_; }
   // Shape of the valid region (valid_region.h): axes (default) or link.
@@ -513,7 +524,7 @@ private:
   std::size_t threaded_supersteps_ = 0;  // this frame's
   // The back-off after a stall ("Threads"): this frame runs on one thread from here on;
   // frames still to run on one thread; the length of the last back-off.
-  bool automatic_threads_ = false;
+  ThreadUse thread_use_ = ThreadUse::when_cores_free;
   bool threads_paused_ = false;
   std::uint32_t paused_frames_ = 0, backoff_ = 0;
   std::uint32_t load_frame_ = 0; // the frame cores_free() last read the machine in

@@ -61,13 +61,15 @@ ChainMailDeformer::ThreadedHandle& ChainMailDeformer::ThreadedHandle::operator=(
 }
 ChainMailDeformer::ThreadedHandle::~ThreadedHandle() = default;
 
-void ChainMailDeformer::set_threads(int threads)
+void ChainMailDeformer::set_threads(int threads, ThreadUse use)
 {
   const int n = threads > 0 ? threads : std::max(1, int(std::thread::hardware_concurrency()));
+  if (n == threads_ && use == thread_use_)
+    return; // keeps the pool and what the stalls taught
   if (n != threads_)
     threaded_.state.reset();
   threads_ = n;
-  automatic_threads_ = threads <= 0;
+  thread_use_ = use;
   threads_paused_ = false;
   paused_frames_ = backoff_ = 0;
 }
@@ -87,7 +89,7 @@ std::size_t ChainMailDeformer::threaded_bytes() const
 
 bool ChainMailDeformer::cores_free()
 {
-  if (!automatic_threads_)
+  if (thread_use_ == ThreadUse::always)
     return true;
   if (load_frame_ != frame_)
   {
@@ -258,7 +260,8 @@ std::size_t ChainMailDeformer::examine_threaded(
     th.pushed_end = moved_rec_.size();
   }
   ++threaded_supersteps_;
-  if (automatic_threads_ && th.pool.stalled()) // busy: one thread a while (chainmail_deformer.h)
+  if (thread_use_ == ThreadUse::when_cores_free &&
+      th.pool.stalled()) // busy: one thread a while (chainmail_deformer.h)
   {
     threads_paused_ = true;
     backoff_ = std::min<std::uint32_t>(64, std::max<std::uint32_t>(1, 2 * backoff_));
