@@ -123,6 +123,36 @@ void BM_FilterUpdateLargeGraspWithNormals(benchmark::State& state)
   state.counters["displaced"] = double(filter->GetNumberOfDisplacedPoints());
   state.counters["core_ms"] = filter->GetLastDeformationMilliseconds();
 }
+// Threads through the filter, as ParaView runs it: BM_FilterThreads/<NumberOfThreads>, a
+// FIFO drag of ~350,000 displaced on the 1,000,000-vertex grid, NumberOfThreads 1 (one
+// thread) or 0 (every core while they are free, the default), for farm-bench to time
+// beside a spinning core (docs/benchmarks.md, "Threads through the filter").
+// `threaded_updates`: the share of updates whose frame ran a threaded superstep.
+void BM_FilterThreads(benchmark::State& state)
+{
+  const vtkIdType n = 1000;
+  auto grid = Grid(n);
+  vtkNew<vtkChainMailDeformationFilter> filter;
+  filter->SetInputData(grid);
+  filter->SetGraspPointId((n / 2) * n + n / 2);
+  filter->SetCandidateQueue(vtkChainMailDeformationFilter::FIFO);
+  filter->SetNumberOfThreads(int(state.range(0)));
+  const double pull = 120.0;
+  filter->SetDisplacement(0, 0, pull);
+  filter->Update();
+  int k = 0;
+  double threaded = 0.0;
+  for (auto _ : state)
+  {
+    filter->SetDisplacement(0, 0, (++k & 1) ? pull : 0.999 * pull);
+    filter->Update();
+    threaded += filter->GetLastFrameThreadedSupersteps() > 0;
+  }
+  state.counters["displaced"] = double(filter->GetNumberOfDisplacedPoints());
+  state.counters["threaded_updates"] = threaded / double(state.iterations());
+  state.counters["core_ms"] = filter->GetLastDeformationMilliseconds();
+}
+
 // The settle pass (docs/editing.md, "Bounds once the shape settles"): a ~1,000-vertex pull
 // on the 1,000,000-vertex surface, committed and released (the release frame lists its
 // change as exact), then undone (exact again); with range(0) = 1 each settled output is
@@ -244,6 +274,7 @@ BENCHMARK(BM_ReleaseAndUndoOnLargeSurface)
   ->Unit(benchmark::kMillisecond)
   ->MinTime(1.0);
 BENCHMARK(BM_FilterUpdate)->Arg(200)->Arg(2000)->Unit(benchmark::kMicrosecond)->MinTime(0.5);
+BENCHMARK(BM_FilterThreads)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_FilterUpdateWithPasses)
   ->Args({ 4, 0 })
   ->Args({ 4, 2 })
