@@ -47,7 +47,10 @@ double PullForThousand()
 
 // The timed updates: the first builds the adjacency and rest state, untimed; then two
 // pulls alternate so every update really recomputes and rewrites.
-void Drag(vtkChainMailDeformationFilter* filter, double pull, benchmark::State& state)
+// `after` runs after each timed update.
+template<class After = void (*)()>
+void Drag(
+  vtkChainMailDeformationFilter* filter, double pull, benchmark::State& state, After after = [] {})
 {
   filter->SetDisplacement(0, 0, pull);
   filter->Update();
@@ -57,16 +60,23 @@ void Drag(vtkChainMailDeformationFilter* filter, double pull, benchmark::State& 
     filter->SetDisplacement(0, 0, (++k & 1) ? pull : 0.999 * pull);
     filter->Update();
     benchmark::DoNotOptimize(filter->GetOutput()->GetPoints());
+    after();
   }
+}
+
+// The filter on an n x n grid, grasped at the centre vertex.
+vtkSmartPointer<vtkChainMailDeformationFilter> CentreGrasp(vtkIdType n)
+{
+  auto filter = vtkSmartPointer<vtkChainMailDeformationFilter>::New();
+  filter->SetInputData(Grid(n));
+  filter->SetGraspPointId((n / 2) * n + n / 2);
+  return filter;
 }
 
 void BM_FilterUpdate(benchmark::State& state)
 {
   const vtkIdType n = state.range(0);
-  auto grid = Grid(n);
-  vtkNew<vtkChainMailDeformationFilter> filter;
-  filter->SetInputData(grid);
-  filter->SetGraspPointId((n / 2) * n + n / 2);
+  auto filter = CentreGrasp(n);
   const double pull = PullForThousand();
   Drag(filter, pull, state);
   state.counters["mesh_vertices"] = double(n * n);
@@ -79,11 +89,7 @@ void BM_FilterUpdate(benchmark::State& state)
 // cost through the filter.
 void BM_FilterUpdateWithPasses(benchmark::State& state)
 {
-  const vtkIdType n = 200;
-  auto grid = Grid(n);
-  vtkNew<vtkChainMailDeformationFilter> filter;
-  filter->SetInputData(grid);
-  filter->SetGraspPointId((n / 2) * n + n / 2);
+  auto filter = CentreGrasp(200);
   filter->SetRefinementSolver(vtkChainMailDeformationFilter::REFINEMENT_DYKSTRA); // 4 sweeps
   filter->SetRefinementIterations(int(state.range(0)));
   filter->SetRelaxationIterations(int(state.range(1)));
@@ -124,30 +130,18 @@ void BM_FilterUpdateLargeGraspWithNormals(benchmark::State& state)
   state.counters["core_ms"] = filter->GetLastDeformationMilliseconds();
 }
 // Threads through the filter, as ParaView runs it: BM_FilterThreads/<NumberOfThreads>, a
-// FIFO drag of ~350,000 displaced on the 1,000,000-vertex grid, NumberOfThreads 1 (one
+// FIFO drag of 459,841 displaced on the 1,000,000-vertex grid, NumberOfThreads 1 (one
 // thread) or 0 (every core while they are free, the default), for farm-bench to time
 // beside a spinning core (docs/benchmarks.md, "Threads through the filter").
 // `threaded_updates`: the share of updates whose frame ran a threaded superstep.
 void BM_FilterThreads(benchmark::State& state)
 {
-  const vtkIdType n = 1000;
-  auto grid = Grid(n);
-  vtkNew<vtkChainMailDeformationFilter> filter;
-  filter->SetInputData(grid);
-  filter->SetGraspPointId((n / 2) * n + n / 2);
+  auto filter = CentreGrasp(1000);
   filter->SetCandidateQueue(vtkChainMailDeformationFilter::FIFO);
   filter->SetNumberOfThreads(int(state.range(0)));
-  const double pull = 120.0;
-  filter->SetDisplacement(0, 0, pull);
-  filter->Update();
-  int k = 0;
   double threaded = 0.0;
-  for (auto _ : state)
-  {
-    filter->SetDisplacement(0, 0, (++k & 1) ? pull : 0.999 * pull);
-    filter->Update();
-    threaded += filter->GetLastFrameThreadedSupersteps() > 0;
-  }
+  Drag(filter, 120.0, state,
+    [&] { threaded += filter->GetLastFrameThreadedSupersteps() > 0 ? 1.0 : 0.0; });
   state.counters["displaced"] = double(filter->GetNumberOfDisplacedPoints());
   state.counters["threaded_updates"] = threaded / double(state.iterations());
   state.counters["core_ms"] = filter->GetLastDeformationMilliseconds();
