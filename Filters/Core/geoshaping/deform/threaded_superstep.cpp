@@ -1,5 +1,20 @@
-// The threaded superstep (chainmail_deformer.h, "Threads"): examine() on several threads,
-// bit for bit.
+// The threaded superstep (chainmail_deformer.h, "Threads"; docs/deformer.md): examine() on
+// several threads, bit for bit.
+//
+// Invariants, and why no atomics are needed:
+// - Ownership. Thread t alone reads and writes what belongs to the candidates whose global
+//   ids lie in [splitters[t], splitters[t + 1]): their best_of entries and their nodes'
+//   stamps until the barrier. The ranges are disjoint, so no location is written by two
+//   threads or written by one while another reads it before the barrier.
+// - The barrier orders the rest: after it every move of the superstep is stamped and every
+//   lane's winners are counted, which is all that the slots and the pushes read of other
+//   threads' work. ThreadSanitizer checks this (Testing/run-sanitizer-tests.sh).
+// - best_of is all 0 between supersteps (each proposed-to vertex moves and is reset), so a
+//   superstep never reads a stale index.
+// Cost of a superstep of C entries and W moves on T threads: each thread reads all C
+// entries and the global id of each candidate, examines its own (about C / T), sorts its
+// about W / T winners; one barrier, plus the pool's start and end of the run; the caller
+// alone samples 16 T entries for the splitters and, under FIFO, files the pushes.
 #include "geoshaping/deform/chainmail_deformer.h"
 #include "geoshaping/deform/worker_pool.h"
 #include "geoshaping/mesh/bit_cast.h"
