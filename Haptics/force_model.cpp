@@ -113,7 +113,7 @@ ForceResult compute_force(const ForceInput& in, const SceneSnapshot& scene,
   ForceFade gain{ stale ? 0.0 : 1.0, hold_contact ? 1.0 : 0.0 };
   if (fade)
   {
-    const double step = params.fade_time > 0.0 ? params.servo_period / params.fade_time : 1.0;
+    const double step = fade_step(params);
     auto toward = [step](double g, double target)
     { return std::clamp(target, g - step, g + step); };
     fade->coupling = gain.coupling = toward(std::clamp(fade->coupling, 0.0, 1.0), gain.coupling);

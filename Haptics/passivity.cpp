@@ -12,13 +12,11 @@ void PassivityController::reset()
 }
 
 double PassivityController::bounded_scale(double stored, double scene_work, double desired_norm,
-  double step, double margin, const ForceFade& before, const ForceFade& after) const
+  double step, double margin, bool fell, bool rose) const
 {
   // The springs may hold what the rendering absorbed, plus the margin.
   const double budget = std::max(0.0, this->tank_ + margin);
   const double bound = stored <= budget ? 1.0 : budget / stored;
-  const bool fell = after.coupling < before.coupling || after.contact < before.contact;
-  const bool rose = after.coupling > before.coupling || after.contact > before.contact;
   const double reach = step / desired_norm;
   // A moving scene stretched the spring this tick (a step of k_c times the carry): the
   // scale may drop at once to keep the spring's energy where it was, within that step.
@@ -76,14 +74,16 @@ Eigen::Vector3d PassivityController::control(const Eigen::Vector3d& position, bo
     return desired;
   }
   const double f_max = std::max(0.0, limits.max_force);
-  const double step =
-    params.fade_time > 0.0 ? f_max * params.servo_period / params.fade_time : f_max;
+  const double step = fade_step(params, f_max);
   const double desired_norm = desired.stableNorm();
+  // Whether a fade fell or rose this tick (each used the tick's step).
+  const bool fell = after.coupling < before.coupling || after.contact < before.contact;
+  const bool rose = after.coupling > before.coupling || after.contact > before.contact;
   double left = step; // of the step, what the scale leaves the damper
   if (params.passivity_control)
   {
     const double scale =
-      this->bounded_scale(stored, scene_work, desired_norm, step, margin, before, after);
+      this->bounded_scale(stored, scene_work, desired_norm, step, margin, fell, rose);
     left = std::max(0.0, step - std::abs(scale - this->scale_) * desired_norm);
     this->scale_ = scale;
   }
@@ -101,8 +101,7 @@ Eigen::Vector3d PassivityController::control(const Eigen::Vector3d& position, bo
     if (excess > 0.0)
       target = -std::min(excess / dx2, b_max / params.servo_period) * dx;
   }
-  const bool faded = after.coupling != before.coupling || after.contact != before.contact;
-  if (!faded)
+  if (!fell && !rose) // the fades are in [0, 1]: either differs, or neither
   {
     const Eigen::Vector3d change = target - this->damper_;
     const double n = change.stableNorm();

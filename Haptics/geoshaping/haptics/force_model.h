@@ -72,6 +72,14 @@ struct ForceFade
   double contact = 1.0;
 };
 
+// How far a fade moves `amount` in one tick: amount servo_period / fade_time (all of it
+// where fade_time <= 0). compute_force moves the fractions by fade_step(params); the
+// passivity controller's force step is fade_step(params, max_force).
+inline double fade_step(const ForceParams& params, double amount = 1.0)
+{
+  return params.fade_time > 0.0 ? amount * params.servo_period / params.fade_time : amount;
+}
+
 // Coupling stiffness for the malleability m in [0, 1] of the grasped region:
 //   k(m) = k_max (rigid_fraction (1 - m) + soft_fraction m),
 // m clamped to [0, 1]; NaN m is treated as rigid (as the deformer does).

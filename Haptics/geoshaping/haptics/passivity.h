@@ -75,9 +75,9 @@ public:
 
 private:
   // The energy bound's step: the new scale, given this tick's stored energy U, scene work
-  // C_k, |F_d|, the fades' step and margin.
+  // C_k, |F_d|, the fades' step and margin, and whether a fade fell or rose this tick.
   double bounded_scale(double stored, double scene_work, double desired_norm, double step,
-    double margin, const ForceFade& before, const ForceFade& after) const;
+    double margin, bool fell, bool rose) const;
 
   // What control() carries from tick to tick: W is work_, L tank_, C scene_work_, f
   // damper_, s scale_.
