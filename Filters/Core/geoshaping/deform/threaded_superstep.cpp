@@ -76,9 +76,17 @@ ChainMailDeformer::ThreadedHandle& ChainMailDeformer::ThreadedHandle::operator=(
 }
 ChainMailDeformer::ThreadedHandle::~ThreadedHandle() = default;
 
+namespace
+{
+int hardware_threads()
+{
+  return std::max(1, int(std::thread::hardware_concurrency()));
+}
+} // namespace
+
 void ChainMailDeformer::set_threads(int threads, ThreadUse use)
 {
-  const int n = threads > 0 ? threads : std::max(1, int(std::thread::hardware_concurrency()));
+  const int n = threads > 0 ? threads : hardware_threads();
   if (n == threads_ && use == thread_use_)
     return; // keeps the pool and what the stalls taught
   if (n != threads_)
@@ -111,8 +119,7 @@ bool ChainMailDeformer::cores_free()
     load_frame_ = frame_;
     const int others =
       WorkerPool::others_running(threaded_.state ? &threaded_.state->pool : nullptr);
-    cores_taken_ = WorkerPool::cores_short(
-      others, std::max(1, int(std::thread::hardware_concurrency())), threads_);
+    cores_taken_ = WorkerPool::cores_short(others, hardware_threads(), threads_);
   }
   return !cores_taken_;
 }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -134,19 +133,9 @@ void WorkerPool::barrier(bool in_job)
 int WorkerPool::runnable_in_loadavg(const char* line)
 {
   // Fields: three load averages, then "runnable/total", then the last pid.
-  const char* p = line;
-  for (int field = 0; field < 3; ++field)
-  {
-    while (*p == ' ')
-      ++p;
-    while (*p && *p != ' ')
-      ++p;
-  }
-  while (*p == ' ')
-    ++p;
-  char* end = nullptr;
-  const long runnable = std::strtol(p, &end, 10);
-  return end != p && *end == '/' && runnable >= 0 ? int(runnable) : -1;
+  int runnable = -1, total = 0;
+  return std::sscanf(line, "%*s %*s %*s %d/%d", &runnable, &total) == 2 && runnable >= 0 ? runnable
+                                                                                         : -1;
 }
 
 int WorkerPool::others_running(const WorkerPool* pool)
