@@ -61,10 +61,10 @@ std::vector<float> brush_painted(
   return m;
 }
 
-double pull_for_count(ChainMailDeformer& d, index_t grasp, std::size_t target)
+double pull_for_count(ChainMailDeformer& d, index_t grasp, std::size_t target, QueueKind queue)
 {
   const QueueKind saved = d.queue();
-  d.set_queue(QueueKind::fifo_priority);
+  d.set_queue(queue);
   double lo = 0.0, hi = 1.0;
   while (d.deform(grasp, { 0.0, 0.0, hi }).moved < target && hi < 1e9)
     hi *= 2.0;

@@ -18,9 +18,11 @@ geoshaping::testing::Mesh painted_grid(index_t n, std::vector<float>& malleabili
 std::vector<float> brush_painted(
   const double* xyz, index_t n, const Adjacency& adjacency, double x0, double y0, double size);
 
-// The vertical pull of the centre vertex whose FIFO Priority frame displaces the
-// number of vertices closest to `target` (bisection on the pull); returns the pull.
-double pull_for_count(ChainMailDeformer& d, index_t grasp, std::size_t target);
+// The vertical pull of the centre vertex whose frame under `queue` (FIFO Priority unless
+// said) displaces the number of vertices closest to `target` (bisection on the pull);
+// returns the pull.
+double pull_for_count(ChainMailDeformer& d, index_t grasp, std::size_t target,
+  QueueKind queue = QueueKind::fifo_priority);
 
 // The vertices moved by the deformer's last frame as a mask by vertex id (1 = moved).
 std::vector<std::uint8_t> moved_mask(const ChainMailDeformer& d);

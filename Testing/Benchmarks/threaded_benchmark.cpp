@@ -26,7 +26,6 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <cmath>
 #include <ctime>
 #include <map>
 #include <memory>
@@ -60,8 +59,8 @@ ChainMailDeformer& scene(int paint = 0, int instance = 0)
 }
 
 // The pulls that displace the given thousands of vertices (tiles: bisection on the pull,
-// done once; brush: bisected here to within 1 %, once per queue and size; the counters
-// report the exact count).
+// done once; brush: bench::pull_for_count under the queue, once per queue and size; the
+// counters report the exact count).
 double pull_for(QueueKind q, int thousands, int paint = 0)
 {
   if (paint == 1)
@@ -69,24 +68,7 @@ double pull_for(QueueKind q, int thousands, int paint = 0)
     static std::map<std::pair<int, int>, double> pulls;
     double& pull = pulls[{ int(q), thousands }];
     if (pull == 0.0)
-    {
-      ChainMailDeformer& d = scene(1);
-      d.set_queue(q);
-      const std::size_t target = std::size_t(thousands) * 1000;
-      double lo = 0.0, hi = 1.0;
-      while (d.deform(grasp, { 0.0, 0.0, hi }).moved < target)
-        hi *= 2.0;
-      pull = hi;
-      for (int it = 0; it < 40; ++it)
-      {
-        pull = 0.5 * (lo + hi);
-        const std::size_t moved = d.deform(grasp, { 0.0, 0.0, pull }).moved;
-        if (std::abs(double(moved) - double(target)) < 0.01 * double(target))
-          break;
-        (moved < target ? lo : hi) = pull;
-      }
-      d.reset();
-    }
+      pull = bench::pull_for_count(scene(1), grasp, std::size_t(thousands) * 1000, q);
     return pull;
   }
   const bool fifo = q == QueueKind::fifo;
